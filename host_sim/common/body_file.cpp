@@ -1,0 +1,145 @@
+#include "common/body_file.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "common/commands.hpp"
+
+namespace aloft::host {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& source, const std::string& what) {
+  throw Error(source + ": " + what);
+}
+
+double number(const json& j, const std::string& key, const std::string& source) {
+  if (!j.is_number()) fail(source, "\"" + key + "\" must be a number");
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) fail(source, "\"" + key + "\" must be finite");
+  return v;
+}
+
+double positive(const json& parent, const std::string& key, const std::string& source) {
+  if (!parent.contains(key)) fail(source, "missing \"" + key + "\"");
+  const double v = number(parent.at(key), key, source);
+  if (!(v > 0.0)) fail(source, "\"" + key + "\" must be positive");
+  return v;
+}
+
+Eigen::Vector3d vector3(const json& j, const std::string& key, const std::string& source) {
+  if (!j.is_array() || j.size() != 3) fail(source, "\"" + key + "\" must be an array of 3 numbers");
+  return {number(j[0], key, source), number(j[1], key, source), number(j[2], key, source)};
+}
+
+Eigen::Quaterniond quaternion(const json& j, const std::string& key, const std::string& source) {
+  if (!j.is_array() || j.size() != 4) {
+    fail(source, "\"" + key + "\" must be a quaternion [w, x, y, z]");
+  }
+  const Eigen::Quaterniond q(number(j[0], key, source), number(j[1], key, source),
+                             number(j[2], key, source), number(j[3], key, source));
+  if (!aloft::is_unit(q)) fail(source, "\"" + key + "\" is not a unit quaternion");
+  return q.normalized();
+}
+
+void check(Status status, const std::string& source) {
+  if (status != Status::ok) fail(source, std::string("inertia: ") + describe(status));
+}
+
+InertiaTensor<double> parse_inertia(const json& body, double mass, bool has_mass,
+                                    const std::string& source) {
+  if (!body.contains("inertia") || !body["inertia"].is_object()) {
+    fail(source, "missing \"inertia\" object");
+  }
+  const json& inertia = body["inertia"];
+  const int forms = int(inertia.contains("tensor")) + int(inertia.contains("principal")) +
+                    int(inertia.contains("shape"));
+  if (forms != 1) {
+    fail(source, "\"inertia\" must hold exactly one of \"tensor\", \"principal\", \"shape\"");
+  }
+  InertiaTensor<double> out;
+  if (inertia.contains("tensor")) {
+    const json& t = inertia["tensor"];
+    if (!t.is_array() || t.size() != 3) fail(source, "\"tensor\" must be a 3x3 array");
+    Eigen::Matrix3d m;
+    for (int r = 0; r < 3; ++r) m.row(r) = vector3(t[size_t(r)], "tensor", source).transpose();
+    check(InertiaTensor<double>::make_from_tensor(m, out), source);
+  } else if (inertia.contains("principal")) {
+    const Eigen::Vector3d moments = vector3(inertia["principal"], "principal", source);
+    const Eigen::Quaterniond axes = inertia.contains("axes")
+                                        ? quaternion(inertia["axes"], "axes", source)
+                                        : Eigen::Quaterniond::Identity();
+    check(InertiaTensor<double>::make_from_principal(moments, axes, out), source);
+  } else {
+    const json& shape = inertia["shape"];
+    if (!has_mass) fail(source, "\"shape\" needs \"mass\"");
+    if (!shape.is_object() || shape.size() != 1) {
+      fail(source, "\"shape\" must be one of {\"cylinder\"}, {\"box\"}, {\"sphere\"}");
+    }
+    if (shape.contains("cylinder")) {
+      const json& c = shape["cylinder"];
+      check(InertiaTensor<double>::make_cylinder(mass, positive(c, "radius", source),
+                                                 positive(c, "height", source), out),
+            source);
+    } else if (shape.contains("box")) {
+      const json& b = shape["box"];
+      check(InertiaTensor<double>::make_box(mass, positive(b, "x", source),
+                                            positive(b, "y", source), positive(b, "z", source),
+                                            out),
+            source);
+    } else if (shape.contains("sphere")) {
+      check(InertiaTensor<double>::make_sphere(mass, positive(shape["sphere"], "radius", source),
+                                               out),
+            source);
+    } else {
+      fail(source, "unknown shape \"" + shape.begin().key() + "\" (cylinder, box or sphere)");
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Body parse_body_json(const std::string& text, const std::string& source) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    fail(source, std::string("not valid JSON (") + e.what() + ")");
+  }
+  if (!j.is_object()) fail(source, "a body file must be a JSON object");
+  Body body;
+  if (j.contains("name")) {
+    if (!j["name"].is_string()) fail(source, "\"name\" must be a string");
+    body.name = j["name"].get<std::string>();
+  }
+  const bool has_mass = j.contains("mass");
+  if (has_mass) body.mass_kg = positive(j, "mass", source);
+  body.inertia = parse_inertia(j, body.mass_kg, has_mass, source);
+  if (j.contains("markers")) {
+    if (!j["markers"].is_object()) fail(source, "\"markers\" must be an object of name: [x, y, z]");
+    for (const auto& [name, position] : j["markers"].items()) {
+      body.markers_m[name] = vector3(position, "markers." + name, source);
+    }
+  }
+  if (j.contains("imu")) {
+    const json& imu = j["imu"];
+    if (!imu.is_object()) fail(source, "\"imu\" must be an object");
+    if (imu.contains("rotation")) body.imu_to_body = quaternion(imu["rotation"], "imu.rotation", source);
+  }
+  return body;
+}
+
+Body read_body_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path + ": cannot open body file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_body_json(text.str(), path);
+}
+
+}  // namespace aloft::host

@@ -1,0 +1,27 @@
+// The body file of SPEC §2: name, mass, inertia (tensor | principal [+ axes] | shape),
+// optional markers in body axes and optional IMU rotation (sensor -> body).
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "aloft/inertia_tensor.hpp"
+
+namespace aloft::host {
+
+struct Body {
+  std::string name;
+  double mass_kg = 0.0;
+  InertiaTensor<double> inertia;
+  std::map<std::string, Eigen::Vector3d> markers_m;  // body axes
+  Eigen::Quaterniond imu_to_body = Eigen::Quaterniond::Identity();
+};
+
+// Reads and validates a body file; throws aloft::host::Error with one line naming the
+// file and the problem (missing key, wrong type, invalid tensor, ...).
+Body read_body_file(const std::string& path);
+
+// The same from JSON text already in memory; `source` names it in messages.
+Body parse_body_json(const std::string& text, const std::string& source);
+
+}  // namespace aloft::host

@@ -1,0 +1,27 @@
+// The commands of the `aloft` program. Each add_*_command registers a CLI11 subcommand
+// whose callback does the work; a command reports failure by throwing aloft::host::Error
+// (one line, no partial output left behind) and success by returning normally.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <stdexcept>
+#include <string>
+
+namespace aloft::host {
+
+// A user-facing failure: the message is printed as one line on stderr, exit code 2.
+struct Error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+void add_simulate_command(CLI::App& app);  // host_sim/simulate/
+void add_study_command(CLI::App& app);     // host_sim/study/
+void add_inspect_command(CLI::App& app);   // host_sim/readers/
+void add_diagnose_command(CLI::App& app);  // host_sim/diagnose/
+
+// Exit code set by a command that succeeded with a caveat (0 unless a command sets it).
+int exit_code();
+void set_exit_code(int code);
+
+}  // namespace aloft::host

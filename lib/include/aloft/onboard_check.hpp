@@ -1,0 +1,135 @@
+// The onboard check: the seed study's "a simulation from every sampled state", in the
+// fixed memory of a firmware. Fed one gyro sample at a time (and optionally one
+// accelerometer sample), it
+//   - waits for release and stops at landing when accelerometer samples are given
+//     (aloft/flight_detector.hpp); without them every sample counts as airborne;
+//   - every `seed_every` airborne samples starts a simulation from the measured rate;
+//     at most K are alive, and starting one more retires the oldest;
+//   - advances every live simulation one step per sample (torque-free body rate, RK4)
+//     and compares it with the gyro: DA and relative error, per seed and overall.
+// Rates are compared in body axes, so no orientation is integrated: a gyro alone
+// cannot observe it and the torque-free body rate does not depend on it.
+#pragma once
+
+#include <cstdint>
+
+#include "aloft/deviation.hpp"
+#include "aloft/euler_equations.hpp"
+#include "aloft/flight_detector.hpp"
+
+namespace aloft {
+
+template <typename Scalar>
+struct OnboardCheckSettings {
+  std::uint16_t seed_every = 10;  // samples between seeds (N)
+  // Maps gyro (sensor) axes into body axes; identity when the gyro is aligned.
+  Quat<Scalar> sensor_to_body = Quat<Scalar>::Identity();
+  FlightDetectorSettings<Scalar> flight = {};
+};
+
+// What one seeded simulation has accumulated so far.
+template <typename Scalar>
+struct SeedReport {
+  std::uint32_t seed_number = 0;   // 0 for the first seed of the flight, then 1, 2, ...
+  std::uint32_t seeded_at_sample = 0;  // airborne sample index it was seeded from
+  bool live = false;
+  DeviationStats<Scalar> stats;
+};
+
+template <typename Scalar, int K>
+class OnboardCheck {
+  static_assert(K >= 1, "at least one live simulation");
+
+ public:
+  OnboardCheck(const InertiaTensor<Scalar>& inertia, const OnboardCheckSettings<Scalar>& settings)
+      : inertia_(inertia),
+        settings_(settings),
+        sensor_to_body_(settings.sensor_to_body.normalized().toRotationMatrix()),
+        detector_(settings.flight) {
+    if (settings_.seed_every == 0) settings_.seed_every = 1;
+  }
+
+  // One gyro sample (rad/s, sensor axes) taken dt seconds after the previous one (dt is
+  // ignored for the very first airborne sample). Returns ok, not_airborne (sample not
+  // used), or an error status, in which case nothing changes.
+  Status update(const Vec3<Scalar>& gyro, Scalar dt) {
+    const Status s = validate_sample(gyro, dt);
+    if (s != Status::ok) return s;
+    if (detector_.phase() == FlightPhase::landed) return Status::not_airborne;
+    use_sample(gyro, dt);
+    return Status::ok;
+  }
+
+  // The same with an accelerometer sample (m/s², sensor axes) for release and landing.
+  Status update(const Vec3<Scalar>& gyro, const Vec3<Scalar>& accel, Scalar dt) {
+    Status s = validate_sample(gyro, dt);
+    if (s == Status::ok && !all_finite(accel)) s = Status::non_finite_input;
+    if (s != Status::ok) return s;
+    if (detector_.update(accel) != FlightPhase::airborne) return Status::not_airborne;
+    use_sample(gyro, dt);
+    return Status::ok;
+  }
+
+  FlightPhase phase() const { return detector_.phase(); }
+  std::uint32_t airborne_samples() const { return samples_; }
+  std::uint32_t seeds_started() const { return seeds_started_; }
+  int live_simulations() const { return live_; }
+  // Over every comparison of every simulation, live or retired.
+  const DeviationStats<Scalar>& overall() const { return overall_; }
+  // Slot i in [0, K): the i-th newest seed still held (live, or the last ones retired).
+  const SeedReport<Scalar>& seed(int i) const { return slots_[slot_of_newest(i)]; }
+
+ private:
+  struct Slot : SeedReport<Scalar> {
+    Vec3<Scalar> omega = Vec3<Scalar>::Zero();  // body rate of the simulation
+  };
+
+  Status validate_sample(const Vec3<Scalar>& gyro, Scalar dt) const {
+    if (!all_finite(gyro)) return Status::non_finite_input;
+    if (samples_ > 0) return validate_step(dt);
+    return std::isfinite(dt) ? Status::ok : Status::non_finite_input;
+  }
+
+  void use_sample(const Vec3<Scalar>& gyro, Scalar dt) {
+    const Vec3<Scalar> measured = sensor_to_body_ * gyro;
+    const bool has_rate = measured.squaredNorm() > Scalar(0);
+    for (int i = 0; i < K; ++i) {
+      Slot& slot = slots_[i];
+      if (!slot.live) continue;
+      slot.omega = body_rate_rk4_step(inertia_, slot.omega, dt);
+      if (!has_rate) continue;  // a zero rate has no direction to compare
+      const Scalar da = deviation_angle(slot.omega, measured);
+      const Scalar rel = relative_error(slot.omega, measured);
+      slot.stats.add_values(da, rel);
+      overall_.add_values(da, rel);
+    }
+    if (samples_ % settings_.seed_every == 0) start_seed(measured);
+    ++samples_;
+  }
+
+  void start_seed(const Vec3<Scalar>& measured) {
+    newest_ = (newest_ + 1) % K;  // the oldest slot, once all K are in use
+    Slot& slot = slots_[newest_];
+    if (!slot.live) ++live_;
+    slot.seed_number = seeds_started_++;
+    slot.seeded_at_sample = samples_;
+    slot.live = true;
+    slot.stats.reset();
+    slot.omega = measured;
+  }
+
+  int slot_of_newest(int i) const { return ((newest_ - i) % K + K) % K; }
+
+  InertiaTensor<Scalar> inertia_;
+  OnboardCheckSettings<Scalar> settings_;
+  Mat3<Scalar> sensor_to_body_;
+  FlightDetector<Scalar> detector_;
+  Slot slots_[K] = {};
+  DeviationStats<Scalar> overall_;
+  std::uint32_t samples_ = 0;
+  std::uint32_t seeds_started_ = 0;
+  int newest_ = K - 1;
+  int live_ = 0;
+};
+
+}  // namespace aloft

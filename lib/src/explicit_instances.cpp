@@ -1,0 +1,19 @@
+// Instantiates every class template of lib/ for float and double under the strict
+// firmware flags (see lib/CMakeLists.txt), so a warning in any of them fails the build
+// even before a test or a firmware image uses it.
+#include "aloft/aloft.hpp"
+
+namespace aloft {
+template class InertiaTensor<float>;
+template class InertiaTensor<double>;
+template class Rk4Integrator<float>;
+template class Rk4Integrator<double>;
+template class SplittingIntegrator<float>;
+template class SplittingIntegrator<double>;
+template class DeviationStats<float>;
+template class DeviationStats<double>;
+template class FlightDetector<float>;
+template class FlightDetector<double>;
+template class OnboardCheck<float, 8>;
+template class OnboardCheck<double, 8>;
+}  // namespace aloft
