@@ -1,15 +1,25 @@
 #!/usr/bin/env bash
-# Installs every Debian package aloft builds, tests and cross-compiles with.
-# Idempotent: does nothing when all are present. Needs root (uses sudo when not root).
+# Installs the Debian packages aloft needs, and nothing when they are all present.
+#   scripts/install-deps.sh host   build and run the host program and its tests
+#   scripts/install-deps.sh all    also the ARM cross toolchains and QEMU (target tests)
+# Needs root; uses sudo when not root.
 set -euo pipefail
 
-packages=(
+host_packages=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev libbenchmark-dev
   libcairo2-dev
+)
+target_packages=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib
   g++-arm-linux-gnueabihf qemu-user qemu-system-arm
 )
+
+case "${1:-host}" in
+  host) packages=("${host_packages[@]}") ;;
+  all) packages=("${host_packages[@]}" "${target_packages[@]}") ;;
+  *) echo "usage: $0 [host|all]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do
@@ -21,4 +31,5 @@ echo "aloft: installing ${missing[*]}" >&2
 sudo_cmd=()
 [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
 "${sudo_cmd[@]}" apt-get update -qq
-DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+  "${missing[@]}" >&2
