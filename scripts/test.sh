@@ -5,9 +5,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh all
 jobs=$(nproc)
-for preset in host; do
+for preset in host armhf cortex-m4f; do
   echo "== $preset ==" >&2
   cmake --preset "$preset"
-  cmake --build --preset "$preset" -j "$jobs"
+  cmake --build --preset "$preset"
   ctest --preset "$preset" -j "$jobs"
 done

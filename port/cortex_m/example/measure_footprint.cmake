@@ -1,0 +1,182 @@
+# Measures aloft's footprint in the example firmware and writes footprint.json (SPEC §5).
+# Run by the build (CMakeLists.txt) as
+#   cmake -DFIRMWARE=... -DBASELINE=... -DSIZE=... -DOBJDUMP=... -DQEMU=<list>
+#         -DSTACK_TOOL=... -DCI_DIRS=<list> -DOUTPUT=.../footprint.json -P measure_footprint.cmake
+#
+# Method, key by key:
+#   text_bytes, data_bytes, bss_bytes: the firmware minus the same program built without
+#     aloft (ALOFT_EXAMPLE_WITHOUT_ALOFT), section by section (`size -A`): text counts
+#     everything in flash but the initial values of .data (vectors, code, constants,
+#     unwind tables, constructors); the stack is a section of its own and not counted.
+#   stack_bytes: worst-case depth of the whole firmware from GCC's -fcallgraph-info=su
+#     frame sizes and the call graph of the linked image (host/worst_case_stack.cpp),
+#     including the SysTick and fault handlers with their exception frames.
+#   heap_bytes: 0 by construction: the cortex_m port makes any heap use a link error.
+#   instructions_per_update: both images run under QEMU with -icount shift=0, where every
+#     guest instruction advances the virtual clock by exactly 1 ns, so SysTick (25 MHz)
+#     counts one tick per 40 instructions; the firmware measures that ratio itself on a
+#     loop of known length. Each image times its loop over the flight from the first
+#     sample with all K = 8 simulations live; the difference of the two, per sample, is one
+#     onboard-check update (the loop's own load of the sample and dt is subtracted).
+cmake_minimum_required(VERSION 3.20)
+
+function(section_sizes elf prefix)
+  execute_process(COMMAND ${SIZE} -A ${elf} OUTPUT_VARIABLE table RESULT_VARIABLE status)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${SIZE} -A ${elf} failed")
+  endif()
+  set(text 0)
+  set(data 0)
+  set(bss 0)
+  string(REPLACE "\n" ";" lines "${table}")
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^(\\.[A-Za-z_.]+) +([0-9]+) +[0-9]+")
+      set(name ${CMAKE_MATCH_1})
+      set(bytes ${CMAKE_MATCH_2})
+      if(name MATCHES "^\\.(isr_vector|text|rodata|ARM\\.extab|ARM\\.exidx|init_array)$")
+        math(EXPR text "${text} + ${bytes}")
+      elseif(name STREQUAL ".data")
+        math(EXPR data "${data} + ${bytes}")
+      elseif(name STREQUAL ".bss")
+        math(EXPR bss "${bss} + ${bytes}")
+      endif()
+    endif()
+  endforeach()
+  # .data's initial values are in flash too.
+  math(EXPR flash "${text} + ${data}")
+  set(${prefix}_text ${text} PARENT_SCOPE)
+  set(${prefix}_data ${data} PARENT_SCOPE)
+  set(${prefix}_bss ${bss} PARENT_SCOPE)
+  set(${prefix}_flash ${flash} PARENT_SCOPE)
+endfunction()
+
+# QEMU comes as the toolchain's emulator command, which ends in -kernel.
+list(GET QEMU -1 last)
+if(last STREQUAL "-kernel")
+  list(REMOVE_AT QEMU -1)
+endif()
+
+function(run_timed elf prefix)
+  execute_process(COMMAND ${QEMU} -icount shift=0 -kernel ${elf}
+                  OUTPUT_VARIABLE output ERROR_VARIABLE output RESULT_VARIABLE status TIMEOUT 120)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${elf} under QEMU exited with ${status}:\n${output}")
+  endif()
+  foreach(key calibration_instructions calibration_ticks steady_updates steady_ticks)
+    if(NOT output MATCHES "${key} ([0-9]+)")
+      message(FATAL_ERROR "${elf} did not print ${key}:\n${output}")
+    endif()
+    set(${prefix}_${key} ${CMAKE_MATCH_1} PARENT_SCOPE)
+  endforeach()
+endfunction()
+
+section_sizes(${FIRMWARE} with)
+section_sizes(${BASELINE} without)
+math(EXPR text_bytes "${with_text} - ${without_text}")
+math(EXPR data_bytes "${with_data} - ${without_data}")
+math(EXPR bss_bytes "${with_bss} - ${without_bss}")
+math(EXPR flash_bytes "${text_bytes} + ${data_bytes}")
+math(EXPR ram_bytes "${data_bytes} + ${bss_bytes}")
+
+run_timed(${FIRMWARE} with)
+run_timed(${BASELINE} without)
+if(NOT with_steady_updates EQUAL without_steady_updates OR with_calibration_ticks EQUAL 0)
+  message(FATAL_ERROR "the two images did not time the same loop")
+endif()
+# Fixed point with 3 decimals: CMake's math() is integer only.
+math(EXPR milli_instructions_per_tick "${with_calibration_instructions} * 1000 / ${with_calibration_ticks}")
+math(EXPR update_milli "(${with_steady_ticks} - ${without_steady_ticks}) * ${milli_instructions_per_tick} / ${with_steady_updates}")
+math(EXPR instructions_per_update "(${update_milli} + 500) / 1000")
+math(EXPR tick_whole "${milli_instructions_per_tick} / 1000")
+math(EXPR tick_fraction "${milli_instructions_per_tick} % 1000 + 1000")
+string(SUBSTRING ${tick_fraction} 1 3 tick_fraction)
+set(instructions_per_tick "${tick_whole}.${tick_fraction}")
+math(EXPR loop_milli "${without_steady_ticks} * ${milli_instructions_per_tick} / ${with_steady_updates}")
+math(EXPR loop_instructions "(${loop_milli} + 500) / 1000")
+
+execute_process(COMMAND ${OBJDUMP} -d --no-show-raw-insn ${FIRMWARE}
+                OUTPUT_FILE ${OUTPUT}.disassembly.txt RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "${OBJDUMP} -d ${FIRMWARE} failed")
+endif()
+# The onboard check's per-sample work, where the compiler kept it out of line.
+file(READ ${OUTPUT}.disassembly.txt disassembly)
+string(REGEX MATCH "<(_ZN5aloft12OnboardCheck[^>]*use_sample[^>]*)>:" _ "${disassembly}")
+set(update_function ${CMAKE_MATCH_1})
+set(ci_options)
+foreach(dir IN LISTS CI_DIRS)
+  file(GLOB_RECURSE ci_files ${dir}/*.ci)
+  foreach(f IN LISTS ci_files)
+    list(APPEND ci_options --ci ${f})
+  endforeach()
+endforeach()
+execute_process(COMMAND ${STACK_TOOL} ${OUTPUT}.disassembly.txt ${ci_options}
+                        --root Reset_Handler --interrupt SysTick_Handler --interrupt Fault_Handler
+                        --indirect _ZN5aloft4port10write_textEPKc --report "${update_function}"
+                OUTPUT_VARIABLE stack_report ERROR_VARIABLE stack_error RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "worst-case stack: ${stack_error}")
+endif()
+foreach(key stack_bytes root_bytes interrupt_bytes)
+  string(REGEX MATCH "${key} ([0-9]+)" _ "${stack_report}")
+  set(${key} ${CMAKE_MATCH_1})
+endforeach()
+set(update_stack_bytes null)
+if(update_function AND stack_report MATCHES "below [^ ]+ ([0-9]+)")
+  set(update_stack_bytes ${CMAKE_MATCH_1})
+endif()
+string(REGEX MATCHALL "path [^\n]+" path_lines "${stack_report}")
+set(path_json "")
+foreach(line IN LISTS path_lines)
+  string(REGEX REPLACE "^path ([^ ]+) ([0-9]+) ([a-z]+)$" "{\"function\": \"\\1\", \"frame_bytes\": \\2, \"frame_from\": \"\\3\"}" item "${line}")
+  if(path_json)
+    string(APPEND path_json ",\n      ")
+  endif()
+  string(APPEND path_json "${item}")
+endforeach()
+
+function(verdict value limit out)
+  if(value LESS_EQUAL limit)
+    set(${out} "true" PARENT_SCOPE)
+  else()
+    set(${out} "false" PARENT_SCOPE)
+  endif()
+endfunction()
+verdict(${flash_bytes} 16384 flash_ok)
+verdict(${ram_bytes} 2048 ram_ok)
+verdict(${stack_bytes} 1024 stack_ok)
+verdict(${instructions_per_update} 3000 instructions_ok)
+
+set(json "{
+  \"text_bytes\": ${text_bytes},
+  \"data_bytes\": ${data_bytes},
+  \"bss_bytes\": ${bss_bytes},
+  \"stack_bytes\": ${stack_bytes},
+  \"heap_bytes\": 0,
+  \"instructions_per_update\": ${instructions_per_update},
+  \"details\": {
+    \"firmware\": \"port/cortex_m/example: OnboardCheck<float, 8>, seed every 10 samples, on QEMU mps2-an386 (Cortex-M4F)\",
+    \"flash_bytes\": ${flash_bytes},
+    \"ram_bytes\": ${ram_bytes},
+    \"targets_met\": {\"flash_le_16KiB\": ${flash_ok}, \"ram_le_2KiB\": ${ram_ok}, \"stack_le_1KiB\": ${stack_ok}, \"instructions_le_3000\": ${instructions_ok}},
+    \"image_with_aloft\": {\"text\": ${with_text}, \"data\": ${with_data}, \"bss\": ${with_bss}},
+    \"image_without_aloft\": {\"text\": ${without_text}, \"data\": ${without_data}, \"bss\": ${without_bss}},
+    \"stack_main_path_bytes\": ${root_bytes},
+    \"stack_interrupt_bytes\": ${interrupt_bytes},
+    \"stack_below_onboard_check_use_sample_bytes\": ${update_stack_bytes},
+    \"stack_deepest_path\": [
+      ${path_json}
+    ],
+    \"instructions_per_tick\": ${instructions_per_tick},
+    \"timed_updates\": ${with_steady_updates},
+    \"timed_ticks_with_aloft\": ${with_steady_ticks},
+    \"timed_ticks_without_aloft\": ${without_steady_ticks},
+    \"loop_instructions_per_sample_without_aloft\": ${loop_instructions},
+    \"method\": \"sections: size -A of the firmware minus the same image built without aloft; stack: -fcallgraph-info=su frames over the linked image's call graph plus exception frames; instructions: qemu-system-arm -icount shift=0 (1 instruction = 1 ns of virtual time), SysTick ticks over the updates with all 8 simulations live, minus the same loop without aloft, converted with a measured instructions-per-tick calibration\"
+  }
+}
+")
+# Written whole under a temporary name, then renamed: never a half-written report.
+file(WRITE ${OUTPUT}.tmp "${json}")
+file(RENAME ${OUTPUT}.tmp ${OUTPUT})
+message(STATUS "footprint: flash ${flash_bytes} B (text ${text_bytes}, data ${data_bytes}), RAM ${ram_bytes} B (bss ${bss_bytes}), stack ${stack_bytes} B, ${instructions_per_update} instructions/update")

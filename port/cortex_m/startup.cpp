@@ -1,0 +1,69 @@
+// Reset and exception entry for a Cortex-M4F: the vector table, the reset handler that
+// prepares memory and the FPU before any C++ runs, and fault handlers that report
+// through the port instead of hanging (so a crash under QEMU fails the test at once).
+// Symbols from the linker script: mps2_an386.ld.
+#include <cstdint>
+
+#include "aloft_port/port.hpp"
+
+extern "C" {
+extern std::uint32_t __data_load[];
+extern std::uint32_t __data_start[];
+extern std::uint32_t __data_end[];
+extern std::uint32_t __bss_start[];
+extern std::uint32_t __bss_end[];
+extern std::uint32_t __stack_top[];
+using Constructor = void (*)();
+extern Constructor __init_array_start[];
+extern Constructor __init_array_end[];
+
+int main();
+[[noreturn]] void Reset_Handler();
+void SysTick_Handler();
+void Fault_Handler();
+}
+
+namespace {
+
+// Coprocessor Access Control Register: CP10 and CP11 are the FPU.
+volatile std::uint32_t& cpacr() { return *reinterpret_cast<volatile std::uint32_t*>(0xE000ED88u); }
+
+using Handler = void (*)();
+constexpr int vector_count = 16;  // the core's exceptions; the board's interrupts are unused
+
+}  // namespace
+
+// Entry 0 is the initial stack pointer, the rest are handlers (ARMv7-M ARM, B1.5.3).
+extern "C" __attribute__((section(".isr_vector"), used)) const Handler vector_table[vector_count] = {
+    reinterpret_cast<Handler>(__stack_top),
+    Reset_Handler,
+    Fault_Handler,  // NMI
+    Fault_Handler,  // HardFault
+    Fault_Handler,  // MemManage
+    Fault_Handler,  // BusFault
+    Fault_Handler,  // UsageFault
+    nullptr, nullptr, nullptr, nullptr,
+    Fault_Handler,  // SVCall
+    Fault_Handler,  // DebugMonitor
+    nullptr,
+    Fault_Handler,  // PendSV
+    SysTick_Handler,
+};
+
+extern "C" void Reset_Handler() {
+  // The FPU first: the compiler may use FP registers in any code below.
+  cpacr() = cpacr() | (0xFu << 20);
+  asm volatile("dsb\n\tisb" ::: "memory");
+  for (std::uint32_t *src = __data_load, *dst = __data_start; dst < __data_end;) *dst++ = *src++;
+  for (std::uint32_t* dst = __bss_start; dst < __bss_end;) *dst++ = 0;
+  for (Constructor* c = __init_array_start; c < __init_array_end; ++c) (*c)();
+  aloft::port::exit_with_status(main());
+}
+
+extern "C" void Fault_Handler() {
+  // IPSR holds the number of the exception being handled.
+  std::uint32_t exception;
+  asm volatile("mrs %0, ipsr" : "=r"(exception));
+  aloft::port::write_text(exception == 3 ? "\n*** HardFault\n" : "\n*** unexpected exception\n");
+  aloft::port::exit_with_status(128 + static_cast<int>(exception & 0xFFu));
+}

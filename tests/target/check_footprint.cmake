@@ -1,0 +1,23 @@
+# footprint.json has the keys of SPEC §5, each a whole number, heap_bytes 0, and the
+# measured ones non-zero (a zero would mean a measurement that did not happen).
+#   cmake -DFOOTPRINT=.../footprint.json -P check_footprint.cmake
+if(NOT EXISTS ${FOOTPRINT})
+  message(FATAL_ERROR "${FOOTPRINT} was not written by the build")
+endif()
+file(READ ${FOOTPRINT} json)
+foreach(key text_bytes data_bytes bss_bytes stack_bytes heap_bytes instructions_per_update)
+  string(JSON value ERROR_VARIABLE error GET "${json}" ${key})
+  if(error OR NOT value MATCHES "^[0-9]+$")
+    message(FATAL_ERROR "${FOOTPRINT}: ${key} is not a whole number (${value}${error})")
+  endif()
+  message("${key} ${value}")
+  set(${key} ${value})
+endforeach()
+if(NOT heap_bytes EQUAL 0)
+  message(FATAL_ERROR "heap_bytes is ${heap_bytes}, not 0")
+endif()
+foreach(key text_bytes bss_bytes stack_bytes instructions_per_update)
+  if(${key} EQUAL 0)
+    message(FATAL_ERROR "${key} is 0: not measured")
+  endif()
+endforeach()
