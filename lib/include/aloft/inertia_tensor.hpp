@@ -6,10 +6,9 @@
 // precompute the inverse and the principal decomposition the integrators need.
 #pragma once
 
-#include <Eigen/Eigenvalues>
-
 #include "aloft/rotation.hpp"
 #include "aloft/status.hpp"
+#include "aloft/symmetric_eigen.hpp"
 
 namespace aloft {
 
@@ -41,14 +40,12 @@ class InertiaTensor {
       return Status::tensor_not_symmetric;
     }
     const Mat3<Scalar> symmetric = Scalar(0.5) * (tensor + tensor.transpose());
-    Eigen::SelfAdjointEigenSolver<Mat3<Scalar>> solver;
-    solver.computeDirect(symmetric);
-    const Vec3<Scalar> moments = solver.eigenvalues();  // ascending
+    Vec3<Scalar> moments;
+    Mat3<Scalar> axes;
+    symmetric_eigen_decomposition(symmetric, moments, axes);  // ascending, right-handed
     if (!(moments(0) > relative_tolerance() * scale)) return Status::tensor_not_positive_definite;
     const Status triangle = check_triangle(moments);
     if (triangle != Status::ok) return triangle;
-    Mat3<Scalar> axes = solver.eigenvectors();
-    if (axes.determinant() < Scalar(0)) axes.col(2) = -axes.col(2);
     out.tensor_ = symmetric;
     out.inverse_ = symmetric.inverse();
     out.principal_moments_ = moments;
