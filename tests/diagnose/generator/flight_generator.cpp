@@ -1,0 +1,455 @@
+#include "flight_generator.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "aloft/inertia_tensor.hpp"
+#include "body_catalogue.hpp"
+#include "perturbed_rigid_body.hpp"
+#include "seeded_random.hpp"
+
+namespace aloft::generator {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kPi = SeededRandom::kPi;
+constexpr double kDegree = kPi / 180.0;
+const Eigen::Vector3d kGravity(0.0, -9.81, 0.0);  // world y up, as OpenSim/Vicon exports
+
+// Independent streams of one seed (splitmix64 of the seed and the stream number), so
+// the throw, the effect and the noise never consume each other's draws.
+enum class Stream : std::uint64_t { throw_ = 1, effect = 2, noise = 3 };
+std::uint64_t stream_seed(std::uint64_t seed, Stream stream) {
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(stream);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+json to_json(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+json to_json(const Eigen::Quaterniond& q) { return json::array({q.w(), q.x(), q.y(), q.z()}); }
+json to_json(const Eigen::Matrix3d& m) {
+  json rows = json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back(json::array({m(r, 0), m(r, 1), m(r, 2)}));
+  return rows;
+}
+
+// Principal moments (ascending) and axes (columns, right-handed) as lib/ computes them,
+// so "along the nominal principal axes" means what the diagnosis reads from body.json.
+struct Principal {
+  Eigen::Vector3d moments;
+  Eigen::Matrix3d axes;
+};
+Principal principal_of(const Eigen::Matrix3d& tensor) {
+  InertiaTensor<double> inertia;
+  if (InertiaTensor<double>::make_from_tensor(tensor, inertia) != Status::ok) {
+    throw std::logic_error("generator body has an invalid inertia tensor");
+  }
+  return {inertia.principal_moments(), inertia.principal_axes().toRotationMatrix()};
+}
+
+// The throw: everything about a flight that does not depend on the effect.
+struct Throw {
+  double duration_s = 1.0;
+  Eigen::Vector3d omega0_body;
+  Eigen::Quaterniond orientation0;
+  Eigen::Vector3d com0_m;
+  Eigen::Vector3d velocity0_m_s;
+  std::vector<Eigen::Vector3d> markers_m;  // body axes
+};
+
+Throw draw_throw(const BodyModel& body, const FlightSpec& spec, SeededRandom& rng) {
+  Throw t;
+  t.duration_s = spec.duration_s > 0.0 ? spec.duration_s : rng.uniform(0.8, 1.2);
+  // Generic spin axis: >= 20° from each principal axis, so every effect has a lever.
+  const Principal p = principal_of(body.inertia_kg_m2);
+  Eigen::Vector3d axis;
+  for (;;) {
+    axis = rng.unit_vector();
+    bool generic = true;
+    for (int i = 0; i < 3; ++i)
+      generic = generic && std::abs(axis.dot(p.axes.col(i))) <= std::cos(20 * kDegree);
+    if (generic) break;
+  }
+  t.omega0_body = rng.uniform(5.0, 15.0) * axis;
+  Eigen::Vector4d q;
+  do {
+    q = Eigen::Vector4d(rng.normal(), rng.normal(), rng.normal(), rng.normal());
+  } while (q.norm() < 1e-6);
+  q.normalize();
+  t.orientation0 = Eigen::Quaterniond(q(0), q(1), q(2), q(3));  // uniform on SO(3)
+  t.com0_m = Eigen::Vector3d(rng.uniform(-0.1, 0.1), rng.uniform(0.9, 1.2), rng.uniform(-0.1, 0.1));
+  t.velocity0_m_s =
+      Eigen::Vector3d(rng.uniform(1.5, 3.0), rng.uniform(2.5, 4.5), rng.uniform(-1.5, 1.5));
+  // Six markers on the body's surface ellipsoid, spread out (no two within 40 % of the
+  // mean semi-axis), as a marker set is designed for a well-conditioned pose fit.
+  const double min_gap = 0.4 * body.marker_semi_axes_m.mean();
+  while (t.markers_m.size() < 6) {
+    const Eigen::Vector3d m = body.marker_semi_axes_m.cwiseProduct(rng.unit_vector());
+    bool spread = true;
+    for (const auto& other : t.markers_m) spread = spread && (m - other).norm() >= min_gap;
+    if (spread) t.markers_m.push_back(m);
+  }
+  return t;
+}
+
+// A rotation of angle in [3°, 15°] about a random axis; normal to the symmetry axis
+// for a body of revolution (a turn about that axis is unobservable).
+Eigen::Quaterniond draw_misrotation(const Principal& p, SeededRandom& rng) {
+  const double angle = rng.uniform(3.0, 15.0) * kDegree;
+  Eigen::Vector3d axis = rng.unit_vector();
+  const int symmetry = symmetry_axis_index(p.moments);
+  if (symmetry >= 0) {
+    const Eigen::Vector3d e = p.axes.col(symmetry);
+    while ((axis - axis.dot(e) * e).norm() < 0.1) axis = rng.unit_vector();
+    axis = (axis - axis.dot(e) * e).normalized();
+  }
+  return Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis));
+}
+
+double rotation_angle_deg(const Eigen::Quaterniond& q) {
+  return 2.0 * std::atan2(q.vec().norm(), std::abs(q.w())) / kDegree;
+}
+
+// Fraction of kinetic energy a rotor of relaxation time `relaxation_s` takes out of
+// this throw by its end.
+double energy_loss(FlightPhysics physics, const Throw& thrown, double relaxation_s) {
+  physics.rotor_damping_N_m_s = physics.rotor_inertia_kg_m2 / relaxation_s;
+  const PerturbedRigidBody body(physics);
+  FlightState start;
+  start.omega_body = thrown.omega0_body;
+  start.rotor_omega_body = thrown.omega0_body;
+  const FlightState end = body.sample(start, {thrown.duration_s}, 2e-4).back();
+  return 1.0 - body.kinetic_energy(end) / body.kinetic_energy(start);
+}
+
+// The rotor's relaxation time J/c that takes `target` of the energy out over the
+// flight: the smallest on [10, 500] ms (the loss rises with it, peaks where it matches
+// the rate at which the body rate turns in the body, then falls), found on a log grid
+// and refined by bisection; the time of the largest loss when the throw cannot reach
+// the target (a slowly precessing, near-symmetric body).
+double relaxation_for_energy_loss(const FlightPhysics& physics, const Throw& thrown, double target,
+                                  bool& reached) {
+  reached = true;
+  constexpr int kGrid = 13;
+  double previous = 0.0, best = 0.0, best_loss = -1.0;
+  for (int i = 0; i < kGrid; ++i) {
+    const double tau = 0.01 * std::pow(50.0, double(i) / (kGrid - 1));
+    const double loss = energy_loss(physics, thrown, tau);
+    if (loss >= target) {
+      double low = previous > 0.0 ? previous : tau / 2, high = tau;
+      for (int b = 0; b < 30; ++b) {
+        const double mid = std::sqrt(low * high);
+        (energy_loss(physics, thrown, mid) < target ? low : high) = mid;
+      }
+      return high;
+    }
+    if (loss > best_loss) {
+      best_loss = loss;
+      best = tau;
+    }
+    previous = tau;
+  }
+  reached = false;
+  return best;
+}
+
+// The injected effect: the true physics and sensor, and the params of SPEC §4.
+struct InjectedEffect {
+  FlightPhysics physics;
+  Eigen::Quaterniond imu_to_body = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d bias = Eigen::Vector3d::Zero();
+  Eigen::Vector3d scale_error = Eigen::Vector3d::Zero();
+  double rate_error = 0.0;
+  json params = json::object();
+  std::optional<double> onset_s;
+  bool full_size = true;  // false: this throw cannot show the drawn magnitude
+};
+
+InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, const Throw& thrown,
+                           const FlightSpec& spec, SeededRandom& rng) {
+  InjectedEffect e;
+  const Eigen::Matrix3d& nominal = body.inertia_kg_m2;
+  e.physics.inertia_kg_m2 = nominal;
+  const Principal p = principal_of(nominal);
+  const Eigen::Vector3d w0 = thrown.omega0_body;
+  const Eigen::Vector3d l0 = nominal * w0;
+  const double energy0 = 0.5 * w0.dot(l0);
+
+  if (effect == "none") {
+  } else if (effect == "inertia_moments") {
+    Eigen::Vector3d moments;
+    for (int attempt = 0;; ++attempt) {
+      if (attempt > 10000) throw std::logic_error("no valid moment perturbation for " + body.name);
+      for (int i = 0; i < 3; ++i)
+        moments(i) = p.moments(i) * (1.0 + rng.signed_uniform(0.05, 0.20));
+      moments *= p.moments.sum() / moments.sum();
+      const double largest_change =
+          (moments.cwiseQuotient(p.moments).array() - 1.0).abs().maxCoeff();
+      // Keep 0.5 % of slack on the triangle inequality so the body stays physical.
+      const double slack = 0.005 * moments.sum();
+      const bool physical = moments(0) + slack <= moments(1) + moments(2) &&
+                            moments(1) + slack <= moments(0) + moments(2) &&
+                            moments(2) + slack <= moments(0) + moments(1);
+      if (largest_change >= 0.05 && physical) break;
+    }
+    e.physics.inertia_kg_m2 = p.axes * moments.asDiagonal() * p.axes.transpose();
+    e.params = {{"principal_kg_m2", to_json(moments)},
+                {"principal_nominal_kg_m2", to_json(p.moments)},
+                {"tensor_kg_m2", to_json(e.physics.inertia_kg_m2)}};
+  } else if (effect == "inertia_axes") {
+    const Eigen::Quaterniond r = draw_misrotation(p, rng);
+    const Eigen::Matrix3d rm = r.toRotationMatrix();
+    e.physics.inertia_kg_m2 = rm * nominal * rm.transpose();
+    e.params = {{"angle_deg", rotation_angle_deg(r)},
+                {"rotation", to_json(r)},
+                {"tensor_kg_m2", to_json(e.physics.inertia_kg_m2)}};
+  } else if (effect == "aero_torque") {
+    // d ln|L|/dt = -k |w| 2E / |L|² at release: pick k for a 4-12 % fall of |L|.
+    const double fall = rng.uniform(0.04, 0.12);
+    e.physics.aero_k_N_m_s2 =
+        fall * l0.squaredNorm() / (thrown.duration_s * w0.norm() * 2.0 * energy0);
+    e.params = {{"k_N_m_s2", e.physics.aero_k_N_m_s2}};
+  } else if (effect == "internal_damping") {
+    e.physics.rotor_inertia_kg_m2 = rng.uniform(0.08, 0.15) * p.moments(0);
+    const double relaxation =
+        relaxation_for_energy_loss(e.physics, thrown, rng.uniform(0.015, 0.06), e.full_size);
+    e.physics.rotor_damping_N_m_s = e.physics.rotor_inertia_kg_m2 / relaxation;
+    e.params = {{"model", "spherical_rotor_viscous_cavity"},
+                {"rotor_J", e.physics.rotor_inertia_kg_m2},
+                {"c", e.physics.rotor_damping_N_m_s},
+                {"relaxation_time_s", relaxation}};
+  } else if (effect == "impulse") {
+    const double fraction = rng.uniform(0.05, 0.20);
+    e.physics.has_impulse = true;
+    e.physics.angular_impulse_N_m_s = fraction * l0.norm() * rng.unit_vector();
+    e.physics.impulse_time_s = rng.uniform(0.3, 0.7) * thrown.duration_s;
+    e.physics.impulse_duration_s = spec.impulse_duration_s;
+    e.onset_s = e.physics.impulse_time_s;
+    e.params = {{"time_s", e.physics.impulse_time_s},
+                {"angular_impulse_N_m_s", to_json(e.physics.angular_impulse_N_m_s)},
+                {"duration_s", e.physics.impulse_duration_s}};
+  } else if (effect == "gyro_bias") {
+    e.bias = rng.uniform(0.05, 0.3) * rng.unit_vector();
+    e.params = {{"bias_rad_s", to_json(e.bias)}};
+  } else if (effect == "gyro_scale") {
+    do {
+      for (int i = 0; i < 3; ++i) e.scale_error(i) = rng.signed_uniform(0.02, 0.08);
+    } while (e.scale_error.maxCoeff() - e.scale_error.minCoeff() < 0.03);
+    e.params = {{"scale_error", to_json(e.scale_error)}};
+  } else if (effect == "sensor_misalignment") {
+    e.imu_to_body = draw_misrotation(p, rng);
+    e.params = {{"angle_deg", rotation_angle_deg(e.imu_to_body)},
+                {"rotation", to_json(e.imu_to_body)}};
+  } else if (effect == "clock_drift") {
+    e.rate_error = rng.signed_uniform(0.01, 0.05);
+    e.params = {{"rate_error", e.rate_error}};
+  } else {
+    throw std::invalid_argument("unknown effect '" + effect + "'");
+  }
+  return e;
+}
+
+std::vector<std::string> equivalent_class(const std::string& effect, DataKind kind) {
+  std::vector<std::string> out = {effect};
+  if (kind == DataKind::imu) {
+    if (effect == "inertia_axes") out.push_back("sensor_misalignment");
+    if (effect == "sensor_misalignment") out.push_back("inertia_axes");
+    if (effect == "clock_drift") out.push_back("gyro_scale");
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string nominal_body_json(const BodyModel& body, const Throw& thrown, DataKind kind) {
+  json j = {{"name", body.name},
+            {"mass", body.mass_kg},
+            {"inertia", {{"tensor", to_json(body.inertia_kg_m2)}}}};
+  if (kind == DataKind::markers) {
+    json markers = json::object();
+    for (std::size_t i = 0; i < thrown.markers_m.size(); ++i) {
+      markers["M" + std::to_string(i + 1)] = to_json(thrown.markers_m[i]);
+    }
+    j["markers"] = markers;
+  }
+  return j.dump(2) + "\n";
+}
+
+}  // namespace
+
+const std::vector<std::string>& effect_names() {
+  static const std::vector<std::string> names = {
+      "none",    "inertia_moments", "inertia_axes", "aero_torque",         "internal_damping",
+      "impulse", "gyro_bias",       "gyro_scale",   "sensor_misalignment", "clock_drift"};
+  return names;
+}
+
+bool is_sensor_effect(const std::string& effect) {
+  return effect == "gyro_bias" || effect == "gyro_scale" || effect == "sensor_misalignment" ||
+         effect == "clock_drift";
+}
+
+const char* to_string(DataKind kind) { return kind == DataKind::imu ? "imu" : "mocap"; }
+
+GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
+  const auto& names = effect_names();
+  if (std::find(names.begin(), names.end(), spec.effect) == names.end()) {
+    throw std::invalid_argument("unknown effect '" + spec.effect + "'");
+  }
+  if (spec.data == DataKind::markers && is_sensor_effect(spec.effect)) {
+    throw std::invalid_argument("sensor effect '" + spec.effect + "' needs IMU data");
+  }
+  const BodyModel body = body_model(spec.body);
+
+  SeededRandom throw_rng(stream_seed(seed, Stream::throw_));
+  SeededRandom effect_rng(stream_seed(seed, Stream::effect));
+  SeededRandom noise_rng(stream_seed(seed, Stream::noise));
+  Throw thrown = draw_throw(body, spec, throw_rng);
+  InjectedEffect effect = draw_effect(spec.effect, body, thrown, spec, effect_rng);
+  // Internal damping shows only when the body rate turns within the body fast enough;
+  // a throw that cannot lose the drawn energy fraction is thrown again (up to 20
+  // times: a near-symmetric body may never manage, and then keeps its last throw).
+  for (int retry = 0; !effect.full_size && retry < 20; ++retry) {
+    thrown = draw_throw(body, spec, throw_rng);
+    effect = draw_effect(spec.effect, body, thrown, spec, effect_rng);
+  }
+
+  GeneratedFlight f;
+  f.spec = spec;
+  f.seed = seed;
+  f.body_json = nominal_body_json(body, thrown, spec.data);
+  f.body = host::parse_body_json(f.body_json, body.name + " (generated body.json)");
+  f.true_inertia_kg_m2 = effect.physics.inertia_kg_m2;
+  f.true_imu_to_body = effect.imu_to_body;
+
+  // Sample times: on the sensor's clock for the IMU (recorded = true × (1 + eps)).
+  const double rate = spec.data == DataKind::imu ? spec.imu_rate_hz : spec.marker_rate_hz;
+  const int count = static_cast<int>(std::floor(thrown.duration_s * rate + 1e-9)) + 1;
+  std::vector<double> recorded(static_cast<std::size_t>(count));
+  std::vector<double> true_time(recorded.size());
+  for (int k = 0; k < count; ++k) {
+    recorded[std::size_t(k)] = k / rate;
+    true_time[std::size_t(k)] = recorded[std::size_t(k)] / (1.0 + effect.rate_error);
+  }
+
+  const PerturbedRigidBody dynamics(effect.physics);
+  FlightState initial;
+  initial.orientation = thrown.orientation0;
+  initial.omega_body = thrown.omega0_body;
+  initial.rotor_omega_body = thrown.omega0_body;  // the rotor co-rotates at release
+  const std::vector<FlightState> states = dynamics.sample(initial, true_time);
+
+  f.true_samples.resize(states.size());
+  for (std::size_t k = 0; k < states.size(); ++k) {
+    TrueSample& s = f.true_samples[k];
+    s.t_s = true_time[k];
+    s.orientation = states[k].orientation;
+    s.omega_body = states[k].omega_body;
+    s.kinetic_energy_J = dynamics.kinetic_energy(states[k]);
+    s.angular_momentum_world = states[k].orientation * dynamics.angular_momentum(states[k]);
+    if (spec.data == DataKind::markers) {
+      s.com_position_m =
+          thrown.com0_m + thrown.velocity0_m_s * s.t_s + 0.5 * kGravity * s.t_s * s.t_s;
+    }
+  }
+  // How big the dissipative effects turned out, from the truth, for reports and tests.
+  if (spec.effect == "aero_torque") {
+    effect.params["L_drop_fraction"] =
+        1.0 - f.true_samples.back().angular_momentum_world.norm() /
+                  f.true_samples.front().angular_momentum_world.norm();
+  }
+  if (spec.effect == "internal_damping") {
+    effect.params["energy_loss_fraction"] =
+        1.0 - f.true_samples.back().kinetic_energy_J / f.true_samples.front().kinetic_energy_J;
+  }
+
+  if (spec.data == DataKind::imu) {
+    host::ImuLog& log = f.imu;
+    log.path = "imu.csv";
+    log.format = "imu_csv";
+    log.time_s = recorded;
+    const Eigen::Matrix3d body_to_sensor = effect.imu_to_body.conjugate().toRotationMatrix();
+    const Eigen::Vector3d gain = Eigen::Vector3d::Ones() + effect.scale_error;
+    for (std::size_t k = 0; k < states.size(); ++k) {
+      const Eigen::Vector3d w_sensor = body_to_sensor * states[k].omega_body;
+      log.gyro_rad_s.push_back(gain.cwiseProduct(w_sensor) + effect.bias +
+                               noise_rng.normal_vector(spec.gyro_noise_rad_s));
+    }
+    if (spec.accelerometer) {
+      // Free fall: the specific force at the sensor is only its acceleration relative
+      // to the centre of mass, w' × r + w × (w × r) (aerodynamic force neglected).
+      const Eigen::Vector3d& r = body.imu_offset_m;
+      for (std::size_t k = 0; k < states.size(); ++k) {
+        const Eigen::Vector3d& w = states[k].omega_body;
+        const Eigen::Vector3d w_dot = dynamics.shell_angular_acceleration(true_time[k], states[k]);
+        const Eigen::Vector3d a = w_dot.cross(r) + w.cross(w.cross(r));
+        log.accel_m_s2.push_back(body_to_sensor * a +
+                                 noise_rng.normal_vector(spec.accel_noise_m_s2));
+      }
+    }
+  } else {
+    host::MarkerTrial& trial = f.markers;
+    trial.path = "markers.trc";
+    trial.format = "trc";
+    trial.units_in_file = "mm";
+    trial.rate_hz = spec.marker_rate_hz;
+    trial.time_s = recorded;
+    for (std::size_t i = 0; i < thrown.markers_m.size(); ++i) {
+      trial.marker_names.push_back("M" + std::to_string(i + 1));
+    }
+    for (std::size_t k = 0; k < states.size(); ++k) {
+      std::vector<Eigen::Vector3d> frame;
+      const Eigen::Matrix3d r = states[k].orientation.toRotationMatrix();
+      for (const auto& m : thrown.markers_m) {
+        frame.push_back(f.true_samples[k].com_position_m + r * m +
+                        noise_rng.normal_vector(spec.marker_noise_m));
+      }
+      trial.positions_m.push_back(frame);
+    }
+    if (spec.occlusions) {
+      // Now and then one marker drops out for a few frames; never two at once, so at
+      // least five markers are always visible.
+      std::vector<bool> busy(states.size(), false);
+      const int events = noise_rng.index(4);
+      for (int e = 0; e < events; ++e) {
+        const int marker = noise_rng.index(static_cast<int>(thrown.markers_m.size()));
+        const int length = 2 + noise_rng.index(5);
+        const int start = noise_rng.index(count - length);
+        bool free = true;
+        for (int k = start; k < start + length; ++k) free = free && !busy[std::size_t(k)];
+        if (!free) continue;
+        for (int k = start; k < start + length; ++k) {
+          busy[std::size_t(k)] = true;
+          trial.positions_m[std::size_t(k)][std::size_t(marker)].setConstant(
+              std::numeric_limits<double>::quiet_NaN());
+        }
+      }
+    }
+  }
+
+  FlightTruth& t = f.truth;
+  t.effect = spec.effect;
+  t.equivalent = equivalent_class(spec.effect, spec.data);
+  t.params = effect.params;
+  t.onset_s = effect.onset_s;
+  t.omega0_body = thrown.omega0_body;
+  t.body = body.name;
+  t.kind = spec.data;
+  t.duration_s = thrown.duration_s;
+  return f;
+}
+
+json truth_to_json(const FlightTruth& truth) {
+  json j = {{"kind", to_string(truth.kind)},  {"body", truth.body},
+            {"duration_s", truth.duration_s}, {"w0", to_json(truth.omega0_body)},
+            {"effect", truth.effect},         {"params", truth.params},
+            {"equivalent", truth.equivalent}};
+  if (truth.onset_s) j["onset_s"] = *truth.onset_s;
+  return j;
+}
+
+}  // namespace aloft::generator

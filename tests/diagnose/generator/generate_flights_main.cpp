@@ -1,0 +1,81 @@
+// aloft_generate_flights: writes generated flights to a folder, one sub-folder per
+// flight (body.json, imu.csv or markers.trc, truth.json) and a truth.json over all of
+// them, so `aloft diagnose` can be run on them end to end during development.
+//
+//   aloft_generate_flights --out DIR                 the withheld-effect cases
+//   aloft_generate_flights --out DIR --random 20 --seed 7   20 random flights
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <filesystem>
+#include <iostream>
+
+#include "body_catalogue.hpp"
+#include "common/atomic_file.hpp"
+#include "common/commands.hpp"
+#include "flight_files.hpp"
+#include "seeded_random.hpp"
+#include "withheld_effect_cases.hpp"
+
+namespace {
+
+using namespace aloft::generator;
+
+std::vector<FlightCase> random_cases(int count, std::uint64_t seed) {
+  SeededRandom rng(seed);
+  std::vector<FlightCase> cases;
+  for (int i = 0; i < count; ++i) {
+    FlightCase c;
+    c.spec.effect = effect_names()[std::size_t(rng.index(int(effect_names().size())))];
+    c.spec.body = body_names()[std::size_t(rng.index(int(body_names().size())))];
+    const bool markers = !is_sensor_effect(c.spec.effect) && rng.uniform() < 0.35;
+    c.spec.data = markers ? DataKind::markers : DataKind::imu;
+    c.seed = seed * 1000003ull + std::uint64_t(i);
+    char name[32];
+    std::snprintf(name, sizeof name, "case%02d", i);
+    c.name = name;
+    cases.push_back(c);
+  }
+  return cases;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Write generated flights with one withheld effect each (SPEC §3 files)."};
+  std::string out_dir;
+  int random_count = 0;
+  std::uint64_t seed = 1;
+  int limit = -1;
+  app.add_option("--out", out_dir, "folder to write into")->required();
+  app.add_option("--random", random_count,
+                 "write this many random flights instead of the "
+                 "withheld-effect cases")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--seed", seed, "seed of the random flights");
+  app.add_option("--limit", limit, "write only the first N flights")->check(CLI::NonNegativeNumber);
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    std::vector<FlightCase> cases =
+        random_count > 0 ? random_cases(random_count, seed) : withheld_effect_cases();
+    if (limit >= 0 && std::size_t(limit) < cases.size()) cases.resize(std::size_t(limit));
+    nlohmann::json all = nlohmann::json::object();
+    for (const FlightCase& c : cases) {
+      const GeneratedFlight flight = generate_flight(c.spec, c.seed);
+      const std::string data_file =
+          write_flight(flight, (std::filesystem::path(out_dir) / c.name).string());
+      nlohmann::json truth = truth_to_json(flight.truth);
+      truth["seed"] = c.seed;
+      all[c.name] = truth;
+      std::cout << c.name << "/" << data_file << "  " << flight.truth.effect << " on "
+                << flight.truth.body << "\n";
+    }
+    aloft::host::write_file_atomically((std::filesystem::path(out_dir) / "truth.json").string(),
+                                       [&](std::ostream& o) { o << all.dump(1) << '\n'; });
+    std::cout << cases.size() << " flights written to " << out_dir << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "aloft_generate_flights: " << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}
