@@ -28,29 +28,22 @@ aloft::RigidBodyState<S> thrown_state() {
   return state;
 }
 
-template <typename S>
-void BM_Rk4Step(benchmark::State& bench) {
-  const aloft::Rk4Integrator<S> integrator(gf_cylinder_tilted<S>());
+// One step of a core integrator (RK4 or splitting) in scalar type S.
+template <template <typename> class Integrator, typename S>
+void BM_Step(benchmark::State& bench) {
+  const Integrator<S> integrator(gf_cylinder_tilted<S>());
   aloft::RigidBodyState<S> state = thrown_state<S>();
   for (auto _ : bench) {
     integrator.step(state, S(1e-3));
     benchmark::DoNotOptimize(state);
   }
 }
-BENCHMARK_TEMPLATE(BM_Rk4Step, double);
-BENCHMARK_TEMPLATE(BM_Rk4Step, float);
-
 template <typename S>
-void BM_SplittingStep(benchmark::State& bench) {
-  const aloft::SplittingIntegrator<S> integrator(gf_cylinder_tilted<S>());
-  aloft::RigidBodyState<S> state = thrown_state<S>();
-  for (auto _ : bench) {
-    integrator.step(state, S(1e-3));
-    benchmark::DoNotOptimize(state);
-  }
-}
-BENCHMARK_TEMPLATE(BM_SplittingStep, double);
-BENCHMARK_TEMPLATE(BM_SplittingStep, float);
+using SplittingIntegrator = aloft::SplittingIntegrator<S>;  // default order: fourth
+BENCHMARK_TEMPLATE(BM_Step, aloft::Rk4Integrator, double)->Name("BM_Rk4Step<double>");
+BENCHMARK_TEMPLATE(BM_Step, aloft::Rk4Integrator, float)->Name("BM_Rk4Step<float>");
+BENCHMARK_TEMPLATE(BM_Step, SplittingIntegrator, double)->Name("BM_SplittingStep<double>");
+BENCHMARK_TEMPLATE(BM_Step, SplittingIntegrator, float)->Name("BM_SplittingStep<float>");
 
 template <typename S>
 void BM_OnboardCheckUpdateK8(benchmark::State& bench) {
