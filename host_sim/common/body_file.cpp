@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -50,6 +51,30 @@ void check(Status status, const std::string& source) {
   if (status != Status::ok) fail(source, std::string("inertia: ") + describe(status));
 }
 
+// Measured moments of a flat body (a racquet, a plate) often break the triangle
+// inequality by a little, well inside their uncertainty; such a body is still worth
+// simulating. Up to this share of the moments' sum it is accepted with a warning.
+constexpr double kMeasuredTriangleSlack = 0.05;
+
+// Builds the tensor strictly, or with the measured slack and a one-line warning.
+template <typename Make>
+void make_measured(const Make& make, InertiaTensor<double>& out, const std::string& source) {
+  Status s = make(InertiaTensor<double>::relative_tolerance());
+  if (s == Status::tensor_breaks_triangle_inequality) {
+    s = make(kMeasuredTriangleSlack);
+    if (s == Status::ok) {
+      const Eigen::Vector3d m = out.principal_moments();
+      const double excess = m(2) - m(0) - m(1);
+      std::fprintf(stderr,
+                   "aloft: warning: %s: principal moments break the triangle inequality by "
+                   "%.1f %% of their sum (measured moments of a flat body?); simulating them "
+                   "as given\n",
+                   source.c_str(), 100.0 * excess / m.sum());
+    }
+  }
+  check(s, source);
+}
+
 InertiaTensor<double> parse_inertia(const json& body, double mass, bool has_mass,
                                     const std::string& source) {
   if (!body.contains("inertia") || !body["inertia"].is_object()) {
@@ -67,13 +92,18 @@ InertiaTensor<double> parse_inertia(const json& body, double mass, bool has_mass
     if (!t.is_array() || t.size() != 3) fail(source, "\"tensor\" must be a 3x3 array");
     Eigen::Matrix3d m;
     for (int r = 0; r < 3; ++r) m.row(r) = vector3(t[size_t(r)], "tensor", source).transpose();
-    check(InertiaTensor<double>::make_from_tensor(m, out), source);
+    make_measured([&](double slack) { return InertiaTensor<double>::make_from_tensor(m, out, slack); },
+                  out, source);
   } else if (inertia.contains("principal")) {
     const Eigen::Vector3d moments = vector3(inertia["principal"], "principal", source);
     const Eigen::Quaterniond axes = inertia.contains("axes")
                                         ? quaternion(inertia["axes"], "axes", source)
                                         : Eigen::Quaterniond::Identity();
-    check(InertiaTensor<double>::make_from_principal(moments, axes, out), source);
+    make_measured(
+        [&](double slack) {
+          return InertiaTensor<double>::make_from_principal(moments, axes, out, slack);
+        },
+        out, source);
   } else {
     const json& shape = inertia["shape"];
     if (!has_mass) fail(source, "\"shape\" needs \"mass\"");

@@ -29,8 +29,12 @@ class InertiaTensor {
   // Relative tolerance of the validity checks: rounding of a tensor given in text.
   static constexpr Scalar relative_tolerance() { return Scalar(1e-5); }
 
-  // From a full symmetric tensor in body axes.
-  static Status make_from_tensor(const Mat3<Scalar>& tensor, InertiaTensor& out) {
+  // From a full symmetric tensor in body axes. `triangle_slack` (relative to the sum of
+  // the moments) is how far a principal moment may exceed the sum of the other two: by
+  // default rounding only; a host reading *measured* moments of a flat body may allow
+  // their uncertainty (see host_sim/common/body_file.cpp).
+  static Status make_from_tensor(const Mat3<Scalar>& tensor, InertiaTensor& out,
+                                 Scalar triangle_slack = relative_tolerance()) {
     for (int i = 0; i < 9; ++i) {
       if (!std::isfinite(tensor.data()[i])) return Status::non_finite_input;
     }
@@ -44,7 +48,7 @@ class InertiaTensor {
     Mat3<Scalar> axes;
     symmetric_eigen_decomposition(symmetric, moments, axes);  // ascending, right-handed
     if (!(moments(0) > relative_tolerance() * scale)) return Status::tensor_not_positive_definite;
-    const Status triangle = check_triangle(moments);
+    const Status triangle = check_triangle(moments, triangle_slack);
     if (triangle != Status::ok) return triangle;
     out.tensor_ = symmetric;
     out.inverse_ = symmetric.inverse();
@@ -56,11 +60,12 @@ class InertiaTensor {
   // From principal moments (any order) and the rotation mapping the principal frame
   // into the body frame (identity: principal axes are body axes).
   static Status make_from_principal(const Vec3<Scalar>& moments, const Quat<Scalar>& axes,
-                                    InertiaTensor& out) {
+                                    InertiaTensor& out,
+                                    Scalar triangle_slack = relative_tolerance()) {
     if (!all_finite(moments) || !all_finite(axes)) return Status::non_finite_input;
     if (!is_unit(axes)) return Status::non_unit_quaternion;
     if (!(moments.minCoeff() > Scalar(0))) return Status::tensor_not_positive_definite;
-    const Status triangle = check_triangle(moments);
+    const Status triangle = check_triangle(moments, triangle_slack);
     if (triangle != Status::ok) return triangle;
     const Mat3<Scalar> r = axes.normalized().toRotationMatrix();
     const Mat3<Scalar> tensor = r * moments.asDiagonal() * r.transpose();
@@ -111,9 +116,9 @@ class InertiaTensor {
   static bool positive(Scalar v) { return std::isfinite(v) && v > Scalar(0); }
 
   // A physical body has every principal moment at most the sum of the other two
-  // (equality: a flat plate). Rounding of given values is allowed for.
-  static Status check_triangle(const Vec3<Scalar>& m) {
-    const Scalar slack = relative_tolerance() * m.sum();
+  // (equality: a flat plate), up to `relative_slack` of the sum of the moments.
+  static Status check_triangle(const Vec3<Scalar>& m, Scalar relative_slack) {
+    const Scalar slack = relative_slack * m.sum();
     if (m(0) > m(1) + m(2) + slack || m(1) > m(0) + m(2) + slack || m(2) > m(0) + m(1) + slack) {
       return Status::tensor_breaks_triangle_inequality;
     }
