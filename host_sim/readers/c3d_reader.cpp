@@ -1,0 +1,172 @@
+#include "readers/c3d_reader.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <limits>
+
+#include "common/commands.hpp"
+#include "readers/c3d_numbers.hpp"
+#include "readers/c3d_parameters.hpp"
+#include "readers/trc_reader.hpp"
+
+namespace aloft::host {
+
+namespace {
+
+using c3d::ByteView;
+using c3d::ParameterSection;
+using c3d::Processor;
+
+constexpr std::size_t kBlockBytes = 512;
+
+std::vector<std::uint8_t> read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path + ": cannot open file");
+  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                  std::istreambuf_iterator<char>());
+  if (bytes.empty()) throw Error(path + ": file is empty");
+  return bytes;
+}
+
+// A parameter stored as int16 that means an unsigned count (frame numbers, DATA_START).
+std::optional<std::size_t> unsigned_word(const ParameterSection& params, const char* group,
+                                         const char* name, std::size_t index = 0) {
+  const c3d::Parameter* p = params.find(group, name);
+  const auto value = params.number(group, name, index);
+  if (!p || !value) return std::nullopt;
+  if (p->type == 2) return static_cast<std::size_t>(static_cast<std::uint16_t>(std::int16_t(*value)));
+  if (*value < 0 || !std::isfinite(*value)) return std::nullopt;
+  return static_cast<std::size_t>(*value);
+}
+
+std::vector<std::string> point_labels(const ParameterSection& params, std::size_t points) {
+  std::vector<std::string> labels = params.strings("POINT", "LABELS");
+  // Files with more than 255 points continue the list in LABELS2, LABELS3, ...
+  for (int k = 2; labels.size() < points; ++k) {
+    const auto more = params.strings("POINT", "LABELS" + std::to_string(k));
+    if (more.empty()) break;
+    labels.insert(labels.end(), more.begin(), more.end());
+  }
+  labels.resize(points);
+  for (std::size_t i = 0; i < points; ++i) {
+    if (labels[i].empty()) labels[i] = "point" + std::to_string(i + 1);
+  }
+  return labels;
+}
+
+}  // namespace
+
+MarkerTrial read_c3d(const std::string& path, C3dDetails* details) {
+  const std::vector<std::uint8_t> bytes = read_bytes(path);
+  const ByteView file(bytes);
+  const std::uint8_t* header = file.at(0, kBlockBytes);
+  if (!header) throw Error(path + ": too short for a C3D header (512 bytes)");
+  if (header[1] != 0x50) throw Error(path + ": not a C3D file (no 0x50 key in its header)");
+
+  const ParameterSection params = parse_parameter_section(file, header[0], path);
+  const Processor format = params.processor;
+  auto header_word = [&](int n) { return decode_u16(header + 2 * (n - 1), format); };  // 1-based
+
+  // Data layout from the header, which every writer fills in; POINT:SCALE and
+  // POINT:DATA_START repeat it and win when present (the parameters are authoritative).
+  const std::size_t points = header_word(2);
+  const std::size_t analog_per_frame = header_word(3);
+  std::size_t first_frame = header_word(4);
+  std::size_t last_frame = header_word(5);
+  double scale = params.number("POINT", "SCALE").value_or(0.0);
+  if (!std::isfinite(scale) || scale == 0.0) scale = c3d::decode_f32(header + 12, format);
+  std::size_t data_start = unsigned_word(params, "POINT", "DATA_START").value_or(0);
+  if (data_start < 2) data_start = header_word(9);  // some writers leave the parameter 0
+  // Long trials do not fit the header's 16-bit frame numbers: TRIAL:ACTUAL_*_FIELD hold
+  // them as two 16-bit words, low word first.
+  const auto start_low = unsigned_word(params, "TRIAL", "ACTUAL_START_FIELD", 0);
+  const auto start_high = unsigned_word(params, "TRIAL", "ACTUAL_START_FIELD", 1);
+  const auto end_low = unsigned_word(params, "TRIAL", "ACTUAL_END_FIELD", 0);
+  const auto end_high = unsigned_word(params, "TRIAL", "ACTUAL_END_FIELD", 1);
+  if (start_low && start_high && end_low && end_high) {
+    first_frame = *start_low + (*start_high << 16);
+    last_frame = *end_low + (*end_high << 16);
+  }
+
+  if (points == 0) throw Error(path + ": holds no 3D points");
+  if (!std::isfinite(scale) || scale == 0.0) throw Error(path + ": POINT:SCALE is 0 or not finite");
+  if (last_frame < first_frame) {
+    throw Error(path + ": last frame " + std::to_string(last_frame) + " before first frame " +
+                std::to_string(first_frame));
+  }
+  if (data_start < 2) throw Error(path + ": data section start block " + std::to_string(data_start) + " is invalid");
+  const std::size_t frames = last_frame - first_frame + 1;
+  const bool float_data = scale < 0.0;
+  const std::size_t width = float_data ? 4 : 2;
+  const std::size_t frame_bytes = (4 * points + analog_per_frame) * width;
+  const std::size_t data_offset = (data_start - 1) * kBlockBytes;
+  const std::size_t available =
+      data_offset < file.size() ? (file.size() - data_offset) / frame_bytes : 0;
+  if (available < frames) {
+    throw Error(path + ": data section holds " + std::to_string(available) + " of " +
+                std::to_string(frames) + " frames (truncated file?)");
+  }
+
+  double rate = params.number("POINT", "RATE").value_or(0.0);
+  if (!(rate > 0.0) || !std::isfinite(rate)) rate = c3d::decode_f32(header + 20, format);
+  if (!(rate > 0.0) || !std::isfinite(rate)) throw Error(path + ": no valid POINT:RATE");
+
+  const std::vector<std::string> units = params.strings("POINT", "UNITS");
+  const std::string unit = units.empty() || units[0].empty() ? "mm" : units[0];
+  const double metres = metres_per_unit(unit);
+  if (metres == 0.0) throw Error(path + ": unknown POINT:UNITS '" + unit + "' (expected mm, cm or m)");
+
+  MarkerTrial trial;
+  trial.path = path;
+  trial.format = "c3d";
+  trial.units_in_file = unit;
+  trial.rate_hz = rate;
+  trial.marker_names = point_labels(params, points);
+  trial.time_s.resize(frames);
+  trial.positions_m.assign(frames, std::vector<Eigen::Vector3d>(points));
+
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double integer_scale = std::abs(scale) * metres;
+  for (std::size_t f = 0; f < frames; ++f) {
+    // Frame numbers are 1-based; a writer that starts at 0 gets a negative first time.
+    trial.time_s[f] = (static_cast<double>(first_frame) - 1.0 + static_cast<double>(f)) / rate;
+    const std::uint8_t* frame = file.at(data_offset + f * frame_bytes, frame_bytes);
+    if (!frame) throw Error(path + ": frame " + std::to_string(first_frame + f) + " lies beyond the file");
+    for (std::size_t m = 0; m < points; ++m) {
+      const std::uint8_t* word = frame + 4 * m * width;
+      Eigen::Vector3d xyz;
+      double residual;
+      if (float_data) {
+        for (int a = 0; a < 3; ++a) xyz[a] = c3d::decode_f32(word + 4 * a, format) * metres;
+        residual = c3d::decode_f32(word + 12, format);
+      } else {
+        for (int a = 0; a < 3; ++a) xyz[a] = c3d::decode_i16(word + 2 * a, format) * integer_scale;
+        residual = c3d::decode_i16(word + 6, format);
+      }
+      const bool occluded = residual < 0.0 || !xyz.allFinite();
+      trial.positions_m[f][m] = occluded ? Eigen::Vector3d(nan, nan, nan) : xyz;
+    }
+  }
+
+  if (!params.damage.empty() && !details) {
+    // The points are sound (the data section checked out), but the user should know
+    // that labels or units may be missing: one line, as every message of aloft. A
+    // caller that asks for C3dDetails reports the damage itself.
+    std::fprintf(stderr, "aloft: warning: %s: parameter section damaged (%s); read up to there\n",
+                 path.c_str(), params.damage.c_str());
+  }
+  if (details) {
+    details->processor = c3d::processor_name(format);
+    details->float_data = float_data;
+    details->point_scale = scale;
+    details->first_frame = static_cast<int>(first_frame);
+    details->analog_samples_per_frame = static_cast<int>(analog_per_frame);
+    details->parameter_damage = params.damage;
+    details->parameter_repairs = params.repairs;
+  }
+  return trial;
+}
+
+}  // namespace aloft::host

@@ -1,0 +1,118 @@
+#include "readers/imu_csv_reader.hpp"
+
+#include <cmath>
+#include <optional>
+
+#include "common/commands.hpp"
+#include "readers/text_cells.hpp"
+#include "readers/time_stamps.hpp"
+
+namespace aloft::host {
+
+namespace {
+
+// Column indices of the recognised layout.
+struct ImuColumns {
+  std::string format;
+  int time = -1;
+  int gyro[3] = {-1, -1, -1};
+  int accel[3] = {-1, -1, -1};
+};
+
+int find_column(const std::vector<std::string>& header, const std::string& name) {
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (to_lower(header[i]) == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+std::optional<ImuColumns> recognise_plain(const std::vector<std::string>& header) {
+  ImuColumns c;
+  c.format = "imu_csv";
+  c.time = find_column(header, "t");
+  const char* gyro[3] = {"gx", "gy", "gz"};
+  const char* accel[3] = {"ax", "ay", "az"};
+  for (int k = 0; k < 3; ++k) {
+    c.gyro[k] = find_column(header, gyro[k]);
+    c.accel[k] = find_column(header, accel[k]);
+  }
+  if (c.time < 0 || c.gyro[0] < 0 || c.gyro[1] < 0 || c.gyro[2] < 0) return std::nullopt;
+  return c;
+}
+
+std::optional<ImuColumns> recognise_phyphox(const std::vector<std::string>& header) {
+  ImuColumns c;
+  c.format = "phyphox";
+  c.time = find_column(header, "time (s)");
+  const char* gyro[3] = {"gyroscope x (rad/s)", "gyroscope y (rad/s)", "gyroscope z (rad/s)"};
+  // phyphox's combined-sensor exports name the accelerometer like this.
+  const char* accel[3] = {"acceleration x (m/s^2)", "acceleration y (m/s^2)",
+                          "acceleration z (m/s^2)"};
+  for (int k = 0; k < 3; ++k) {
+    c.gyro[k] = find_column(header, gyro[k]);
+    c.accel[k] = find_column(header, accel[k]);
+  }
+  if (c.time < 0 || c.gyro[0] < 0 || c.gyro[1] < 0 || c.gyro[2] < 0) return std::nullopt;
+  return c;
+}
+
+}  // namespace
+
+ImuLog read_imu_csv(const std::string& path) {
+  const TextFile file = read_text_file(path);
+  std::size_t header_index = 0;
+  while (is_blank(file.lines[header_index])) ++header_index;
+  const std::size_t header_line = header_index + 1;
+  const std::vector<std::string> header =
+      split_csv_line(file.lines[header_index], path, header_line);
+
+  std::optional<ImuColumns> columns = recognise_plain(header);
+  if (!columns) columns = recognise_phyphox(header);
+  if (!columns) {
+    throw Error(at_line(path, header_line,
+                        "header is neither a plain IMU log (t,gx,gy,gz[,ax,ay,az]) nor a "
+                        "phyphox export (\"Time (s)\",\"Gyroscope x (rad/s)\",...)"));
+  }
+  const int accel_found = (columns->accel[0] >= 0) + (columns->accel[1] >= 0) +
+                          (columns->accel[2] >= 0);
+  if (accel_found != 0 && accel_found != 3) {
+    throw Error(at_line(path, header_line, "accelerometer needs all three columns or none"));
+  }
+  const bool has_accel = accel_found == 3;
+
+  ImuLog log;
+  log.path = path;
+  log.format = columns->format;
+  std::vector<std::size_t> line_numbers;
+  for (std::size_t i = header_index + 1; i < file.lines.size(); ++i) {
+    if (is_blank(file.lines[i])) continue;
+    const std::size_t line = i + 1;
+    const std::vector<std::string> cells = split_csv_line(file.lines[i], path, line);
+    if (cells.size() != header.size()) {
+      throw Error(at_line(path, line,
+                          std::to_string(cells.size()) + " cells where the header has " +
+                              std::to_string(header.size()) + " (truncated or malformed row)"));
+    }
+    auto value = [&](int column) {
+      const double v = parse_number(cells[column], path, line, header[column]);
+      if (!std::isfinite(v)) {
+        throw Error(at_line(path, line, "column " + header[column] + " is not finite ('" +
+                                            cells[column] + "')"));
+      }
+      return v;
+    };
+    log.time_s.push_back(value(columns->time));
+    log.gyro_rad_s.emplace_back(value(columns->gyro[0]), value(columns->gyro[1]),
+                                value(columns->gyro[2]));
+    if (has_accel) {
+      log.accel_m_s2.emplace_back(value(columns->accel[0]), value(columns->accel[1]),
+                                  value(columns->accel[2]));
+    }
+    line_numbers.push_back(line);
+  }
+  if (log.time_s.empty()) throw Error(path + ": no samples after the header");
+  check_time_stamps(log.time_s, path, line_numbers);
+  return log;
+}
+
+}  // namespace aloft::host

@@ -1,0 +1,18 @@
+// IMU logs of SPEC §3: CSV with a header row, in one of two layouts recognised by the
+// header (column order free, names case-insensitive):
+//   plain:   t, gx, gy, gz [, ax, ay, az]              (s, rad/s, m/s²)
+//   phyphox: "Time (s)", "Gyroscope x (rad/s)", "Gyroscope y (rad/s)",
+//            "Gyroscope z (rad/s)" [, "Absolute (rad/s)"]   (the magnitude is ignored)
+// Every sample must be finite and time strictly increasing; otherwise
+// aloft::host::Error "FILE:LINE: problem".
+#pragma once
+
+#include <string>
+
+#include "common/trial.hpp"
+
+namespace aloft::host {
+
+ImuLog read_imu_csv(const std::string& path);
+
+}  // namespace aloft::host

@@ -1,0 +1,32 @@
+// Rigid-body pose files of SPEC §3, read into PoseTrial (orientation body -> world,
+// Hamilton, aloft/rotation.hpp; position of the body origin in metres).
+//
+// OpenSim .mot / .sto: a header of key=value lines up to "endheader" (inDegrees=yes|no
+// is required; nRows and nColumns, when given, are checked), then a row of column names
+// and rows of numbers separated by tabs or spaces. The free joint is read from three
+// rotation columns, a body-fixed X-Y-Z Cardan sequence (R = Rx(a)·Ry(b)·Rz(c)), and
+// three translation columns. Columns are recognised by name — suffixes rx/ry/rz,
+// rotx/roty/rotz, tx/ty/tz, or OpenSim's default free-joint names ..._coord_0 to
+// ..._coord_5 — and, when none is recognised and the file has exactly three or six
+// columns besides time, by position (rotations first). Without translation columns the
+// trial has no positions.
+//
+// Pose CSV: header t,qw,qx,qy,qz with optional x,y,z (metres); other columns (for
+// example the wx,wy,wz of `aloft simulate` and `aloft study` output) are ignored.
+// A quaternion whose norm is off 1 by more than 1e-3 is an error; others are normalised.
+//
+// Both readers make consecutive quaternions lie in the same hemisphere (q and -q are
+// the same rotation), so that differences and interpolation between samples are short.
+// Errors are aloft::host::Error "FILE:LINE: problem".
+#pragma once
+
+#include <string>
+
+#include "common/trial.hpp"
+
+namespace aloft::host {
+
+PoseTrial read_mot(const std::string& path);  // .mot and .sto
+PoseTrial read_pose_csv(const std::string& path);
+
+}  // namespace aloft::host

@@ -1,0 +1,153 @@
+#include "readers/trc_reader.hpp"
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "common/commands.hpp"
+#include "readers/text_cells.hpp"
+#include "readers/time_stamps.hpp"
+
+namespace aloft::host {
+
+double metres_per_unit(const std::string& unit) {
+  const std::string u = to_lower(trim(unit));
+  if (u == "mm") return 1e-3;
+  if (u == "cm") return 1e-2;
+  if (u == "m") return 1.0;
+  return 0.0;
+}
+
+namespace {
+
+constexpr std::size_t kFirstHeaderLines = 5;
+
+// Keys of line 2 with the values of line 3.
+std::map<std::string, std::string> header_values(const TextFile& file) {
+  const std::vector<std::string> keys = split_tab_line(file.lines[1]);
+  const std::vector<std::string> values = split_tab_line(file.lines[2]);
+  std::map<std::string, std::string> out;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (keys[i].empty()) continue;
+    out[to_lower(keys[i])] = i < values.size() ? values[i] : std::string();
+  }
+  return out;
+}
+
+double header_number(const std::map<std::string, std::string>& header, const std::string& key,
+                     const std::string& path) {
+  const auto it = header.find(to_lower(key));
+  if (it == header.end()) throw Error(at_line(path, 2, "header has no " + key));
+  double value = 0.0;
+  if (!try_parse_number(it->second, value) || !std::isfinite(value)) {
+    throw Error(at_line(path, 3, key + " '" + it->second + "' is not a number"));
+  }
+  return value;
+}
+
+std::size_t header_count(const std::map<std::string, std::string>& header, const std::string& key,
+                         const std::string& path) {
+  const double value = header_number(header, key, path);
+  if (value < 0 || value != std::floor(value) || value > 1e9) {
+    throw Error(at_line(path, 3, key + " must be a whole number, not '" + header.at(to_lower(key)) +
+                                     "'"));
+  }
+  return static_cast<std::size_t>(value);
+}
+
+}  // namespace
+
+MarkerTrial read_trc(const std::string& path) {
+  const TextFile file = read_text_file(path);
+  if (to_lower(file.lines[0]).rfind("pathfiletype", 0) != 0) {
+    throw Error(at_line(path, 1, "not a TRC file: first line must start with PathFileType"));
+  }
+  if (file.lines.size() < kFirstHeaderLines) {
+    throw Error(path + ": header ends early (a TRC header has five lines)");
+  }
+  const auto header = header_values(file);
+
+  MarkerTrial trial;
+  trial.path = path;
+  trial.format = "trc";
+  const auto rate_key = header.count("datarate") ? "DataRate" : "CameraRate";
+  trial.rate_hz = header_number(header, rate_key, path);
+  if (!(trial.rate_hz > 0.0)) throw Error(at_line(path, 3, std::string(rate_key) + " must be positive"));
+  const std::size_t declared_frames = header_count(header, "NumFrames", path);
+  const std::size_t declared_markers = header_count(header, "NumMarkers", path);
+  const auto units = header.find("units");
+  if (units == header.end()) throw Error(at_line(path, 2, "header has no Units"));
+  const double scale = metres_per_unit(units->second);
+  if (scale == 0.0) {
+    throw Error(at_line(path, 3, "unknown units '" + units->second + "' (expected mm, cm or m)"));
+  }
+  trial.units_in_file = trim(units->second);
+
+  const std::vector<std::string> names_row = split_tab_line(file.lines[3]);
+  if (names_row.size() < 2 || to_lower(names_row[0]) != "frame#" || to_lower(names_row[1]) != "time") {
+    throw Error(at_line(path, 4, "marker header must start with Frame# and Time"));
+  }
+  for (std::size_t i = 2; i < names_row.size(); ++i) {
+    if (!names_row[i].empty()) trial.marker_names.push_back(names_row[i]);
+  }
+  if (trial.marker_names.size() != declared_markers) {
+    throw Error(at_line(path, 4, "names " + std::to_string(trial.marker_names.size()) +
+                                     " markers where NumMarkers is " +
+                                     std::to_string(declared_markers)));
+  }
+  if (trial.marker_names.empty()) throw Error(at_line(path, 4, "no marker names"));
+  const std::size_t markers = trial.marker_names.size();
+  const std::size_t cells_per_row = 2 + 3 * markers;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+
+  std::vector<std::size_t> line_numbers;
+  for (std::size_t i = kFirstHeaderLines; i < file.lines.size(); ++i) {
+    if (is_blank(file.lines[i])) continue;
+    const std::size_t line = i + 1;
+    const std::vector<std::string> cells = split_tab_line(file.lines[i]);
+    if (cells.size() < cells_per_row) {
+      throw Error(at_line(path, line, std::to_string(cells.size()) + " cells where a frame has " +
+                                          std::to_string(cells_per_row) +
+                                          " (truncated or malformed row)"));
+    }
+    for (std::size_t k = cells_per_row; k < cells.size(); ++k) {
+      if (!cells[k].empty()) {
+        throw Error(at_line(path, line, "more coordinates than NumMarkers declares"));
+      }
+    }
+    parse_number(cells[0], path, line, "Frame#");
+    trial.time_s.push_back(parse_number(cells[1], path, line, "Time"));
+    std::vector<Eigen::Vector3d> frame(markers);
+    for (std::size_t m = 0; m < markers; ++m) {
+      double xyz[3];
+      int present = 0;
+      for (int axis = 0; axis < 3; ++axis) {
+        const std::string& cell = cells[2 + 3 * m + static_cast<std::size_t>(axis)];
+        const std::string column = trial.marker_names[m] + " " + "XYZ"[axis];
+        xyz[axis] = cell.empty() ? nan : parse_number(cell, path, line, column);
+        if (std::isinf(xyz[axis])) {
+          throw Error(at_line(path, line, "column " + column + " is infinite"));
+        }
+        present += std::isfinite(xyz[axis]) ? 1 : 0;
+      }
+      if (present != 0 && present != 3) {
+        throw Error(at_line(path, line, "marker " + trial.marker_names[m] +
+                                            " has only some of X, Y, Z"));
+      }
+      frame[m] = present == 3 ? Eigen::Vector3d(xyz[0] * scale, xyz[1] * scale, xyz[2] * scale)
+                              : Eigen::Vector3d(nan, nan, nan);
+    }
+    trial.positions_m.push_back(std::move(frame));
+    line_numbers.push_back(line);
+  }
+  if (trial.time_s.empty()) throw Error(path + ": no frames after the header");
+  if (trial.time_s.size() != declared_frames) {
+    throw Error(path + ": holds " + std::to_string(trial.time_s.size()) +
+                " frames where NumFrames is " + std::to_string(declared_frames) +
+                (trial.time_s.size() < declared_frames ? " (truncated file?)" : ""));
+  }
+  check_time_stamps(trial.time_s, path, line_numbers);
+  return trial;
+}
+
+}  // namespace aloft::host
