@@ -1,10 +1,138 @@
-// Placeholder until the diagnose issue lands: says so and fails.
+// `aloft diagnose` (SPEC §4): reads the body and one kind of trial, diagnoses the gap
+// between the nominal torque-free model and the measured motion, prints a short summary
+// and writes the JSON report (--json) and the plots (--plot) only when all went well.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "common/atomic_file.hpp"
+#include "common/body_file.hpp"
 #include "common/commands.hpp"
+#include "diagnose/diagnosis.hpp"
+#include "diagnose/flight_input.hpp"
+#include "diagnose/gap_plot.hpp"
+#include "diagnose/report_json.hpp"
+#include "readers/imu_csv_reader.hpp"
+#include "readers/marker_pose_fit.hpp"
+#include "readers/segments.hpp"
+#include "readers/trial_file.hpp"
 
 namespace aloft::host {
-void add_diagnose_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("diagnose", "diagnose the sim-to-real gap (not yet implemented)");
-  cmd->allow_extras();
-  cmd->callback([] { throw Error("diagnose: not implemented yet"); });
+namespace {
+
+struct DiagnoseOptions {
+  std::string body;
+  std::string imu, segments, window, markers, poses;
+  std::string json, plot;
+  int threads = 2;
+};
+
+// "A:B" in seconds, A < B.
+std::pair<double, double> parse_window(const std::string& text) {
+  const auto colon = text.find(':');
+  const std::string bad = "--window " + text + ": expected A:B with start A < end B in seconds";
+  if (colon == std::string::npos) throw Error(bad);
+  try {
+    std::size_t used_a = 0, used_b = 0;
+    const std::string a_text = text.substr(0, colon), b_text = text.substr(colon + 1);
+    const double a = std::stod(a_text, &used_a);
+    const double b = std::stod(b_text, &used_b);
+    if (used_a != a_text.size() || used_b != b_text.size() || !std::isfinite(a) ||
+        !std::isfinite(b) || !(a < b)) {
+      throw Error(bad);
+    }
+    return {a, b};
+  } catch (const std::logic_error&) {
+    throw Error(bad);
+  }
 }
+
+std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+void require_enough_samples(const diagnose::Flight& flight, const std::string& source) {
+  if (flight.size() < diagnose::kMinimumSamples) {
+    throw Error(source + ": only " + std::to_string(flight.size()) +
+                " samples in the flight; at least " + std::to_string(diagnose::kMinimumSamples) +
+                " are needed to judge it");
+  }
+}
+
+void run_diagnose(const DiagnoseOptions& o) {
+  const int inputs = !o.imu.empty() + !o.markers.empty() + !o.poses.empty();
+  if (inputs != 1) throw Error("diagnose: give exactly one of --imu, --markers, --poses");
+  if ((!o.segments.empty() || !o.window.empty()) && o.imu.empty()) {
+    throw Error("diagnose: --segments and --window apply to --imu only");
+  }
+  if (!o.segments.empty() && !o.window.empty()) {
+    throw Error("diagnose: give --segments or --window, not both");
+  }
+  const Body body = read_body_file(o.body);
+  const diagnose::NominalInertia nominal = diagnose::NominalInertia::of(body.inertia);
+
+  std::vector<diagnose::Flight> flights;
+  bool session = false;
+  std::string source;
+  if (!o.imu.empty()) {
+    source = o.imu;
+    const ImuLog log = read_imu_csv(o.imu);
+    if (!o.segments.empty()) {
+      session = true;
+      flights = diagnose::flights_from_segments(log, body, read_segments_csv(o.segments));
+    } else if (!o.window.empty()) {
+      const auto [a, b] = parse_window(o.window);
+      flights.push_back(diagnose::flight_from_imu(log, body, a, b, file_name(o.imu) + " " + o.window));
+      source = o.imu + " (window " + o.window + ")";
+    } else {
+      flights.push_back(diagnose::flight_from_imu(log, body, -INFINITY, INFINITY, file_name(o.imu)));
+    }
+  } else if (!o.markers.empty()) {
+    source = o.markers;
+    const PoseTrial poses = fit_poses(read_marker_file(o.markers), body);
+    flights.push_back(diagnose::flight_from_poses(poses, file_name(o.markers)));
+  } else {
+    source = o.poses;
+    flights.push_back(diagnose::flight_from_poses(read_pose_file(o.poses), file_name(o.poses)));
+  }
+
+  nlohmann::json report;
+  if (session) {
+    const diagnose::SessionDiagnosis d = diagnose::diagnose_session(flights, nominal, o.threads);
+    report = diagnose::session_report(d);
+    std::cout << diagnose::session_summary(d);
+    if (!o.plot.empty()) diagnose::write_session_plots(d, nominal, o.plot);
+  } else {
+    require_enough_samples(flights.front(), source);
+    const diagnose::FlightDiagnosis d = diagnose::diagnose_flight(flights.front(), nominal);
+    report = diagnose::flight_report(d);
+    std::cout << diagnose::flight_summary(d);
+    if (!o.plot.empty()) diagnose::write_flight_plots(d, nominal, o.plot);
+  }
+  if (!o.json.empty()) {
+    write_file_atomically(o.json, [&](std::ostream& out) { out << report.dump(2) << "\n"; });
+  }
+}
+
+}  // namespace
+
+void add_diagnose_command(CLI::App& app) {
+  auto options = std::make_shared<DiagnoseOptions>();
+  auto* cmd = app.add_subcommand(
+      "diagnose", "where the simulation parts from the measured motion, which unmodelled effect "
+                  "causes it, and how far the gap shrinks with it (judged on held-out data)");
+  cmd->add_option("--body", options->body, "body file (SPEC §2)")->required();
+  cmd->add_option("--imu", options->imu, "IMU log, plain or phyphox CSV");
+  cmd->add_option("--segments", options->segments, "segments CSV: one flight per row (pooled analysis)");
+  cmd->add_option("--window", options->window, "A:B, the flight inside the IMU log (seconds)");
+  cmd->add_option("--markers", options->markers, "marker trajectories (.trc or .c3d)");
+  cmd->add_option("--poses", options->poses, "poses (.mot, .sto or pose CSV)");
+  cmd->add_option("--json", options->json, "write the JSON report here");
+  cmd->add_option("--plot", options->plot, "write DA, relative error and invariant plots (SVG, PNG) here");
+  cmd->add_option("--threads", options->threads, "threads for a session (default 2)")
+      ->check(CLI::Range(1, 64));
+  cmd->callback([options] { run_diagnose(*options); });
+}
+
 }  // namespace aloft::host

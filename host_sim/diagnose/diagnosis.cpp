@@ -1,0 +1,177 @@
+#include "diagnose/diagnosis.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "diagnose/candidate_ranking.hpp"
+#include "diagnose/held_out.hpp"
+
+namespace aloft::host::diagnose {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+// The onset detector: a one-sided CUSUM of the per-sample chi-square excess
+// (|residual/sigma|^2/3 - 1, mean 0 under noise) with drift 0.5 and alarm at 15; the
+// onset is the last time the sum was at zero before the alarm. Under noise alone its
+// average run length is far beyond any flight.
+std::optional<double> cusum_onset(const Flight& flight, const std::vector<Vec3>& readings,
+                                  const Vec3& inverse_sigma) {
+  constexpr double kDrift = 0.5, kAlarm = 15.0;
+  double sum = 0.0;
+  std::size_t start = 0;
+  for (std::size_t k = 0; k < flight.size(); ++k) {
+    if (!flight.usable[k]) continue;
+    const double excess =
+        (readings[k] - flight.omega[k]).cwiseProduct(inverse_sigma).squaredNorm() / 3.0 - 1.0;
+    sum = std::max(0.0, sum + excess - kDrift);
+    if (sum == 0.0) start = k + 1;
+    if (sum > kAlarm) return flight.time_s[std::min(start, flight.size() - 1)];
+  }
+  return std::nullopt;
+}
+
+const char* axis_name(int i) { return i == 0 ? "x" : (i == 1 ? "y" : "z"); }
+
+void describe_baseline(const Flight& flight, const std::vector<Vec3>& readings,
+                       const Vec3& inverse_sigma, Analysis& analysis) {
+  GapSums all;
+  Vec3 body_sq = Vec3::Zero();
+  int body_count = 0;
+  const Eigen::Matrix3d to_body = flight.sensor_to_body.toRotationMatrix();
+  constexpr int kSlices = 10;
+  std::vector<GapSums> slices(kSlices);
+  const double t0 = flight.start_s();
+  const double span = std::max(flight.end_s() - t0, 1e-12);
+  for (std::size_t k = 0; k < flight.size(); ++k) {
+    if (!flight.usable[k]) continue;
+    all.add(readings[k], flight.omega[k], inverse_sigma);
+    const int s = std::min(kSlices - 1, static_cast<int>((flight.time_s[k] - t0) / span * kSlices));
+    slices[static_cast<std::size_t>(s)].add(readings[k], flight.omega[k], inverse_sigma);
+    body_sq += (to_body * (readings[k] - flight.omega[k])).cwiseAbs2();
+    ++body_count;
+  }
+  analysis.baseline.rms_da_deg = all.rms_da_deg();
+  analysis.baseline.rms_rel_err = all.rms_rel_err();
+  Where& w = analysis.where;
+  w.rms_gap_body_rad_s = body_count ? Vec3((body_sq / body_count).cwiseSqrt()) : Vec3::Zero();
+  Eigen::Index axis = 0;
+  w.rms_gap_body_rad_s.maxCoeff(&axis);
+  w.dominant_axis = axis_name(static_cast<int>(axis));
+  w.gap_over_noise = all.residuals ? all.chi_square / all.residuals : 0.0;
+  for (int s = 0; s < kSlices; ++s) {
+    TimeSlice slice;
+    slice.from_s = t0 + span * s / kSlices;
+    slice.to_s = t0 + span * (s + 1) / kSlices;
+    slice.rms_da_deg = slices[static_cast<std::size_t>(s)].rms_da_deg();
+    slice.rms_rel_err = slices[static_cast<std::size_t>(s)].rms_rel_err();
+    w.slices.push_back(slice);
+  }
+}
+
+double mean_speed(const Flight& flight) {
+  double sum = 0.0;
+  int count = 0;
+  for (std::size_t k = 0; k < flight.size(); ++k) {
+    if (flight.usable[k]) {
+      sum += flight.omega[k].norm();
+      ++count;
+    }
+  }
+  return count ? sum / count : 0.0;
+}
+
+}  // namespace
+
+FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nominal) {
+  FlightDiagnosis d;
+  d.name = flight.name;
+  d.comment = flight.comment;
+  d.flight = &flight;
+  d.start_s = flight.start_s();
+  d.end_s = flight.end_s();
+  d.samples = flight.size();
+  d.rate_hz = flight.size() > 1 ? (flight.size() - 1) / std::max(d.end_s - d.start_s, 1e-12) : 0.0;
+  d.gaps = time_gaps(flight.time_s);
+  d.unusable_samples = static_cast<std::size_t>(std::count(flight.usable.begin(), flight.usable.end(), 0));
+  Analysis& analysis = d.analysis;
+  const std::size_t usable = flight.size() - d.unusable_samples;
+  if (usable < kMinimumSamples) {
+    analysis.verdict.confident = false;
+    analysis.verdict.could_not_judge.push_back(
+        "only " + std::to_string(usable) + " usable samples (at least " +
+        std::to_string(kMinimumSamples) + " are needed to fit an initial rate and an effect)");
+    analysis.where.dominant_axis = "x";
+    return d;
+  }
+  d.noise = estimate_noise_floor(flight);
+  analysis.where.noise_floor = d.noise.sigma;
+  const Vec3 inverse_sigma = d.noise.sigma.cwiseInverse();
+  const std::size_t n = flight.size();
+
+  const FlightData all{&flight, all_samples(n), inverse_sigma};
+  const EffectFit none_full = fit_effect(Effect::none, nominal, {all}, nullptr);
+  std::vector<Vec3> readings;
+  predict(none_full, nominal, 0, flight, readings);
+  describe_baseline(flight, readings, inverse_sigma, analysis);
+  analysis.where.invariants = measured_invariants(flight, nominal, d.noise);
+
+  const Folds folds = interleaved_folds(n);
+  std::array<FlightData, 2> train;
+  std::array<EffectFit, 2> none_fold;
+  for (int f = 0; f < 2; ++f) {
+    train[f] = FlightData{&flight, folds.train[f], inverse_sigma};
+    none_fold[f] = fit_effect(Effect::none, nominal, {train[f]}, &none_full);
+  }
+
+  for (Effect effect : candidate_effects(flight.gyro_input)) {
+    Candidate c;
+    c.effect = effect;
+    c.fit = effect == Effect::none ? none_full : fit_effect(effect, nominal, {all}, &none_full);
+    c.params = effect_parameters(model_of(c.fit, nominal, 0), c.fit.theta);
+    std::vector<Vec3> heldout(n, Vec3::Zero());
+    GapSums sums;
+    for (int f = 0; f < 2; ++f) {
+      // The fold fit starts from the all-data solution only to save iterations; it then
+      // converges on its own training samples.
+      const EffectFit fold = effect == Effect::none
+                                 ? none_fold[f]
+                                 : fit_effect(effect, nominal, {train[f]}, &none_fold[f], &c.fit.theta);
+      predict(fold, nominal, 0, flight, readings);
+      for (std::size_t k = 0; k < n; ++k) {
+        if (!folds.judge[f][k]) continue;
+        heldout[k] = readings[k];
+        if (flight.usable[k]) sums.add(readings[k], flight.omega[k], inverse_sigma);
+      }
+    }
+    c.heldout_chi_square = sums.chi_square;
+    c.heldout_residuals = sums.residuals;
+    c.heldout_rms_da_deg = sums.rms_da_deg();
+    c.heldout_rms_rel_err = sums.rms_rel_err();
+    c.heldout_readings.push_back(std::move(heldout));
+    analysis.candidates.push_back(std::move(c));
+  }
+
+  rank_candidates(analysis, flight.gyro_input, {&flight}, {inverse_sigma}, mean_speed(flight),
+                  d.end_s - d.start_s);
+
+  // Onset: for an impulse, the fitted time; otherwise when the nominal motion fitted to
+  // the first fifth of the flight stops explaining the data. None when the verdict is none.
+  if (analysis.verdict.effect == Effect::impulse) {
+    analysis.where.onset_s =
+        analysis.candidates[static_cast<std::size_t>(analysis.verdict.chosen)].fit.flights[0].impulse_time_s;
+  } else if (analysis.verdict.effect != Effect::none) {
+    const FlightData lead{&flight, leading_samples(n, 0.2, kMinimumSamples), inverse_sigma};
+    const EffectFit early = fit_effect(Effect::none, nominal, {lead}, &none_full);
+    predict(early, nominal, 0, flight, readings);
+    analysis.where.onset_s = cusum_onset(flight, readings, inverse_sigma);
+    if (!analysis.where.onset_s) analysis.where.onset_s = flight.start_s();
+  }
+  if (!d.noise.reliable) {
+    analysis.verdict.confident = false;
+    analysis.verdict.could_not_judge.push_back("too few clean samples to estimate the noise floor");
+  }
+  return d;
+}
+
+}  // namespace aloft::host::diagnose

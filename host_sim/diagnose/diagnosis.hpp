@@ -1,0 +1,137 @@
+// The diagnosis of the sim-to-real gap (SPEC §4): where the measured motion leaves the
+// nominal torque-free model, which candidate effect explains the gap on data the fit did
+// not see, and how far the gap shrinks with it.
+//
+// Ranking. Every candidate (none included) is fitted with the flight's initial rate and
+// judged on held-out samples (held_out.hpp); its score is the held-out chi-square (squared
+// residuals over the noise floor, divided by the best candidate's chi-square per residual
+// when that exceeds 1) plus kPenaltyPerParameter for each parameter it adds. The
+// verdict is the best-scoring candidate if it beats `none` by more than kVerdictMargin,
+// else `none`: under noise alone the best of nine candidates gains a few units of
+// chi-square by chance, never tens.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diagnose/nominal_inertia.hpp"
+#include "diagnose/effect.hpp"
+#include "diagnose/effect_fit.hpp"
+#include "diagnose/flight.hpp"
+#include "diagnose/flip_period.hpp"
+#include "diagnose/invariants.hpp"
+#include "diagnose/noise_floor.hpp"
+#include "diagnose/time_gaps.hpp"
+
+namespace aloft::host::diagnose {
+
+constexpr double kPenaltyPerParameter = 4.0;
+constexpr double kVerdictMargin = 25.0;
+// Fewer samples than this cannot inform an initial rate and an effect.
+constexpr std::size_t kMinimumSamples = 20;
+
+struct Baseline {
+  double rms_da_deg = 0.0;
+  double rms_rel_err = 0.0;
+};
+
+struct TimeSlice {
+  double from_s = 0.0, to_s = 0.0;
+  double rms_da_deg = 0.0, rms_rel_err = 0.0;
+};
+
+struct Where {
+  std::optional<double> onset_s;  // absolute time (file clock); none when never
+  std::string dominant_axis = "x";
+  Eigen::Vector3d rms_gap_body_rad_s = Eigen::Vector3d::Zero();  // baseline gap per body axis
+  Eigen::Vector3d noise_floor = Eigen::Vector3d::Zero();         // per sensor axis
+  double gap_over_noise = 0.0;  // baseline chi-square per residual (1: noise only)
+  std::vector<TimeSlice> slices;
+  std::optional<Invariants> invariants;  // per flight only
+};
+
+struct Candidate {
+  Effect effect = Effect::none;
+  EffectFit fit;  // on all the data
+  EffectParameters params;
+  double heldout_chi_square = 0.0;
+  int heldout_residuals = 0;
+  double heldout_rms_da_deg = 0.0;
+  double heldout_rms_rel_err = 0.0;
+  double score = 0.0;
+  double shrink = 0.0;     // 1 - rel_err(with) / rel_err(none), held out
+  double shrink_da = 0.0;  // the same for DA
+  bool identifiable = true;
+  bool physical = true;
+  bool evaluated = true;   // false: not applicable here (reason in note)
+  std::string note;
+  std::vector<Effect> indistinguishable;  // candidates the data cannot tell from this one
+  // Session only: the effect parameters fitted without each flight (leave one flight out).
+  std::vector<Eigen::VectorXd> heldout_theta;
+  // Held-out predictions per flight and sample (each from the fold that did not see it).
+  std::vector<std::vector<Eigen::Vector3d>> heldout_readings;
+};
+
+struct Verdict {
+  Effect effect = Effect::none;
+  std::vector<Effect> equivalent;
+  int chosen = -1;  // index into Analysis::candidates
+  double heldout_rms_da_before_deg = 0.0, heldout_rms_da_after_deg = 0.0;
+  double heldout_rms_rel_err_before = 0.0, heldout_rms_rel_err_after = 0.0;
+  bool confident = true;
+  std::vector<std::string> could_not_judge;
+};
+
+struct Analysis {
+  Baseline baseline;
+  Where where;
+  std::vector<Candidate> candidates;  // best first
+  Verdict verdict;
+  // The best candidate's held-out chi-square per residual, floored at 1: how much of the
+  // gap no candidate explains (scores are divided by it; see candidate_ranking.cpp).
+  double dispersion = 1.0;
+  std::vector<std::string> notes;
+};
+
+struct FlightDiagnosis {
+  std::string name;
+  std::string comment;
+  double start_s = 0.0, end_s = 0.0;
+  std::size_t samples = 0;
+  double rate_hz = 0.0;
+  NoiseFloor noise;
+  std::vector<TimeGap> gaps;
+  std::size_t unusable_samples = 0;
+  Analysis analysis;
+  const Flight* flight = nullptr;  // the data it was made from (plots)
+  // Session only: the flip period measured and predicted from the first sample, nominal
+  // and with the pooled verdict's effect fitted without this flight.
+  std::optional<FlipPeriod> flip_period;
+};
+
+// Mean relative flip-period error over the flights of a session that flip about the
+// intermediate axis (segment comment says "intermediate"; all flights with a period if
+// none says so).
+struct FlipPeriodSummary {
+  int flights = 0;
+  double mean_error_nominal = 0.0;
+  double mean_error_diagnosed = 0.0;  // over the same flights
+  int diagnosed_flights = 0;
+};
+
+struct SessionDiagnosis {
+  Analysis pooled;
+  std::vector<FlightDiagnosis> flights;
+  std::optional<FlipPeriodSummary> flip_period;
+};
+
+// One flight. Never throws for data it cannot judge: the verdict says so instead.
+FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nominal);
+
+// A session: every flight on its own, and the pooled analysis with effects shared by all
+// flights, judged by leaving one flight out. `threads` >= 1.
+SessionDiagnosis diagnose_session(const std::vector<Flight>& flights,
+                                  const NominalInertia& nominal, int threads = 2);
+
+}  // namespace aloft::host::diagnose

@@ -1,0 +1,75 @@
+// Fitting one candidate effect to one or more flights: the effect's parameters (shared by
+// every flight given) and each flight's initial rate, by weighted least squares on the
+// samples a mask lets through. Residuals are (predicted - measured) / sigma per axis, so
+// the cost is a chi-square when sigma is the noise floor.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <vector>
+
+#include "diagnose/nominal_inertia.hpp"
+#include "diagnose/effect.hpp"
+#include "diagnose/flight.hpp"
+#include "diagnose/flight_model.hpp"
+
+namespace aloft::host::diagnose {
+
+// Samples a fit may use (1) or must not see (0); one entry per sample of the flight.
+using SampleMask = std::vector<char>;
+
+struct FlightData {
+  const Flight* flight = nullptr;
+  SampleMask mask;               // training samples of this fit
+  Eigen::Vector3d inverse_sigma;  // 1 / noise floor per axis
+};
+
+struct FlightState {
+  std::size_t ref = 0;          // sample whose body rate is omega_ref
+  Eigen::Vector3d omega_ref = Eigen::Vector3d::Zero();
+  double impulse_time_s = 0.0;  // impulse only
+};
+
+struct EffectFit {
+  Effect effect = Effect::none;
+  Eigen::VectorXd theta;  // effect parameters, shared by the flights (see flight_model.hpp)
+  std::vector<FlightState> flights;
+  double cost = 0.0;      // weighted sum of squared training residuals
+  int residual_count = 0;  // training residuals (3 per sample)
+  // Standard errors of theta from cost/dof * (J^T J)^-1 (initial rates marginalised);
+  // infinite where the data does not inform a parameter.
+  Eigen::VectorXd theta_standard_error;
+  bool converged = true;
+};
+
+// The model of `fit` for flight `index` (impulse time included).
+EffectModel model_of(const EffectFit& fit, const NominalInertia& nominal, std::size_t index);
+
+// Predicted readings of flight `index` under `fit`.
+void predict(const EffectFit& fit, const NominalInertia& nominal, std::size_t index,
+             const Flight& flight, std::vector<Eigen::Vector3d>& readings);
+
+// Fits `effect` to `data`. `nominal_fit`, the `none` fit of the same data, gives the
+// starting rates (nullptr: start from the readings themselves). An impulse belongs to one
+// flight: fitting it to several flights at once is refused (std::invalid_argument).
+// `theta_start` (optional) starts the effect parameters elsewhere than at nominal.
+EffectFit fit_effect(Effect effect, const NominalInertia& nominal,
+                     const std::vector<FlightData>& data, const EffectFit* nominal_fit,
+                     const Eigen::VectorXd* theta_start = nullptr);
+
+// The effect parameters without each flight in turn (one Gauss-Newton step from `fit`, the
+// all-flights solution; levenberg_marquardt.hpp). Not for impulses.
+std::vector<Eigen::VectorXd> leave_one_flight_out(const EffectFit& fit, const NominalInertia& nominal,
+                                                  const std::vector<FlightData>& data);
+
+// Refits only the flights' initial rates with the effect parameters of `fixed` held: how a
+// fitted effect is carried over to a flight it never saw.
+EffectFit fit_initial_rates(const EffectFit& fixed, const NominalInertia& nominal,
+                            const std::vector<FlightData>& data, const EffectFit* nominal_fit);
+
+// Weighted sum of squared residuals of `readings` on the masked samples, and their count.
+double weighted_squares(const FlightData& data, const std::vector<Eigen::Vector3d>& readings,
+                        int* residual_count = nullptr);
+
+}  // namespace aloft::host::diagnose

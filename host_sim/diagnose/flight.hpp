@@ -1,0 +1,31 @@
+// One flight as the diagnosis sees it: measured angular velocity at each sample, in
+// sensor axes for a gyro (with the body file's sensor->body rotation beside it) or in
+// body axes for motion capture, and which samples can be trusted.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <string>
+#include <vector>
+
+namespace aloft::host::diagnose {
+
+struct Flight {
+  std::string name;        // segment name, or the file name for a single flight
+  std::string comment;     // the segment's comment, if any
+  bool gyro_input = true;  // false: rates derived from motion capture (no sensor effects)
+  // Rates differenced from noisy orientations: their noise is not white (consecutive
+  // rates share a pose, correlation -1/2), which the noise floor allows for.
+  bool rates_from_differences = false;
+  Eigen::Quaterniond sensor_to_body = Eigen::Quaterniond::Identity();
+  std::vector<double> time_s;            // as recorded, strictly increasing
+  std::vector<Eigen::Vector3d> omega;    // measured rate (sensor axes / body axes)
+  std::vector<char> usable;              // 0: left out of every fit (e.g. saturated)
+
+  std::size_t size() const { return time_s.size(); }
+  double start_s() const { return time_s.empty() ? 0.0 : time_s.front(); }
+  double end_s() const { return time_s.empty() ? 0.0 : time_s.back(); }
+};
+
+}  // namespace aloft::host::diagnose

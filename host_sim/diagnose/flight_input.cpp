@@ -1,0 +1,46 @@
+#include "diagnose/flight_input.hpp"
+
+#include "readers/body_rates.hpp"
+#include "diagnose/saturation.hpp"
+
+namespace aloft::host::diagnose {
+
+Flight flight_from_imu(const ImuLog& log, const Body& body, double from_s, double to_s,
+                       const std::string& name) {
+  Flight flight;
+  flight.name = name;
+  flight.gyro_input = true;
+  flight.sensor_to_body = body.imu_to_body;
+  for (std::size_t k = 0; k < log.time_s.size(); ++k) {
+    if (log.time_s[k] < from_s || log.time_s[k] > to_s) continue;
+    flight.time_s.push_back(log.time_s[k]);
+    flight.omega.push_back(log.gyro_rad_s[k]);
+  }
+  flight.usable.assign(flight.size(), 1);
+  mark_saturated_samples(flight);
+  return flight;
+}
+
+std::vector<Flight> flights_from_segments(const ImuLog& log, const Body& body,
+                                          const std::vector<Segment>& segments) {
+  std::vector<Flight> flights;
+  for (const Segment& s : segments) {
+    flights.push_back(flight_from_imu(log, body, s.start_s, s.end_s, s.name));
+    flights.back().comment = s.comment;
+  }
+  return flights;
+}
+
+Flight flight_from_poses(const PoseTrial& poses, const std::string& name) {
+  const BodyRates rates = body_rates_from_poses(poses);
+  Flight flight;
+  flight.name = name;
+  flight.gyro_input = false;
+  flight.rates_from_differences = true;
+  flight.time_s = rates.time_s;
+  flight.omega = rates.omega_body;
+  flight.usable.assign(flight.size(), 1);
+  return flight;
+}
+
+}  // namespace aloft::host::diagnose

@@ -1,0 +1,311 @@
+#include "diagnose/flight_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "aloft/rotation.hpp"
+
+namespace aloft::host::diagnose {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using State = Eigen::Matrix<double, 6, 1>;  // body rate, then the rotor's rate (damping only)
+
+// Longest integration step: RK4 at 5 ms keeps the relative error of a 15 rad/s motion
+// near 1e-6 over a second, far below any gyro's noise; 1 kHz data takes one step a sample.
+constexpr double kMaxStep = 0.005;
+// Rotor coupling rates above this are a rigid body for every flight we see; the cap keeps
+// the explicit steps stable (c/J h < 2).
+constexpr double kMaxRotorRate = 400.0;
+
+double logistic(double a) { return 1.0 / (1.0 + std::exp(-a)); }
+
+Vec3 inertia_moments_of(const EffectModel& model, const Eigen::VectorXd& theta) {
+  const Vec3 n = model.nominal.principal_moments;
+  const Vec3 u(theta(0), theta(1), -theta(0) - theta(1));
+  Vec3 m = n.cwiseProduct(Vec3(std::exp(u(0)), std::exp(u(1)), std::exp(u(2))));
+  return m * (n.sum() / m.sum());
+}
+
+// Everything a flight needs from (model, theta), computed once per prediction.
+class FlightDynamics {
+ public:
+  FlightDynamics(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta)
+      : effect_(model.effect) {
+    inertia_ = model.nominal.tensor;
+    const Mat3 sensor_to_body = flight.sensor_to_body.toRotationMatrix();
+    Mat3 sensor_rotation = sensor_to_body;
+    switch (effect_) {
+      case Effect::inertia_moments: {
+        const Mat3 r = model.nominal.principal_axes.toRotationMatrix();
+        inertia_ = r * inertia_moments_of(model, theta).asDiagonal() * r.transpose();
+        break;
+      }
+      case Effect::inertia_axes: {
+        const Mat3 r = quat_exp<double>(theta.head<3>()).toRotationMatrix();
+        inertia_ = r * inertia_ * r.transpose();
+        break;
+      }
+      case Effect::aero_torque:
+        drag_ = theta(0) * model.nominal.tensor.trace() / 3.0;
+        break;
+      case Effect::internal_damping:
+        rotor_ = 0.9 * model.nominal.principal_moments(0) * logistic(theta(0));
+        rotor_rate_ = std::min(std::exp(theta(1)), kMaxRotorRate);
+        break;
+      case Effect::impulse:
+        jump_ = theta.head<3>();
+        break;
+      case Effect::gyro_bias:
+        bias_ = theta.head<3>();
+        break;
+      case Effect::gyro_scale:
+        scale_ += theta.head<3>();
+        break;
+      case Effect::sensor_misalignment:
+        sensor_rotation = sensor_to_body * quat_exp<double>(theta.head<3>()).toRotationMatrix();
+        break;
+      case Effect::clock_drift:
+        time_factor_ = 1.0 / (1.0 + theta(0));
+        break;
+      case Effect::none:
+        break;
+    }
+    // The shell carries the nominal tensor less the rotor, so that with the rotor locked
+    // the body is the nominal one.
+    shell_ = inertia_ - rotor_ * Mat3::Identity();
+    shell_inverse_ = shell_.inverse();
+    body_to_sensor_ = sensor_rotation.transpose();
+  }
+
+  bool has_rotor() const { return rotor_ > 0.0; }
+  double time_factor() const { return time_factor_; }
+
+  State rate(const State& x) const {
+    const Vec3 w = x.head<3>();
+    Vec3 torque = (shell_ * w).cross(w);
+    if (drag_ != 0.0) torque -= drag_ * w.norm() * w;
+    State dx;
+    if (has_rotor()) {
+      const Vec3 wr = x.tail<3>();
+      const Vec3 coupling = rotor_rate_ * rotor_ * (wr - w);
+      dx.head<3>() = shell_inverse_ * (torque + coupling);
+      dx.tail<3>() = -w.cross(wr) - rotor_rate_ * (wr - w);
+    } else {
+      dx.head<3>() = shell_inverse_ * torque;
+      dx.tail<3>().setZero();
+    }
+    return dx;
+  }
+
+  // Body rate alone, for every effect but the rotor's (the common, hot case).
+  Vec3 rigid_rate(const Vec3& w) const {
+    Vec3 torque = (shell_ * w).cross(w);
+    if (drag_ != 0.0) torque -= drag_ * w.norm() * w;
+    return shell_inverse_ * torque;
+  }
+
+  void rk4(State& x, double h) const {
+    if (!has_rotor()) {
+      const Vec3 w = x.head<3>();
+      const Vec3 k1 = rigid_rate(w);
+      const Vec3 k2 = rigid_rate(w + 0.5 * h * k1);
+      const Vec3 k3 = rigid_rate(w + 0.5 * h * k2);
+      const Vec3 k4 = rigid_rate(w + h * k3);
+      x.head<3>() = w + (h / 6.0) * (k1 + 2.0 * (k2 + k3) + k4);
+      return;
+    }
+    const State k1 = rate(x);
+    const State k2 = rate(x + 0.5 * h * k1);
+    const State k3 = rate(x + 0.5 * h * k2);
+    const State k4 = rate(x + h * k3);
+    x += (h / 6.0) * (k1 + 2.0 * (k2 + k3) + k4);
+  }
+
+  // Integrates over [from, to] (either direction) in steps of at most kMaxStep.
+  void advance(State& x, double from, double to) const {
+    const double span = to - from;
+    const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(span) / kMaxStep - 1e-9)));
+    const double h = span / steps;
+    for (int i = 0; i < steps; ++i) rk4(x, h);
+  }
+
+  // The impulse changes L by I_nom dw; forwards adds it, backwards takes it away.
+  void apply_jump(State& x, double sign) const {
+    x.head<3>() += sign * (shell_inverse_ * (nominal_impulse_scale_ * jump_));
+  }
+  void set_impulse_scale(const Mat3& nominal_tensor) { nominal_impulse_scale_ = nominal_tensor; }
+
+  Vec3 reading(const State& x) const {
+    return scale_.cwiseProduct(body_to_sensor_ * x.head<3>()) + bias_;
+  }
+
+ private:
+  Effect effect_;
+  Mat3 inertia_;
+  Mat3 shell_;
+  Mat3 shell_inverse_;
+  Mat3 body_to_sensor_;
+  Mat3 nominal_impulse_scale_ = Mat3::Identity();
+  double drag_ = 0.0;
+  double rotor_ = 0.0;
+  double rotor_rate_ = 0.0;
+  double time_factor_ = 1.0;
+  Vec3 jump_ = Vec3::Zero();
+  Vec3 bias_ = Vec3::Zero();
+  Vec3 scale_ = Vec3::Ones();
+};
+
+// The smallest rotation that means the same as `r` to the nominal body. The torque-free
+// motion cannot see a turn of the principal frame about a symmetry axis, nor a half turn
+// about a principal axis (the Euler equations are unchanged by it), so a fitted rotation
+// is only known up to those: report the smallest member. `right`: the symmetry acts as
+// r * s (a rotated tensor); otherwise as s * r (a rotated sensor).
+Eigen::Quaterniond canonical_rotation(const Eigen::Quaterniond& r, const NominalInertia& nominal,
+                                      bool right) {
+  const Vec3 m = nominal.principal_moments;
+  const Mat3 axes = nominal.principal_axes.toRotationMatrix();
+  const double tol = 1e-3 * m.sum();
+  auto compose = [&](const Eigen::Quaterniond& s) { return right ? Eigen::Quaterniond(r * s) : Eigen::Quaterniond(s * r); };
+  auto smaller = [](const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
+    return std::abs(a.w()) > std::abs(b.w());
+  };
+  if (m(2) - m(0) < tol) return Eigen::Quaterniond::Identity();  // a sphere: any turn is none
+  int symmetric_axis = -1;
+  if (m(1) - m(0) < tol) symmetric_axis = 2;
+  if (m(2) - m(1) < tol) symmetric_axis = 0;
+  Eigen::Quaterniond best = r;
+  if (symmetric_axis >= 0) {
+    // Turns about the symmetry axis a: |w| of r*q(phi) or q(phi)*r is largest at
+    // phi = -2 atan2(v.a, w) (v, w of r); a half turn about a perpendicular axis too.
+    const Vec3 a = axes.col(symmetric_axis);
+    for (const Vec3& flip_axis : {Vec3::Zero().eval(), axes.col((symmetric_axis + 1) % 3).eval()}) {
+      const Eigen::Quaterniond flip = flip_axis.isZero() ? Eigen::Quaterniond::Identity()
+                                                         : Eigen::Quaterniond(0.0, flip_axis.x(), flip_axis.y(), flip_axis.z());
+      const Eigen::Quaterniond base = compose(flip);
+      const double phi = -2.0 * std::atan2(base.vec().dot(a), base.w());
+      const Eigen::Quaterniond turn(Eigen::AngleAxisd(phi, a));
+      const Eigen::Quaterniond candidate = right ? Eigen::Quaterniond(base * turn) : Eigen::Quaterniond(turn * base);
+      if (smaller(candidate, best)) best = candidate;
+    }
+  } else {
+    for (int i = 0; i < 3; ++i) {
+      const Vec3 p = axes.col(i);
+      const Eigen::Quaterniond candidate = compose(Eigen::Quaterniond(0.0, p.x(), p.y(), p.z()));
+      if (smaller(candidate, best)) best = candidate;
+    }
+  }
+  return best.w() < 0 ? Eigen::Quaterniond(-best.w(), -best.x(), -best.y(), -best.z()) : best;
+}
+
+}  // namespace
+
+std::size_t reference_index(Effect effect, const Flight& flight) {
+  if (effect == Effect::internal_damping || flight.size() == 0) return 0;
+  return flight.size() / 2;
+}
+
+Eigen::Vector3d body_rate_of_reading(const Flight& flight, const Eigen::Vector3d& reading) {
+  return flight.sensor_to_body * reading;
+}
+
+Eigen::Vector3d body_rate_for_reading(const EffectModel& model, const Flight& flight,
+                                      const Eigen::VectorXd& theta, const Eigen::Vector3d& reading) {
+  switch (model.effect) {
+    case Effect::gyro_bias: return flight.sensor_to_body * Vec3(reading - theta.head<3>());
+    case Effect::gyro_scale:
+      return flight.sensor_to_body * Vec3(reading.cwiseQuotient(Vec3::Ones() + theta.head<3>()));
+    case Effect::sensor_misalignment:
+      return flight.sensor_to_body * (quat_exp<double>(theta.head<3>()) * reading);
+    default: return flight.sensor_to_body * reading;
+  }
+}
+
+void predict_readings(const EffectModel& model, const Flight& flight, std::size_t ref,
+                      const Eigen::Vector3d& omega_ref, const Eigen::VectorXd& theta,
+                      std::vector<Eigen::Vector3d>& readings) {
+  const std::size_t n = flight.size();
+  readings.resize(n);
+  if (n == 0) return;
+  FlightDynamics dynamics(model, flight, theta);
+  dynamics.set_impulse_scale(model.nominal.tensor);
+  const bool has_jump = model.effect == Effect::impulse;
+  const double t_ref = flight.time_s[ref];
+  // True (simulation) time of a recorded time stamp; differs only under clock drift.
+  auto true_time = [&](double t) { return t_ref + (t - t_ref) * dynamics.time_factor(); };
+  const double t_jump = has_jump ? true_time(model.impulse_time_s) : 0.0;
+
+  State start;
+  start.head<3>() = omega_ref;
+  start.tail<3>() = omega_ref;  // rotor co-rotating at the reference (damping only)
+  readings[ref] = dynamics.reading(start);
+
+  // Forwards from the reference, then backwards; an impulse strictly between two samples
+  // (or on the later one) is applied where it falls.
+  State x = start;
+  for (std::size_t k = ref + 1; k < n; ++k) {
+    const double a = true_time(flight.time_s[k - 1]);
+    const double b = true_time(flight.time_s[k]);
+    if (has_jump && t_jump > a && t_jump <= b) {
+      dynamics.advance(x, a, t_jump);
+      dynamics.apply_jump(x, 1.0);
+      if (b > t_jump) dynamics.advance(x, t_jump, b);
+    } else {
+      dynamics.advance(x, a, b);
+    }
+    readings[k] = dynamics.reading(x);
+  }
+  x = start;
+  for (std::size_t k = ref; k-- > 0;) {
+    const double a = true_time(flight.time_s[k + 1]);
+    const double b = true_time(flight.time_s[k]);
+    if (has_jump && t_jump > b && t_jump <= a) {
+      if (a > t_jump) dynamics.advance(x, a, t_jump);
+      dynamics.apply_jump(x, -1.0);
+      dynamics.advance(x, t_jump, b);
+    } else {
+      dynamics.advance(x, a, b);
+    }
+    readings[k] = dynamics.reading(x);
+  }
+}
+
+EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta) {
+  EffectParameters p;
+  constexpr double kDeg = 180.0 / 3.14159265358979323846;
+  switch (model.effect) {
+    case Effect::inertia_moments:
+      p.principal_kg_m2 = inertia_moments_of(model, theta);
+      break;
+    case Effect::inertia_axes:
+    case Effect::sensor_misalignment:
+      p.rotation = canonical_rotation(quat_exp<double>(theta.head<3>()), model.nominal,
+                                      model.effect == Effect::inertia_axes);
+      p.angle_deg = angle_between<double>(Eigen::Quaterniond::Identity(), p.rotation) * kDeg;
+      break;
+    case Effect::aero_torque:
+      p.k_N_m_s2 = theta(0) * model.nominal.tensor.trace() / 3.0;
+      break;
+    case Effect::internal_damping:
+      p.rotor_J_kg_m2 = 0.9 * model.nominal.principal_moments(0) * logistic(theta(0));
+      p.c_N_m_s = p.rotor_J_kg_m2 * std::min(std::exp(theta(1)), kMaxRotorRate);
+      break;
+    case Effect::impulse:
+      p.vector = model.nominal.tensor * theta.head<3>();
+      p.time_s = model.impulse_time_s;
+      break;
+    case Effect::gyro_bias:
+    case Effect::gyro_scale:
+      p.vector = theta.head<3>();
+      break;
+    case Effect::clock_drift:
+      p.rate_error = theta(0);
+      break;
+    case Effect::none:
+      break;
+  }
+  return p;
+}
+
+}  // namespace aloft::host::diagnose

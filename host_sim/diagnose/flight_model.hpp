@@ -1,0 +1,70 @@
+// The torque-free body of the body file with one candidate effect added, and the sensor
+// that reads it: what a flight's readings would be for a given initial rate and effect
+// parameters. This is the forward model every fit of the diagnosis inverts.
+//
+// Effect parameters (theta), scaled so that a unit change is of the order of one rad/s
+// in the readings, which keeps the least-squares problem well conditioned:
+//   inertia_moments     u0, u1: moments n_i exp(u_i) (u2 = -u0-u1) along the nominal
+//                       principal axes, rescaled to the nominal sum (gyro data and the
+//                       torque-free equations cannot fix the scale)
+//   inertia_axes        rotation vector d (rad, body axes): I = R(d) I_nom R(d)^T
+//   aero_torque         p = k / I_mean (1/rad): tau = -k |w| w
+//   internal_damping    a, b: rotor J = 0.9 I_min logistic(a), coupling c = J exp(b)
+//   impulse             dw (rad/s): angular impulse I_nom dw (body axes) at impulse_time_s
+//   gyro_bias           b (rad/s, sensor axes)
+//   gyro_scale          s (sensor axes)
+//   sensor_misalignment rotation vector m (rad): sensor->body becomes q_imu * exp(m)
+//   clock_drift         eps: a recorded time t maps to true time t_ref + (t - t_ref)/(1+eps)
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <vector>
+
+#include "diagnose/nominal_inertia.hpp"
+#include "diagnose/effect.hpp"
+#include "diagnose/flight.hpp"
+
+namespace aloft::host::diagnose {
+
+struct EffectModel {
+  Effect effect = Effect::none;
+  NominalInertia nominal;
+  double impulse_time_s = 0.0;  // impulse only
+};
+
+// The sample whose rate is the fitted initial state: the middle of the flight, where a
+// sensitive (intermediate-axis) motion is best conditioned both ways; the first sample
+// for internal damping, whose rotor is taken to co-rotate with the body at release.
+std::size_t reference_index(Effect effect, const Flight& flight);
+
+// Readings predicted at every sample of `flight`, in the frame of flight.omega, for the
+// body rate `omega_ref` (body axes) at sample `ref` and effect parameters `theta`.
+void predict_readings(const EffectModel& model, const Flight& flight, std::size_t ref,
+                      const Eigen::Vector3d& omega_ref, const Eigen::VectorXd& theta,
+                      std::vector<Eigen::Vector3d>& readings);
+
+// The body rate (body axes) that the nominal sensor would read as `reading`; the
+// starting guess of the initial state.
+Eigen::Vector3d body_rate_of_reading(const Flight& flight, const Eigen::Vector3d& reading);
+
+// The body rate whose reading, under the effect's sensor model, is `reading` (the
+// inverse of the sensor part; inertia and torque effects read the body rate as is).
+Eigen::Vector3d body_rate_for_reading(const EffectModel& model, const Flight& flight,
+                                      const Eigen::VectorXd& theta, const Eigen::Vector3d& reading);
+
+// Physical parameters of the effect for a theta (SPEC §4 keys are made from these).
+struct EffectParameters {
+  Eigen::Vector3d principal_kg_m2 = Eigen::Vector3d::Zero();  // inertia_moments
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  // axes / misalignment
+  double angle_deg = 0.0;
+  double k_N_m_s2 = 0.0;                                       // aero_torque
+  double rotor_J_kg_m2 = 0.0, c_N_m_s = 0.0;                   // internal_damping
+  Eigen::Vector3d vector = Eigen::Vector3d::Zero();  // impulse N·m·s, bias rad/s, scale
+  double time_s = 0.0;                               // impulse
+  double rate_error = 0.0;                           // clock_drift
+};
+EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta);
+
+}  // namespace aloft::host::diagnose

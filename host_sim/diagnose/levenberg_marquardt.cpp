@@ -1,0 +1,188 @@
+#include "diagnose/levenberg_marquardt.hpp"
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace aloft::host::diagnose {
+namespace {
+
+struct Point {
+  Eigen::VectorXd shared;
+  std::vector<Eigen::VectorXd> local;
+};
+
+double total_cost(const ArrowProblem& problem, const Point& x) {
+  double cost = 0.0;
+  Eigen::VectorXd r;
+  for (int b = 0; b < problem.block_count; ++b) {
+    problem.residuals(b, x.shared, x.local[static_cast<std::size_t>(b)], r);
+    cost += r.squaredNorm();
+  }
+  return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
+}
+
+double step_size(double value) { return 1e-7 * std::max(1.0, std::abs(value)); }
+
+// J^T J and J^T r of the whole problem at x, assembled block by block.
+double linearise(const ArrowProblem& problem, const Point& x, Eigen::MatrixXd& normal,
+                 Eigen::VectorXd& gradient) {
+  const int p = problem.shared_count;
+  const int m = problem.local_count;
+  const int size = p + m * problem.block_count;
+  normal.setZero(size, size);
+  gradient.setZero(size);
+  double cost = 0.0;
+  Eigen::VectorXd r0, r1;
+  for (int b = 0; b < problem.block_count; ++b) {
+    const Eigen::VectorXd& local = x.local[static_cast<std::size_t>(b)];
+    problem.residuals(b, x.shared, local, r0);
+    cost += r0.squaredNorm();
+    Eigen::MatrixXd jac(r0.size(), p + m);
+    for (int i = 0; i < p; ++i) {
+      Eigen::VectorXd s = x.shared;
+      const double h = step_size(s(i));
+      s(i) += h;
+      problem.residuals(b, s, local, r1);
+      jac.col(i) = (r1 - r0) / h;
+    }
+    for (int i = 0; i < m; ++i) {
+      Eigen::VectorXd l = local;
+      const double h = step_size(l(i));
+      l(i) += h;
+      problem.residuals(b, x.shared, l, r1);
+      jac.col(p + i) = (r1 - r0) / h;
+    }
+    const Eigen::MatrixXd jtj = jac.transpose() * jac;
+    const Eigen::VectorXd jtr = jac.transpose() * r0;
+    const int offset = p + m * b;
+    normal.topLeftCorner(p, p) += jtj.topLeftCorner(p, p);
+    normal.block(0, offset, p, m) += jtj.topRightCorner(p, m);
+    normal.block(offset, 0, m, p) += jtj.bottomLeftCorner(m, p);
+    normal.block(offset, offset, m, m) += jtj.bottomRightCorner(m, m);
+    gradient.head(p) += jtr.head(p);
+    gradient.segment(offset, m) += jtr.tail(m);
+  }
+  return cost;
+}
+
+Point moved(const ArrowProblem& problem, const Point& x, const Eigen::VectorXd& delta) {
+  Point y = x;
+  const int p = problem.shared_count;
+  const int m = problem.local_count;
+  y.shared += delta.head(p);
+  for (int b = 0; b < problem.block_count; ++b) {
+    y.local[static_cast<std::size_t>(b)] += delta.segment(p + m * b, m);
+  }
+  return y;
+}
+
+}  // namespace
+
+LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& shared_start,
+                            const std::vector<Eigen::VectorXd>& local_start,
+                            const LeastSquaresOptions& options) {
+  Point x{shared_start, local_start};
+  Eigen::MatrixXd normal;
+  Eigen::VectorXd gradient;
+  double cost = linearise(problem, x, normal, gradient);
+  // Damping relative to each parameter's own curvature (Marquardt), so lambda is unitless.
+  double lambda = 1e-3;
+  double growth = 2.0;
+  int small_gains = 0;
+  int iteration = 0;
+  for (; iteration < options.max_iterations && std::isfinite(cost); ++iteration) {
+    // Marquardt's scaling by diag(J^T J), with a floor so that a parameter the data does
+    // not inform (zero column) stays put instead of making the system singular.
+    const double floor = 1e-9 * std::max(normal.diagonal().maxCoeff(), 1e-12);
+    Eigen::MatrixXd damped = normal;
+    damped.diagonal() += lambda * (normal.diagonal().array() + floor).matrix();
+    const Eigen::VectorXd delta = damped.ldlt().solve(-gradient);
+    if (!delta.allFinite()) break;
+    const Point candidate = moved(problem, x, delta);
+    const double new_cost = total_cost(problem, candidate);
+    // Gain predicted by the linear model: -(2 g.d + d.H.d) for cost = |r|^2.
+    const double predicted = -(2.0 * gradient.dot(delta) + delta.dot(normal * delta));
+    const double rho = predicted > 0.0 ? (cost - new_cost) / predicted : -1.0;
+    if (std::isfinite(new_cost) && new_cost < cost) {
+      const double gain = (cost - new_cost) / std::max(cost, 1e-300);
+      x = candidate;
+      const double new_linear_cost = linearise(problem, x, normal, gradient);
+      cost = new_linear_cost;
+      lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * std::min(rho, 1.0) - 1.0, 3));
+      growth = 2.0;
+      // Converged when accepted steps stop paying, with the damping low enough that the
+      // step was close to Gauss-Newton's (a heavily damped step may gain little only
+      // because it is short).
+      small_gains = gain < options.relative_tolerance ? small_gains + 1 : 0;
+      if (small_gains >= 2 && lambda < 1e-2) {
+        ++iteration;
+        break;
+      }
+    } else {
+      lambda *= growth;
+      growth *= 2.0;
+      if (lambda > 1e16) break;
+    }
+  }
+  LeastSquaresResult result;
+  result.shared = x.shared;
+  result.local = x.local;
+  result.cost = cost;
+  result.iterations = iteration;
+  result.normal_matrix = normal;
+  return result;
+}
+
+std::vector<Eigen::VectorXd> leave_one_block_out(const ArrowProblem& problem,
+                                                 const Eigen::VectorXd& shared,
+                                                 const std::vector<Eigen::VectorXd>& local) {
+  const int p = problem.shared_count;
+  const int m = problem.local_count;
+  const std::size_t blocks = static_cast<std::size_t>(problem.block_count);
+  std::vector<Eigen::MatrixXd> schur(blocks);
+  std::vector<Eigen::VectorXd> rhs(blocks);
+  Eigen::MatrixXd schur_total = Eigen::MatrixXd::Zero(p, p);
+  Eigen::VectorXd rhs_total = Eigen::VectorXd::Zero(p);
+  Eigen::VectorXd r0, r1;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    problem.residuals(static_cast<int>(b), shared, local[b], r0);
+    Eigen::MatrixXd jac(r0.size(), p + m);
+    for (int i = 0; i < p; ++i) {
+      Eigen::VectorXd s = shared;
+      const double h = step_size(s(i));
+      s(i) += h;
+      problem.residuals(static_cast<int>(b), s, local[b], r1);
+      jac.col(i) = (r1 - r0) / h;
+    }
+    for (int i = 0; i < m; ++i) {
+      Eigen::VectorXd l = local[b];
+      const double h = step_size(l(i));
+      l(i) += h;
+      problem.residuals(static_cast<int>(b), shared, l, r1);
+      jac.col(p + i) = (r1 - r0) / h;
+    }
+    const Eigen::MatrixXd jtj = jac.transpose() * jac;
+    const Eigen::VectorXd jtr = jac.transpose() * r0;
+    Eigen::MatrixXd hll = jtj.bottomRightCorner(m, m);
+    hll.diagonal().array() += 1e-9 * std::max(hll.diagonal().maxCoeff(), 1e-12);
+    const Eigen::LDLT<Eigen::MatrixXd> local_solve(hll);
+    const Eigen::MatrixXd hls = jtj.bottomLeftCorner(m, p);
+    schur[b] = jtj.topLeftCorner(p, p) - hls.transpose() * local_solve.solve(hls);
+    rhs[b] = jtr.head(p) - hls.transpose() * local_solve.solve(jtr.tail(m));
+    schur_total += schur[b];
+    rhs_total += rhs[b];
+  }
+  std::vector<Eigen::VectorXd> out(blocks);
+  for (std::size_t j = 0; j < blocks; ++j) {
+    Eigen::MatrixXd s = schur_total - schur[j];
+    s.diagonal().array() += 1e-9 * std::max(s.diagonal().maxCoeff(), 1e-12);
+    const Eigen::VectorXd step = s.ldlt().solve(-(rhs_total - rhs[j]));
+    out[j] = step.allFinite() ? Eigen::VectorXd(shared + step) : shared;
+  }
+  return out;
+}
+
+}  // namespace aloft::host::diagnose

@@ -1,0 +1,59 @@
+// Levenberg-Marquardt least squares for problems of "arrow" shape: parameters shared by
+// every block (an effect common to all flights of a session) plus parameters local to
+// each block (each flight's initial rate). One flight is the case of a single block.
+//
+// Written here rather than taken from Eigen's unsupported LevenbergMarquardt module
+// because that solver wants one dense (or sparse-QR) Jacobian of the whole problem: a
+// 60-flight session has ~180,000 residuals by ~190 parameters, while the normal
+// equations assembled block by block below are only 190 x 190. No Debian-packaged
+// solver other than Ceres (not installed) exploits that structure.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <vector>
+
+namespace aloft::host::diagnose {
+
+struct ArrowProblem {
+  int shared_count = 0;  // parameters common to every block
+  int local_count = 0;   // parameters of each block
+  int block_count = 1;
+  // Writes the residuals of `block` for the given parameters. The length must be the
+  // same at every call for the same block.
+  std::function<void(int block, const Eigen::VectorXd& shared, const Eigen::VectorXd& local,
+                     Eigen::VectorXd& residuals)>
+      residuals;
+};
+
+struct LeastSquaresOptions {
+  int max_iterations = 40;
+  double relative_tolerance = 1e-7;  // stop when an accepted step gains less than this
+};
+
+struct LeastSquaresResult {
+  Eigen::VectorXd shared;
+  std::vector<Eigen::VectorXd> local;
+  double cost = 0.0;  // sum of squared residuals at the solution
+  int iterations = 0;
+  Eigen::MatrixXd normal_matrix;  // J^T J at the solution, [shared | local_0 | local_1 ...]
+};
+
+// Minimises the sum of squared residuals from the given start. Derivatives are forward
+// differences. Never throws on a bad start: a non-finite cost is treated as a rejected step.
+LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& shared_start,
+                            const std::vector<Eigen::VectorXd>& local_start,
+                            const LeastSquaresOptions& options = {});
+
+// Leave-one-block-out: for each block j, the shared parameters after one Gauss-Newton
+// step, from `shared`/`local` (normally the all-blocks solution), on the problem without
+// block j. The normal equations are linearised once; each block's locals are eliminated
+// (Schur complement), so every left-out step costs one small solve. This is the first
+// iteration of refitting without block j, started from the all-blocks solution, which is
+// where a refit without one flight of many ends up to first order.
+std::vector<Eigen::VectorXd> leave_one_block_out(const ArrowProblem& problem,
+                                                 const Eigen::VectorXd& shared,
+                                                 const std::vector<Eigen::VectorXd>& local);
+
+}  // namespace aloft::host::diagnose

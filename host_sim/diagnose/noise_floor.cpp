@@ -1,0 +1,79 @@
+#include "diagnose/noise_floor.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "diagnose/time_gaps.hpp"
+
+namespace aloft::host::diagnose {
+namespace {
+
+// Binomial coefficients of the k-th difference and the variance multiplier C(2k, k).
+// For rates that are themselves first differences of white pose noise n (rate noise
+// e = dn, var e = 2 var n), the k-th difference of e is the (k+1)-th of n: the factor
+// relating it to var e is C(2k+2, k+1) / 2.
+struct Difference {
+  int order;
+  std::array<double, 5> weights;
+  double variance_factor;
+  double variance_factor_differenced;
+};
+constexpr Difference kDifferences[] = {
+    {2, {1, -2, 1, 0, 0}, 6.0, 10.0},
+    {3, {1, -3, 3, -1, 0}, 20.0, 35.0},
+    {4, {1, -4, 6, -4, 1}, 70.0, 126.0},
+};
+
+// Median of chi-square(1): median(x^2) = 0.45494 sigma^2 for Gaussian x.
+constexpr double kMedianOfSquares = 0.454936;
+
+double median(std::vector<double>& v) {
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+}  // namespace
+
+NoiseFloor estimate_noise_floor(const Flight& flight) {
+  NoiseFloor best;
+  const std::vector<char> gap_after = steps_followed_by_gap(flight.time_s);
+  const std::size_t n = flight.size();
+  double best_total = -1.0;
+  for (const Difference& d : kDifferences) {
+    const std::size_t span = static_cast<std::size_t>(d.order) + 1;
+    if (n < span) continue;
+    std::array<std::vector<double>, 3> squares;
+    for (std::size_t k = 0; k + span <= n; ++k) {
+      bool clean = true;
+      for (std::size_t j = 0; j < span; ++j) {
+        if (!flight.usable[k + j] || (j + 1 < span && gap_after[k + j])) clean = false;
+      }
+      if (!clean) continue;
+      Eigen::Vector3d value = Eigen::Vector3d::Zero();
+      for (std::size_t j = 0; j < span; ++j) value += d.weights[j] * flight.omega[k + j];
+      for (int a = 0; a < 3; ++a) squares[static_cast<std::size_t>(a)].push_back(value(a) * value(a));
+    }
+    if (squares[0].size() < 10) continue;
+    Eigen::Vector3d sigma;
+    for (int a = 0; a < 3; ++a) {
+      const double m = median(squares[static_cast<std::size_t>(a)]);
+      const double factor = flight.rates_from_differences ? d.variance_factor_differenced : d.variance_factor;
+      sigma(a) = std::max(std::sqrt(m / kMedianOfSquares / factor), 1e-6);
+    }
+    // A smooth motion only ever adds to a difference's spread, so the smallest estimate
+    // is the least contaminated by the motion itself.
+    const double total = sigma.squaredNorm();
+    if (best_total < 0.0 || total < best_total) {
+      best_total = total;
+      best.sigma = sigma;
+      best.difference_order = d.order;
+      best.reliable = squares[0].size() >= 20;
+    }
+  }
+  return best;
+}
+
+}  // namespace aloft::host::diagnose

@@ -1,0 +1,23 @@
+// The noise floor of a flight's readings, estimated from the data alone: the spread of
+// high-order differences of consecutive samples, where a smooth motion contributes
+// almost nothing and white noise a known multiple of its variance.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "diagnose/flight.hpp"
+
+namespace aloft::host::diagnose {
+
+struct NoiseFloor {
+  Eigen::Vector3d sigma = Eigen::Vector3d::Zero();  // per axis, units of the readings
+  int difference_order = 0;                         // the order the estimate came from
+  bool reliable = false;                            // enough clean differences to tell
+};
+
+// Differences spanning a time gap or an unusable sample are skipped; the median of the
+// squared differences (not the mean) keeps an impulse or a glitch from inflating it.
+// A floor of 1e-6 rad/s stops noise-free (synthetic) data from weighting infinitely.
+NoiseFloor estimate_noise_floor(const Flight& flight);
+
+}  // namespace aloft::host::diagnose

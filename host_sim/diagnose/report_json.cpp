@@ -1,0 +1,253 @@
+#include "diagnose/report_json.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace aloft::host::diagnose {
+namespace {
+
+using nlohmann::json;
+
+json vec(const Eigen::Vector3d& v) { return json::array({v(0), v(1), v(2)}); }
+json quat(const Eigen::Quaterniond& q) { return json::array({q.w(), q.x(), q.y(), q.z()}); }
+
+json names(const std::vector<Effect>& effects) {
+  json out = json::array();
+  for (Effect e : effects) out.push_back(effect_name(e));
+  return out;
+}
+
+json invariant_json(const InvariantBehaviour& b) {
+  return {{"mean", b.mean},
+          {"relative_change", b.relative_change},
+          {"relative_oscillation", b.relative_oscillation},
+          {"behaviour", b.behaviour}};
+}
+
+json analysis_json(const Analysis& a) {
+  json out;
+  out["baseline"] = {{"rms_da_deg", a.baseline.rms_da_deg}, {"rms_rel_err", a.baseline.rms_rel_err}};
+  json where;
+  where["onset_s"] = a.where.onset_s ? json(*a.where.onset_s) : json(nullptr);
+  where["dominant_axis"] = a.where.dominant_axis;
+  where["rms_gap_body_rad_s"] = vec(a.where.rms_gap_body_rad_s);
+  where["noise_floor_rad_s"] = vec(a.where.noise_floor);
+  where["gap_over_noise"] = a.where.gap_over_noise;
+  json slices = json::array();
+  for (const TimeSlice& s : a.where.slices) {
+    slices.push_back({{"from_s", s.from_s}, {"to_s", s.to_s}, {"rms_da_deg", s.rms_da_deg},
+                      {"rms_rel_err", s.rms_rel_err}});
+  }
+  where["gap_by_time"] = slices;
+  if (a.where.invariants) {
+    where["invariants"] = {{"kinetic_energy", invariant_json(a.where.invariants->energy)},
+                           {"angular_momentum", invariant_json(a.where.invariants->momentum)}};
+  }
+  out["where"] = where;
+  json candidates = json::array();
+  for (const Candidate& c : a.candidates) {
+    json j;
+    j["effect"] = effect_name(c.effect);
+    j["evaluated"] = c.evaluated;
+    if (c.evaluated) {
+      j["params"] = params_json(c.effect, c.params);
+      j["heldout_rms_da_deg"] = c.heldout_rms_da_deg;
+      j["heldout_rms_rel_err"] = c.heldout_rms_rel_err;
+      j["shrink"] = c.shrink;
+      j["shrink_da"] = c.shrink_da;
+      j["heldout_chi_square_per_residual"] =
+          c.heldout_residuals ? c.heldout_chi_square / c.heldout_residuals : 0.0;
+      j["parameter_count"] = effect_penalty_count(c.effect);
+      j["score"] = c.score;
+      j["identifiable"] = c.identifiable;
+      j["physical"] = c.physical;
+      j["indistinguishable_from"] = names(c.indistinguishable);
+    } else {
+      j["params"] = json::object();
+      j["heldout_rms_da_deg"] = nullptr;
+      j["heldout_rms_rel_err"] = nullptr;
+      j["shrink"] = nullptr;
+    }
+    if (!c.note.empty()) j["note"] = c.note;
+    candidates.push_back(j);
+  }
+  out["candidates"] = candidates;
+  const Verdict& v = a.verdict;
+  json verdict;
+  verdict["effect"] = effect_name(v.effect);
+  verdict["equivalent"] = names(v.equivalent);
+  verdict["params"] = v.chosen >= 0
+                          ? params_json(v.effect, a.candidates[static_cast<std::size_t>(v.chosen)].params)
+                          : json::object();
+  verdict["heldout_rms_da_before_deg"] = v.heldout_rms_da_before_deg;
+  verdict["heldout_rms_da_after_deg"] = v.heldout_rms_da_after_deg;
+  verdict["heldout_rms_rel_err_before"] = v.heldout_rms_rel_err_before;
+  verdict["heldout_rms_rel_err_after"] = v.heldout_rms_rel_err_after;
+  verdict["confident"] = v.confident;
+  verdict["could_not_judge"] = v.could_not_judge;
+  out["verdict"] = verdict;
+  out["unexplained_dispersion"] = a.dispersion;
+  if (!a.notes.empty()) out["notes"] = a.notes;
+  return out;
+}
+
+std::string fmt(const char* format, double a, double b = 0, double c = 0, double d = 0) {
+  char buffer[256];
+  std::snprintf(buffer, sizeof buffer, format, a, b, c, d);
+  return buffer;
+}
+
+std::string params_text(Effect effect, const EffectParameters& p) {
+  switch (effect) {
+    case Effect::inertia_moments:
+      return fmt("principal moments %.4g, %.4g, %.4g kg m^2", p.principal_kg_m2(0),
+                 p.principal_kg_m2(1), p.principal_kg_m2(2));
+    case Effect::inertia_axes:
+    case Effect::sensor_misalignment: return fmt("rotated by %.2f deg", p.angle_deg);
+    case Effect::aero_torque: return fmt("k = %.3g N m s^2", p.k_N_m_s2);
+    case Effect::internal_damping:
+      return fmt("rotor J = %.3g kg m^2, c = %.3g N m s", p.rotor_J_kg_m2, p.c_N_m_s);
+    case Effect::impulse:
+      return fmt("at %.3f s, |dL| %.3g N m s", p.time_s, p.vector.norm());
+    case Effect::gyro_bias:
+      return fmt("bias %.4f, %.4f, %.4f rad/s", p.vector(0), p.vector(1), p.vector(2));
+    case Effect::gyro_scale:
+      return fmt("scale errors %.4f, %.4f, %.4f", p.vector(0), p.vector(1), p.vector(2));
+    case Effect::clock_drift: return fmt("rate error %.4f", p.rate_error);
+    case Effect::none: return "";
+  }
+  return "";
+}
+
+std::string analysis_summary(const Analysis& a) {
+  std::ostringstream out;
+  out << fmt("  baseline (nominal model): RMS DA %.3f deg, RMS relative error %.4f", a.baseline.rms_da_deg,
+             a.baseline.rms_rel_err)
+      << fmt(", %.2f x the noise floor", a.where.gap_over_noise) << "\n";
+  out << "  where: gap mostly along body " << a.where.dominant_axis;
+  if (a.where.onset_s) out << fmt(", leaves the nominal model at %.3f s", *a.where.onset_s);
+  if (a.where.invariants) {
+    out << "; energy " << a.where.invariants->energy.behaviour << ", |L| "
+        << a.where.invariants->momentum.behaviour;
+  }
+  out << "\n";
+  const Verdict& v = a.verdict;
+  out << "  verdict: " << effect_name(v.effect);
+  if (v.equivalent.size() > 1) {
+    out << " (indistinguishable here from";
+    for (std::size_t i = 1; i < v.equivalent.size(); ++i) out << " " << effect_name(v.equivalent[i]);
+    out << ")";
+  }
+  if (v.chosen >= 0 && v.effect != Effect::none) {
+    const Candidate& c = a.candidates[static_cast<std::size_t>(v.chosen)];
+    out << ": " << params_text(v.effect, c.params) << "\n";
+    out << fmt("  held out: RMS DA %.3f -> %.3f deg, relative error %.4f -> %.4f", v.heldout_rms_da_before_deg,
+               v.heldout_rms_da_after_deg, v.heldout_rms_rel_err_before, v.heldout_rms_rel_err_after)
+        << fmt(" (shrink %.0f %%)", 100.0 * c.shrink) << "\n";
+  } else {
+    out << fmt(": the held-out gap (RMS DA %.3f deg) is what the noise explains", v.heldout_rms_da_before_deg) << "\n";
+  }
+  for (const std::string& s : v.could_not_judge) out << "  could not judge: " << s << "\n";
+  return out.str();
+}
+
+}  // namespace
+
+json params_json(Effect effect, const EffectParameters& p) {
+  switch (effect) {
+    case Effect::none: return json::object();
+    case Effect::inertia_moments: return {{"principal_kg_m2", vec(p.principal_kg_m2)}};
+    case Effect::inertia_axes:
+    case Effect::sensor_misalignment:
+      return {{"angle_deg", p.angle_deg}, {"rotation", quat(p.rotation)}};
+    case Effect::aero_torque: return {{"k_N_m_s2", p.k_N_m_s2}};
+    case Effect::internal_damping:
+      return {{"model", "spherical_rotor_in_viscous_cavity"},
+              {"rotor_J_kg_m2", p.rotor_J_kg_m2},
+              {"c_N_m_s", p.c_N_m_s}};
+    case Effect::impulse:
+      return {{"time_s", p.time_s}, {"angular_impulse_N_m_s", vec(p.vector)}};
+    case Effect::gyro_bias: return {{"bias_rad_s", vec(p.vector)}};
+    case Effect::gyro_scale: return {{"scale_error", vec(p.vector)}};
+    case Effect::clock_drift: return {{"rate_error", p.rate_error}};
+  }
+  return json::object();
+}
+
+json flight_report(const FlightDiagnosis& d) {
+  json out = analysis_json(d.analysis);
+  out["segment"] = d.name;
+  out["start_s"] = d.start_s;
+  out["end_s"] = d.end_s;
+  out["samples"] = d.samples;
+  out["rate_hz"] = d.rate_hz;
+  out["unusable_samples"] = d.unusable_samples;
+  if (!d.comment.empty()) out["comment"] = d.comment;
+  if (d.flip_period) {
+    json fp = {{"measured_s", d.flip_period->measured_s},
+               {"nominal_s", d.flip_period->nominal_s},
+               {"nominal_relative_error", d.flip_period->nominal_error()}};
+    if (d.flip_period->diagnosed_s) {
+      fp["diagnosed_s"] = *d.flip_period->diagnosed_s;
+      fp["diagnosed_relative_error"] =
+          std::abs(*d.flip_period->diagnosed_s - d.flip_period->measured_s) / d.flip_period->measured_s;
+    }
+    out["flip_period"] = fp;
+  }
+  json gaps = json::array();
+  for (const TimeGap& g : d.gaps) gaps.push_back({{"from_s", g.from_s}, {"to_s", g.to_s}});
+  out["time_gaps"] = gaps;
+  return out;
+}
+
+json session_report(const SessionDiagnosis& s) {
+  json out = analysis_json(s.pooled);
+  out["heldout"] = "leave_one_flight_out";
+  json flights = json::array();
+  for (const FlightDiagnosis& d : s.flights) flights.push_back(flight_report(d));
+  out["flights"] = flights;
+  if (s.flip_period) {
+    out["flip_period"] = {{"flights", s.flip_period->flights},
+                          {"mean_relative_error_nominal", s.flip_period->mean_error_nominal},
+                          {"mean_relative_error_diagnosed", s.flip_period->mean_error_diagnosed},
+                          {"diagnosed_flights", s.flip_period->diagnosed_flights},
+                          {"method", "point method on the intermediate-axis rate, simulation from the first sample"}};
+  }
+  return out;
+}
+
+std::string flight_summary(const FlightDiagnosis& d) {
+  std::ostringstream out;
+  out << "flight " << d.name
+      << fmt(": %.3f to %.3f s, %.0f samples at %.0f Hz", d.start_s, d.end_s, static_cast<double>(d.samples), d.rate_hz)
+      << fmt(", noise floor %.4f rad/s", d.noise.sigma.mean());
+  if (d.unusable_samples) out << ", " << d.unusable_samples << " saturated samples left out";
+  if (!d.gaps.empty()) out << ", " << d.gaps.size() << " gaps in its time stamps";
+  out << "\n" << analysis_summary(d.analysis);
+  return out.str();
+}
+
+std::string session_summary(const SessionDiagnosis& s) {
+  std::ostringstream out;
+  out << "session of " << s.flights.size() << " flights (pooled, held out: leave one flight out)\n"
+      << analysis_summary(s.pooled);
+  if (s.flip_period) {
+    out << fmt("  flip period from the first sample, %.0f flights: mean error %.1f %% nominal", s.flip_period->flights,
+               100.0 * s.flip_period->mean_error_nominal);
+    if (s.flip_period->diagnosed_flights > 0) {
+      out << fmt(", %.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed) << effect_name(s.pooled.verdict.effect)
+          << " (fitted without each flight)";
+    }
+    out << "\n";
+  }
+  for (const FlightDiagnosis& d : s.flights) {
+    const Verdict& v = d.analysis.verdict;
+    out << "  flight " << d.name << ": " << effect_name(v.effect)
+        << fmt(" (held-out RMS DA %.2f -> %.2f deg)", v.heldout_rms_da_before_deg, v.heldout_rms_da_after_deg)
+        << (v.confident ? "" : " [not confident]") << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace aloft::host::diagnose

@@ -1,0 +1,67 @@
+// The practice flights of ../shared/data/practice: the diagnosis runs on each case's
+// body and trial alone; only this test reads truth.json, to score the verdicts.
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "common/body_file.hpp"
+#include "diagnose/diagnosis.hpp"
+#include "diagnose/flight_input.hpp"
+#include "readers/imu_csv_reader.hpp"
+#include "readers/marker_pose_fit.hpp"
+#include "readers/trial_file.hpp"
+
+namespace fs = std::filesystem;
+using namespace aloft::host;
+using namespace aloft::host::diagnose;
+
+namespace {
+
+const fs::path kPractice = fs::path(ALOFT_SHARED_DIR) / "data" / "practice";
+
+bool in_list(const nlohmann::json& list, const std::string& name) {
+  for (const auto& e : list) {
+    if (e.get<std::string>() == name) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("practice flights: the verdict names the injected effect or its class", "[practice]") {
+  if (!fs::exists(kPractice / "truth.json")) {
+    WARN("skipped: " << kPractice.string() << " is absent (../shared not beside the checkout)");
+    return;
+  }
+  nlohmann::json truth;
+  std::ifstream(kPractice / "truth.json") >> truth;
+  int right = 0, judged = 0;
+  for (const auto& [name, answer] : truth.items()) {
+    const fs::path dir = kPractice / name;
+    const Body body = read_body_file((dir / "body.json").string());
+    const Flight flight =
+        fs::exists(dir / "imu.csv")
+            ? flight_from_imu(read_imu_csv((dir / "imu.csv").string()), body, -1e300, 1e300, name)
+            : flight_from_poses(fit_poses(read_marker_file((dir / "markers.trc").string()), body), name);
+    const FlightDiagnosis d = diagnose_flight(flight, NominalInertia::of(body.inertia));
+    const std::string verdict = effect_name(d.analysis.verdict.effect);
+    const bool ok = in_list(answer["equivalent"], verdict);
+    right += ok;
+    ++judged;
+    std::printf("%s %-20s -> %-20s %s  before %.3f after %.3f deg\n", name.c_str(),
+                answer["effect"].get<std::string>().c_str(), verdict.c_str(), ok ? "ok" : "WRONG",
+                d.analysis.verdict.heldout_rms_da_before_deg, d.analysis.verdict.heldout_rms_da_after_deg);
+    for (const auto& c : d.analysis.candidates) {
+      std::printf("    %-20s score %10.1f chi2 %10.1f shrink %.3f %s\n", effect_name(c.effect), c.score,
+                  c.heldout_chi_square, c.shrink, c.note.c_str());
+    }
+  }
+  std::printf("practice: %d of %d right\n", right, judged);
+  CHECK(right >= judged * 9 / 10);
+}
