@@ -1,10 +1,189 @@
-// Placeholder until the study issue lands: says so and fails.
+// `aloft study` (SPEC §5): the seed paper's cylinder study on the built-in throw, or the
+// same analyses on a recording. Everything is computed in memory first; only then are
+// the files written, each atomically, so a failure leaves no half-written output.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <iostream>
+#include <thread>
+
+#include <unistd.h>
+
+#include "common/atomic_file.hpp"
 #include "common/commands.hpp"
+#include "study/boxplot_figure.hpp"
+#include "study/built_in_study.hpp"
+#include "study/paper_cylinder.hpp"
+#include "study/recorded_flights.hpp"
+#include "study/study_outputs.hpp"
 
 namespace aloft::host {
-void add_study_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("study", "the paper's cylinder study (not yet implemented)");
-  cmd->allow_extras();
-  cmd->callback([] { throw Error("study: not implemented yet"); });
+namespace {
+
+struct StudyOptions {
+  std::string out_dir = "aloft-study";
+  std::uint64_t seed = 1;
+  std::size_t mc_samples = paper::kMonteCarloSimulations;
+  unsigned threads = 0;  // 0: every core
+  RecordingInput recording;
+};
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
 }
+
+void check_options(const StudyOptions& o) {
+  const RecordingInput& r = o.recording;
+  const int sources = !r.markers_path.empty() + !r.poses_path.empty() + !r.imu_path.empty();
+  if (r.body_path.empty() && sources > 0) {
+    throw Error("study: --markers, --poses and --imu need --body BODY.json");
+  }
+  if (!r.body_path.empty() && sources != 1) {
+    throw Error("study: --body needs exactly one of --markers, --poses or --imu");
+  }
+  if (!r.segments_path.empty() && r.imu_path.empty()) {
+    throw Error("study: --segments goes with --imu");
+  }
+  if (o.mc_samples < 1) throw Error("study: --mc-samples must be at least 1");
+}
+
+// "\rstudy: 12,345 / 61,746 simulations (20 %)" on a terminal, nothing otherwise.
+std::function<void(std::size_t, std::size_t)> terminal_progress(const std::string& label) {
+  if (!::isatty(STDERR_FILENO)) return {};
+  return [label](std::size_t done, std::size_t total) {
+    std::fprintf(stderr, "\rstudy: %s: %zu / %zu simulations (%3.0f %%)", label.c_str(), done,
+                 total, 100.0 * static_cast<double>(done) / static_cast<double>(total));
+    if (done == total) std::fprintf(stderr, "\r\033[K");
+    std::fflush(stderr);
+  };
+}
+
+StudyResult run_study(const StudyOptions& o) {
+  const Clock::time_point start = Clock::now();
+  StudyResult result;
+  result.seed = o.seed;
+  result.mc_samples = o.mc_samples;
+  result.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+
+  // The trial and the tensors the analyses use.
+  InertiaTensor<double> nominal;
+  std::vector<Analysis> models;
+  if (o.recording.body_path.empty()) {
+    BuiltInTrial trial = make_built_in_trial();
+    result.built_in = true;
+    result.input = "built-in throw of the paper's cylinder";
+    result.trial = trial.description;
+    nominal = trial.body.inertia;
+    InertiaTensor<double> cp;
+    const Eigen::Vector3d cp_moments(paper::kCompoundPendulumKgM2[0],
+                                     paper::kCompoundPendulumKgM2[1],
+                                     paper::kCompoundPendulumKgM2[2]);
+    InertiaTensor<double>::make_from_principal(cp_moments, Eigen::Quaterniond::Identity(), cp);
+    models = {model_analysis("GF", nominal), model_analysis("CP", cp)};
+    result.flights.push_back({std::move(trial.flight), {}});
+  } else {
+    RecordedTrial trial = load_recorded_trial(o.recording);
+    result.input = trial.body.name.empty() ? o.recording.body_path : trial.body.name;
+    result.trial = trial.description;
+    nominal = trial.body.inertia;
+    models = {model_analysis("nominal", nominal)};
+    for (StudyFlight& f : trial.flights) result.flights.push_back({std::move(f), {}});
+  }
+  result.phase_time_s.emplace_back("trial", seconds_since(start));
+
+  // The simulations: every flight, models then the 12 Monte Carlo analyses.
+  const Clock::time_point simulations_start = Clock::now();
+  for (std::size_t i = 0; i < result.flights.size(); ++i) {
+    FlightStudy& fs = result.flights[i];
+    fs.analyses = models;
+    for (Analysis& a : paper_monte_carlo_analyses(o.mc_samples)) fs.analyses.push_back(a);
+    RunSettings run;
+    run.seed = o.seed;
+    run.stream_base = 64 * i;
+    run.threads = result.threads;
+    run.progress = terminal_progress(fs.flight.name);
+    run_analyses(fs.flight, nominal, fs.analyses, run);
+  }
+  result.phase_time_s.emplace_back("simulations", seconds_since(simulations_start));
+  return result;
+}
+
+void write_outputs(const std::string& dir, const std::vector<std::pair<std::string, std::string>>& files) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    throw Error(dir + ": cannot create the output folder" + (ec ? " (" + ec.message() + ")" : ""));
+  }
+  std::vector<std::string> written;
+  try {
+    for (const auto& [name, content] : files) {
+      const std::string path = (std::filesystem::path(dir) / name).string();
+      write_file_atomically(path, [&](std::ostream& out) { out << content; });
+      written.push_back(path);
+    }
+  } catch (...) {
+    // All or nothing: take back the files this run already put in place.
+    for (const std::string& path : written) std::remove(path.c_str());
+    throw;
+  }
+}
+
+void study(const StudyOptions& o) {
+  check_options(o);
+  const Clock::time_point start = Clock::now();
+  StudyResult result = run_study(o);
+
+  const Clock::time_point outputs_start = Clock::now();
+  const FigureFiles figure = render_study_figure(result);
+  const std::string experiment = experiment_csv(result);
+  const std::string rms_da = rms_da_csv(result);
+  const std::string table = comparison_table(result);
+  result.phase_time_s.emplace_back("outputs", seconds_since(outputs_start));
+  result.wall_time_s = seconds_since(start);
+  const std::string results = results_json(result).dump(2) + "\n";
+
+  write_outputs(o.out_dir, {{"experiment.csv", experiment},
+                            {"rms_da.csv", rms_da},
+                            {"figure.svg", figure.svg},
+                            {"figure.png", figure.png},
+                            {"results.json", results}});
+
+  std::printf("aloft study: %s, %zu flight%s, seed %llu, %u thread%s\n", result.input.c_str(),
+              result.flights.size(), result.flights.size() == 1 ? "" : "s",
+              static_cast<unsigned long long>(result.seed), result.threads,
+              result.threads == 1 ? "" : "s");
+  std::fputs(table.c_str(), stdout);
+  std::printf("wall time %.2f s (", result.wall_time_s);
+  for (std::size_t i = 0; i < result.phase_time_s.size(); ++i) {
+    std::printf("%s%s %.2f s", i ? ", " : "", result.phase_time_s[i].first.c_str(),
+                result.phase_time_s[i].second);
+  }
+  std::printf("); wrote %s/{results.json, rms_da.csv, experiment.csv, figure.svg, figure.png}\n",
+              o.out_dir.c_str());
+}
+
+}  // namespace
+
+void add_study_command(CLI::App& app) {
+  auto options = std::make_shared<StudyOptions>();
+  auto* cmd = app.add_subcommand(
+      "study", "the seed paper's inertia study: GF vs CP and 12 Monte Carlo analyses, on the "
+               "built-in throw or on a recording");
+  cmd->add_option("--out", options->out_dir, "output folder (default aloft-study)");
+  cmd->add_option("--seed", options->seed, "seed of the Monte Carlo draws (default 1)");
+  cmd->add_option("--mc-samples", options->mc_samples,
+                  "simulations per Monte Carlo analysis (default 5000)");
+  cmd->add_option("--threads", options->threads, "worker threads (default: every core)");
+  cmd->add_option("--body", options->recording.body_path, "body file of a recording (SPEC §2)");
+  cmd->add_option("--markers", options->recording.markers_path, "marker trajectories (.trc, .c3d)");
+  cmd->add_option("--poses", options->recording.poses_path, "poses (.mot, .sto, pose .csv)");
+  cmd->add_option("--imu", options->recording.imu_path, "IMU log (plain or phyphox .csv)");
+  cmd->add_option("--segments", options->recording.segments_path, "flights within the IMU log");
+  cmd->callback([options] { study(*options); });
+}
+
 }  // namespace aloft::host

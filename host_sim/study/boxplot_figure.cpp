@@ -1,0 +1,249 @@
+#include "study/boxplot_figure.hpp"
+
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <vector>
+
+#include "study/paper_cylinder.hpp"
+#include "study/percentiles.hpp"
+#include "study/study_outputs.hpp"
+
+namespace aloft::host {
+namespace {
+
+constexpr double kWidth = 1260.0;
+constexpr double kHeight = 520.0;
+constexpr double kTop = 70.0;
+constexpr double kBottom = 440.0;  // y of the horizontal axis
+
+struct Box {
+  std::string label;
+  DistributionSummary summary;
+  const paper::PublishedRow* paper = nullptr;
+};
+
+struct Panel {
+  std::string title;
+  std::string x_label;
+  double left = 0.0, width = 0.0;
+  double y_max = 1.0;
+  std::vector<Box> boxes;
+};
+
+double nice_ceiling(double v) {
+  const double step = v > 20.0 ? 5.0 : (v > 8.0 ? 2.0 : 1.0);
+  return std::max(step, std::ceil(v * 1.1 / step) * step);
+}
+
+void text(cairo_t* cr, double x, double y, const std::string& s, double size, double align_x,
+          bool bold = false) {
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, s.c_str(), &e);
+  cairo_move_to(cr, x - align_x * e.x_advance, y);
+  cairo_show_text(cr, s.c_str());
+}
+
+void line(cairo_t* cr, double x0, double y0, double x1, double y1) {
+  cairo_move_to(cr, x0, y0);
+  cairo_line_to(cr, x1, y1);
+  cairo_stroke(cr);
+}
+
+void draw_panel(cairo_t* cr, const Panel& p, bool y_title) {
+  const auto y_of = [&](double v) { return kBottom - (kBottom - kTop) * v / p.y_max; };
+  // Axes and grid.
+  cairo_set_line_width(cr, 1.0);
+  const double step = p.y_max > 20.0 ? 5.0 : (p.y_max > 8.0 ? 2.0 : 1.0);
+  for (double v = 0.0; v <= p.y_max + 1e-9; v += step) {
+    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+    line(cr, p.left, y_of(v), p.left + p.width, y_of(v));
+    cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+    line(cr, p.left - 4.0, y_of(v), p.left, y_of(v));
+    char label[16];
+    std::snprintf(label, sizeof label, "%g", v);
+    text(cr, p.left - 7.0, y_of(v) + 4.0, label, 11.0, 1.0);
+  }
+  cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+  line(cr, p.left, kTop, p.left, kBottom);
+  line(cr, p.left, kBottom, p.left + p.width, kBottom);
+  text(cr, p.left, kTop - 14.0, p.title, 15.0, 0.0, true);
+  text(cr, p.left + p.width / 2.0, kBottom + 42.0, p.x_label, 12.0, 0.5);
+  if (y_title) {
+    cairo_save(cr);
+    cairo_move_to(cr, p.left - 40.0, (kTop + kBottom) / 2.0);
+    cairo_rotate(cr, -M_PI / 2.0);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, 12.0);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, "RMS DA (deg)", &e);
+    cairo_rel_move_to(cr, -e.x_advance / 2.0, 0.0);
+    cairo_show_text(cr, "RMS DA (deg)");
+    cairo_restore(cr);
+  }
+  // Boxes.
+  const double slot = p.width / static_cast<double>(p.boxes.size());
+  const double half = std::min(22.0, slot * 0.22);
+  for (std::size_t i = 0; i < p.boxes.size(); ++i) {
+    const Box& b = p.boxes[i];
+    const double x = p.left + slot * (static_cast<double>(i) + 0.5);
+    const DistributionSummary& s = b.summary;
+    cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+    cairo_set_line_width(cr, 1.2);
+    line(cr, x, y_of(s.p10), x, y_of(s.p25));
+    line(cr, x, y_of(s.p75), x, y_of(s.p90));
+    line(cr, x - half * 0.5, y_of(s.p10), x + half * 0.5, y_of(s.p10));
+    line(cr, x - half * 0.5, y_of(s.p90), x + half * 0.5, y_of(s.p90));
+    cairo_rectangle(cr, x - half, y_of(s.p75), 2.0 * half, y_of(s.p25) - y_of(s.p75));
+    cairo_set_source_rgb(cr, 0.80, 0.87, 0.95);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+    cairo_stroke(cr);
+    cairo_set_line_width(cr, 2.2);
+    line(cr, x - half, y_of(s.median), x + half, y_of(s.median));
+    text(cr, x, kBottom + 18.0, b.label, 12.0, 0.5);
+    if (b.paper != nullptr) {
+      const double px = x + half + 9.0;
+      cairo_set_source_rgb(cr, 0.80, 0.10, 0.10);
+      cairo_set_line_width(cr, 1.2);
+      line(cr, px, y_of(b.paper->p10), px, y_of(b.paper->p90));
+      const double ym = y_of(b.paper->median);
+      cairo_move_to(cr, px, ym - 5.0);
+      cairo_line_to(cr, px + 5.0, ym);
+      cairo_line_to(cr, px, ym + 5.0);
+      cairo_line_to(cr, px - 5.0, ym);
+      cairo_close_path(cr);
+      cairo_fill(cr);
+    }
+  }
+}
+
+std::vector<Panel> build_panels(const StudyResult& result) {
+  const bool paper_side = result.built_in;
+  const std::vector<Analysis>& analyses = result.flights.front().analyses;
+  Panel a;
+  a.title = "A";
+  a.x_label = paper_side ? "inertia model" : "nominal tensor per flight";
+  const Analysis* reference = nullptr;  // drawn at bound 0 in B1-B3
+  for (const Analysis& an : analyses) {
+    if (an.monte_carlo) continue;
+    if (reference == nullptr) reference = &an;
+    if (paper_side || result.flights.size() == 1) {
+      a.boxes.push_back({an.name, summarise(pooled_rms_da(result, an.name)),
+                         paper_side ? published_row(an) : nullptr});
+    }
+  }
+  if (!paper_side && result.flights.size() > 1) {
+    for (const FlightStudy& f : result.flights) {
+      a.boxes.push_back({f.flight.name, summarise(f.analyses.front().rms_da_deg), nullptr});
+    }
+  }
+  std::vector<Panel> panels{a};
+  const struct {
+    PerturbationFamily family;
+    const char* title;
+    const char* x_label;
+  } families[] = {{PerturbationFamily::moments, "B1", "bound on principal moments (\u00b1%)"},
+                  {PerturbationFamily::axes, "B2", "bound on principal axes (\u00b1deg)"},
+                  {PerturbationFamily::both, "B3", "bound on moments (\u00b1%) and axes (\u00b1deg)"}};
+  for (const auto& fam : families) {
+    Panel p;
+    p.title = fam.title;
+    p.x_label = fam.x_label;
+    if (reference != nullptr) {
+      p.boxes.push_back({"0", summarise(pooled_rms_da(result, reference->name)), nullptr});
+    }
+    for (const Analysis& an : analyses) {
+      if (!an.monte_carlo || an.perturbation.family != fam.family) continue;
+      char label[16];
+      std::snprintf(label, sizeof label, "%g", an.perturbation.bound);
+      p.boxes.push_back(
+          {label, summarise(pooled_rms_da(result, an.name)), paper_side ? published_row(an) : nullptr});
+    }
+    panels.push_back(p);
+  }
+  // Geometry and scales: A on its own scale (CP is far above the rest), B1-B3 shared.
+  double b_max = 0.0, a_max = 0.0;
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    for (const Box& b : panels[i].boxes) {
+      double top = b.summary.p90;
+      if (b.paper != nullptr) top = std::max(top, b.paper->p90);
+      (i == 0 ? a_max : b_max) = std::max(i == 0 ? a_max : b_max, top);
+    }
+  }
+  double left = 80.0;
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    panels[i].width = i == 0 ? 60.0 + 70.0 * static_cast<double>(panels[i].boxes.size()) : 270.0;
+    panels[i].left = left;
+    panels[i].y_max = nice_ceiling(i == 0 ? a_max : b_max);
+    left += panels[i].width + 60.0;
+  }
+  return panels;
+}
+
+void draw(cairo_t* cr, const StudyResult& result, double width) {
+  cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+  cairo_paint(cr);
+  const std::vector<Panel> panels = build_panels(result);
+  for (std::size_t i = 0; i < panels.size(); ++i) draw_panel(cr, panels[i], true);
+  cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+  const std::string title = "RMS deviation angle, " + result.input +
+                            " (box: quartiles, line: median, whiskers: p10-p90" +
+                            (result.built_in ? "; red: the paper's median and p10-p90)" : ")");
+  text(cr, width / 2.0, 24.0, title, 13.0, 0.5);
+}
+
+cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+double figure_width(const StudyResult& result) {
+  const std::vector<Panel> panels = build_panels(result);
+  return std::max(kWidth, panels.back().left + panels.back().width + 30.0);
+}
+
+}  // namespace
+
+FigureFiles render_study_figure(const StudyResult& result) {
+  FigureFiles files;
+  const double width = figure_width(result);
+  {
+    cairo_surface_t* svg =
+        cairo_svg_surface_create_for_stream(append_to_string, &files.svg, width, kHeight);
+    cairo_t* cr = cairo_create(svg);
+    draw(cr, result, width);
+    const cairo_status_t status = cairo_status(cr);
+    cairo_destroy(cr);
+    cairo_surface_finish(svg);
+    cairo_surface_destroy(svg);
+    if (status != CAIRO_STATUS_SUCCESS) {
+      throw std::runtime_error(std::string("figure.svg: ") + cairo_status_to_string(status));
+    }
+  }
+  {
+    cairo_surface_t* image = cairo_image_surface_create(
+        CAIRO_FORMAT_RGB24, static_cast<int>(std::ceil(width)), static_cast<int>(kHeight));
+    cairo_t* cr = cairo_create(image);
+    draw(cr, result, width);
+    cairo_status_t status = cairo_status(cr);
+    cairo_destroy(cr);
+    if (status == CAIRO_STATUS_SUCCESS) {
+      status = cairo_surface_write_to_png_stream(image, append_to_string, &files.png);
+    }
+    cairo_surface_destroy(image);
+    if (status != CAIRO_STATUS_SUCCESS) {
+      throw std::runtime_error(std::string("figure.png: ") + cairo_status_to_string(status));
+    }
+  }
+  return files;
+}
+
+}  // namespace aloft::host

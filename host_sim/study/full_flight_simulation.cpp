@@ -1,0 +1,111 @@
+#include "study/full_flight_simulation.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "aloft/angular_velocity.hpp"
+#include "aloft/deviation.hpp"
+#include "aloft/euler_equations.hpp"
+#include "aloft/rk4_integrator.hpp"
+#include "common/commands.hpp"
+
+namespace aloft::host {
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / M_PI;
+
+// Pose flight: orientation and rate integrated; the simulated omega of each interval
+// comes from the two simulated orientations that bound it, like the measured one. The
+// flight was validated once (validate_study_flight), so the steps are unchecked.
+double pose_flight_rms_da(const StudyFlight& f, const InertiaTensor<double>& inertia,
+                          std::size_t k) {
+  const Rk4Integrator<double> integrator(inertia);
+  const std::size_t n = f.samples();
+  const RigidBodyState<double> seed{f.orientation[k], f.state_omega_body[k]};
+  double sum_sq = 0.0;
+
+  RigidBodyState<double> s = seed;
+  for (std::size_t j = k; j + 1 < n; ++j) {
+    const double dt = f.time_s[j + 1] - f.time_s[j];
+    const Eigen::Quaterniond before = s.orientation;
+    integrator.step_unchecked(s, dt);
+    const double da = deviation_angle(rotation_axis_between(before, s.orientation),
+                                      f.measured_omega_body[j]);
+    sum_sq += da * da;
+  }
+  s = seed;
+  for (std::size_t j = k; j-- > 0;) {
+    const double dt = f.time_s[j + 1] - f.time_s[j];
+    const Eigen::Quaterniond after = s.orientation;
+    integrator.step_unchecked(s, -dt);
+    const double da = deviation_angle(rotation_axis_between(s.orientation, after),
+                                      f.measured_omega_body[j]);
+    sum_sq += da * da;
+  }
+  return std::sqrt(sum_sq / static_cast<double>(n - 1)) * kDegreesPerRadian;
+}
+
+// Rate flight: the body rate alone, compared with the gyro at every sample (the seed
+// sample itself included, where the deviation is zero by construction).
+double rate_flight_rms_da(const StudyFlight& f, const InertiaTensor<double>& inertia,
+                          std::size_t k) {
+  const std::size_t n = f.samples();
+  double sum_sq = 0.0;
+  Eigen::Vector3d w = f.state_omega_body[k];
+  for (std::size_t j = k; j + 1 < n; ++j) {
+    w = body_rate_rk4_step(inertia, w, f.time_s[j + 1] - f.time_s[j]);
+    const double da = deviation_angle(w, f.measured_omega_body[j + 1]);
+    sum_sq += da * da;
+  }
+  w = f.state_omega_body[k];
+  for (std::size_t j = k; j-- > 0;) {
+    w = body_rate_rk4_step(inertia, w, -(f.time_s[j + 1] - f.time_s[j]));
+    const double da = deviation_angle(w, f.measured_omega_body[j]);
+    sum_sq += da * da;
+  }
+  return std::sqrt(sum_sq / static_cast<double>(n)) * kDegreesPerRadian;
+}
+
+}  // namespace
+
+Eigen::Vector3d rotation_axis_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
+  const Eigen::Quaterniond d = a.conjugate() * b;
+  return d.w() < 0.0 ? Eigen::Vector3d(-d.vec()) : Eigen::Vector3d(d.vec());
+}
+
+double full_flight_rms_da_deg(const StudyFlight& flight, const InertiaTensor<double>& inertia,
+                              std::size_t k) {
+  return flight.has_orientation() ? pose_flight_rms_da(flight, inertia, k)
+                                  : rate_flight_rms_da(flight, inertia, k);
+}
+
+void validate_study_flight(const StudyFlight& f) {
+  const std::size_t n = f.samples();
+  const std::string where = f.name + ": ";
+  if (n < 3) {
+    throw Error(where + "flight has " + std::to_string(n) + " samples; at least 3 are needed");
+  }
+  if (f.state_omega_body.size() != n ||
+      (f.has_orientation() && f.orientation.size() != n) ||
+      f.measured_omega_body.size() != (f.has_orientation() ? n - 1 : n)) {
+    throw Error(where + "inconsistent flight data (internal error)");
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string at = where + "sample " + std::to_string(i) + ": ";
+    if (!std::isfinite(f.time_s[i]) || (i > 0 && !(f.time_s[i] > f.time_s[i - 1]))) {
+      throw Error(at + "time does not increase");
+    }
+    if (!all_finite(f.state_omega_body[i])) throw Error(at + "angular velocity is not finite");
+    if (f.has_orientation() && !is_unit(f.orientation[i])) {
+      throw Error(at + "orientation is not a finite unit quaternion");
+    }
+  }
+  for (std::size_t j = 0; j < f.measured_omega_body.size(); ++j) {
+    if (!all_finite(f.measured_omega_body[j]) || f.measured_omega_body[j].squaredNorm() == 0.0) {
+      throw Error(where + "sample " + std::to_string(j) +
+                  ": measured angular velocity is zero or not finite");
+    }
+  }
+}
+
+}  // namespace aloft::host

@@ -1,0 +1,31 @@
+// One simulation of the seed study: seeded from the state sampled at index k, integrated
+// forward to the end of the flight and backward to its start (RK4, aloft/rk4_integrator),
+// the two halves joined, and compared with the measured angular velocity sample by
+// sample (StudyFlight says how for pose and rate flights). Returns the RMS deviation
+// angle, degrees. Nothing is stored: each comparison is made as the step is taken.
+#pragma once
+
+#include <cstddef>
+
+#include "aloft/inertia_tensor.hpp"
+#include "study/study_flight.hpp"
+
+namespace aloft::host {
+
+// RMS DA (degrees) of the full-flight simulation with `inertia` seeded at sample k.
+double full_flight_rms_da_deg(const StudyFlight& flight, const InertiaTensor<double>& inertia,
+                              std::size_t k);
+
+// The axis of the rotation from orientation a to orientation b, in a's body axes, scaled
+// by sin(angle/2): the vector part of a^-1 b on the short side. It points along
+// log(a^-1 b) = omega dt (aloft::omega_body_from_orientations), and a deviation angle
+// needs only that direction, so the simulation loop skips the log's atan2 and division
+// (a test checks both give the same RMS DA).
+Eigen::Vector3d rotation_axis_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b);
+
+// Checks a flight before thousands of simulations run on it: at least 3 samples,
+// increasing times, finite unit orientations, finite non-zero measured rates. Throws
+// aloft::host::Error naming the flight and the sample.
+void validate_study_flight(const StudyFlight& flight);
+
+}  // namespace aloft::host

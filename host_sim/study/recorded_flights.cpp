@@ -1,0 +1,162 @@
+#include "study/recorded_flights.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+#include "common/commands.hpp"
+#include "readers/c3d_reader.hpp"
+#include "readers/imu_csv_reader.hpp"
+#include "readers/marker_pose_fit.hpp"
+#include "readers/pose_reader.hpp"
+#include "readers/segments.hpp"
+#include "readers/time_stamps.hpp"
+#include "readers/trc_reader.hpp"
+#include "study/paper_cylinder.hpp"
+#include "study/tangent_spline_resampler.hpp"
+
+namespace aloft::host {
+namespace {
+
+std::string extension_of(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+std::string stem_of(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+StudyFlight pose_flight_from(const PoseTrial& poses, const std::string& path,
+                             nlohmann::json& description) {
+  if (poses.time_s.size() < 3) {
+    throw Error(path + ": " + std::to_string(poses.time_s.size()) +
+                " usable poses; the study needs at least 3");
+  }
+  description["poses"] = poses.time_s.size();
+  description["gaps"] = time_gaps(poses.time_s);
+  description["resampling"] =
+      "C1 cubic Hermite spline in the tangent space of SO(3), to 1000 Hz";
+  const ResampledPoses resampled =
+      resample_poses(poses.time_s, poses.orientation, paper::kResampleRateHz);
+  StudyFlight f = make_pose_flight(stem_of(path), resampled);
+  description["samples"] = f.samples();
+  return f;
+}
+
+}  // namespace
+
+nlohmann::json time_gaps(const std::vector<double>& time_s) {
+  nlohmann::json gaps = nlohmann::json::array();
+  const double step = median_time_step(time_s);
+  if (!(step > 0.0)) return gaps;
+  for (std::size_t i = 1; i < time_s.size(); ++i) {
+    const double dt = time_s[i] - time_s[i - 1];
+    if (dt > 1.5 * step) {
+      gaps.push_back({{"start_s", time_s[i - 1]},
+                      {"end_s", time_s[i]},
+                      {"missing_samples", std::lround(dt / step) - 1}});
+    }
+  }
+  return gaps;
+}
+
+RecordedTrial load_recorded_trial(const RecordingInput& in) {
+  RecordedTrial out;
+  out.body = read_body_file(in.body_path);
+  nlohmann::json& d = out.description;
+  d["body"] = in.body_path;
+
+  if (!in.markers_path.empty()) {
+    const std::string ext = extension_of(in.markers_path);
+    MarkerTrial markers;
+    if (ext == ".trc") {
+      markers = read_trc(in.markers_path);
+    } else if (ext == ".c3d") {
+      markers = read_c3d(in.markers_path);
+    } else {
+      throw Error(in.markers_path + ": unknown marker file type '" + ext +
+                  "' (expected .trc or .c3d)");
+    }
+    if (out.body.markers_m.size() < 3) {
+      throw Error(in.body_path + ": the body needs at least 3 \"markers\" to fit " +
+                  in.markers_path);
+    }
+    d["kind"] = "markers";
+    d["markers"] = in.markers_path;
+    d["marker_frames"] = markers.time_s.size();
+    PoseFitReport report;
+    const PoseTrial poses = fit_poses(markers, out.body, &report);
+    nlohmann::json unposed = nlohmann::json::array();
+    for (const FrameRange& g : report.gaps) {
+      unposed.push_back({{"first_frame", g.first_frame}, {"last_frame", g.last_frame},
+                         {"start_s", g.start_s}, {"end_s", g.end_s}});
+    }
+    d["unposed_frames"] = unposed;  // fewer than three markers visible: bridged by the spline
+    d["mean_fit_residual_m"] = report.mean_rms_residual_m;
+    d["max_fit_residual_m"] = report.max_rms_residual_m;
+    out.flights.push_back(pose_flight_from(poses, in.markers_path, d));
+  } else if (!in.poses_path.empty()) {
+    const std::string ext = extension_of(in.poses_path);
+    PoseTrial poses;
+    if (ext == ".mot" || ext == ".sto") {
+      poses = read_mot(in.poses_path);
+    } else if (ext == ".csv") {
+      poses = read_pose_csv(in.poses_path);
+    } else {
+      throw Error(in.poses_path + ": unknown pose file type '" + ext +
+                  "' (expected .mot, .sto or .csv)");
+    }
+    d["kind"] = "poses";
+    d["poses_file"] = in.poses_path;
+    out.flights.push_back(pose_flight_from(poses, in.poses_path, d));
+  } else {
+    const ImuLog log = read_imu_csv(in.imu_path);
+    d["kind"] = "imu";
+    d["imu"] = in.imu_path;
+    d["compared"] = "gyro rotated into body axes, at the log's own samples; body rates simulated";
+    const Eigen::Matrix3d to_body = out.body.imu_to_body.normalized().toRotationMatrix();
+    std::vector<Segment> segments;
+    if (!in.segments_path.empty()) {
+      segments = read_segments_csv(in.segments_path);
+      d["segments"] = in.segments_path;
+    } else {
+      segments.push_back({"whole log", log.time_s.front(), log.time_s.back(), ""});
+    }
+    nlohmann::json flights = nlohmann::json::array();
+    for (const Segment& s : segments) {
+      std::vector<double> t;
+      std::vector<Eigen::Vector3d> w;
+      for (std::size_t i = 0; i < log.time_s.size(); ++i) {
+        if (log.time_s[i] >= s.start_s && log.time_s[i] <= s.end_s) {
+          t.push_back(log.time_s[i]);
+          w.push_back(to_body * log.gyro_rad_s[i]);
+        }
+      }
+      const std::string name = segments.size() > 1 || !in.segments_path.empty()
+                                   ? "segment " + s.name
+                                   : stem_of(in.imu_path);
+      if (t.size() < 3) {
+        throw Error((in.segments_path.empty() ? in.imu_path : in.segments_path) + ": " + name +
+                    " (" + std::to_string(s.start_s) + " to " + std::to_string(s.end_s) +
+                    " s) holds " + std::to_string(t.size()) + " gyro samples of " + in.imu_path +
+                    "; at least 3 are needed");
+      }
+      StudyFlight f = make_rate_flight(name, t, w);
+      f.start_s = s.start_s;
+      f.end_s = s.end_s;
+      flights.push_back({{"flight", name},
+                         {"start_s", s.start_s},
+                         {"end_s", s.end_s},
+                         {"samples", t.size()},
+                         {"comment", s.comment},
+                         {"gaps", time_gaps(t)}});
+      out.flights.push_back(std::move(f));
+    }
+    d["flights"] = flights;
+  }
+  return out;
+}
+
+}  // namespace aloft::host

@@ -1,0 +1,54 @@
+// The analyses of the seed study on one flight, run in parallel:
+//  - a model analysis: one full-flight simulation seeded at every sample (873 for the
+//    built-in throw) with a fixed tensor (GF, CP, or the body file's tensor);
+//  - a Monte Carlo analysis: N simulations, each with its own tensor drawn within a bound
+//    around the nominal (study/inertia_perturbation.hpp) and seeded at a sample drawn
+//    uniformly from the flight.
+// Every Monte Carlo simulation draws from its own random stream, (seed, stream_base,
+// simulation index), and writes its result into its own slot, so the results do not
+// depend on the number of threads or on scheduling. Simulation i of every Monte Carlo
+// analysis gets the same stream: the same seed sample and the same unit perturbation,
+// scaled by its bound (common random numbers, study/inertia_perturbation.hpp).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "aloft/inertia_tensor.hpp"
+#include "study/inertia_perturbation.hpp"
+#include "study/study_flight.hpp"
+
+namespace aloft::host {
+
+struct Analysis {
+  std::string name;         // "GF", "CP", "nominal", "moments 2.5 %", ...
+  bool monte_carlo = false;
+  InertiaTensor<double> inertia;       // model analyses
+  InertiaPerturbation perturbation;    // Monte Carlo analyses
+  std::size_t simulations = 0;         // Monte Carlo; a model runs one per sample
+  std::vector<double> rms_da_deg;      // filled by run_analyses, one per simulation
+};
+
+Analysis model_analysis(const std::string& name, const InertiaTensor<double>& inertia);
+Analysis monte_carlo_analysis(const InertiaPerturbation& perturbation, std::size_t simulations);
+
+// The 12 Monte Carlo analyses of the seed study: moments, axes and both, each at
+// ±2.5, 5, 7.5 and 10 (% or degrees), `simulations` each.
+std::vector<Analysis> paper_monte_carlo_analyses(std::size_t simulations);
+
+struct RunSettings {
+  std::uint64_t seed = 1;
+  std::uint64_t stream_base = 0;  // separates the streams of several flights
+  unsigned threads = 1;
+  // Called now and then from the calling thread with (done, total) simulations.
+  std::function<void(std::size_t, std::size_t)> progress;
+};
+
+// Runs every analysis on `flight` (validated first), Monte Carlo draws centred on
+// `nominal`. Fills each analysis' rms_da_deg.
+void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nominal,
+                  std::vector<Analysis>& analyses, const RunSettings& settings);
+
+}  // namespace aloft::host
