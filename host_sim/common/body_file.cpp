@@ -51,11 +51,6 @@ void check(Status status, const std::string& source) {
   if (status != Status::ok) fail(source, std::string("inertia: ") + describe(status));
 }
 
-// Measured moments of a flat body (a racquet, a plate) often break the triangle
-// inequality by a little, well inside their uncertainty; such a body is still worth
-// simulating. Up to this share of the moments' sum it is accepted with a warning.
-constexpr double kMeasuredTriangleSlack = 0.05;
-
 // Builds the tensor strictly, or with the measured slack and a one-line warning.
 template <typename Make>
 void make_measured(const Make& make, InertiaTensor<double>& out, const std::string& source) {

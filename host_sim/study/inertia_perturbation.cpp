@@ -1,5 +1,7 @@
 #include "study/inertia_perturbation.hpp"
 
+#include "common/body_file.hpp"
+
 #include <boost/random/uniform_real_distribution.hpp>
 
 #include <cmath>
@@ -55,8 +57,10 @@ InertiaTensor<double> draw_perturbed_inertia(const InertiaTensor<double>& nomina
                            principal_to_body).normalized();
     }
     InertiaTensor<double> out;
-    if (InertiaTensor<double>::make_from_principal(principal, principal_to_body, out) ==
-        Status::ok) {
+    // Held to the same triangle slack as a measured body file: a flat body's nominal
+    // moments may already sit just past the strict inequality.
+    if (InertiaTensor<double>::make_from_principal(principal, principal_to_body, out,
+                                                   kMeasuredTriangleSlack) == Status::ok) {
       return out;
     }
   }
