@@ -1,6 +1,5 @@
 #include "diagnose/gap_plot.hpp"
 
-#include <cairo-svg.h>
 #include <cairo.h>
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 
 #include "aloft/deviation.hpp"
 #include "common/atomic_file.hpp"
+#include "common/figure_render.hpp"
 #include "common/commands.hpp"
 
 namespace aloft::host::diagnose {
@@ -146,8 +146,7 @@ std::vector<Panel> panels_of(const FlightDiagnosis& d) {
   return panels;
 }
 
-void draw(cairo_surface_t* surface, const std::vector<Panel>& panels, const std::string& title) {
-  cairo_t* cr = cairo_create(surface);
+void draw(cairo_t* cr, const std::vector<Panel>& panels, const std::string& title) {
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
   cairo_set_source_rgb(cr, 0, 0, 0);
@@ -157,12 +156,6 @@ void draw(cairo_surface_t* surface, const std::vector<Panel>& panels, const std:
   cairo_show_text(cr, title.c_str());
   const double height = (kHeight - 30) / static_cast<double>(panels.size());
   for (std::size_t i = 0; i < panels.size(); ++i) draw_panel(cr, panels[i], 30 + height * i, height);
-  cairo_destroy(cr);
-}
-
-cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
 }
 
 void write_bytes(const std::string& path, const std::string& bytes) {
@@ -170,22 +163,10 @@ void write_bytes(const std::string& path, const std::string& bytes) {
 }
 
 void write_figure(const std::vector<Panel>& panels, const std::string& title, const std::string& stem) {
-  std::string svg;
-  cairo_surface_t* svg_surface = cairo_svg_surface_create_for_stream(append, &svg, kWidth, kHeight);
-  draw(svg_surface, panels, title);
-  cairo_surface_finish(svg_surface);
-  const cairo_status_t svg_status = cairo_surface_status(svg_surface);
-  cairo_surface_destroy(svg_surface);
-  if (svg_status != CAIRO_STATUS_SUCCESS) throw Error(stem + ".svg: " + cairo_status_to_string(svg_status));
-
-  std::string png;
-  cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(kWidth), static_cast<int>(kHeight));
-  draw(image, panels, title);
-  const cairo_status_t png_status = cairo_surface_write_to_png_stream(image, append, &png);
-  cairo_surface_destroy(image);
-  if (png_status != CAIRO_STATUS_SUCCESS) throw Error(stem + ".png: " + cairo_status_to_string(png_status));
-  write_bytes(stem + ".svg", svg);
-  write_bytes(stem + ".png", png);
+  const FigureFiles files = render_svg_and_png(
+      kWidth, kHeight, [&](cairo_t* cr) { draw(cr, panels, title); }, stem);
+  write_bytes(stem + ".svg", files.svg);
+  write_bytes(stem + ".png", files.png);
 }
 
 void make_dir(const std::string& dir) {

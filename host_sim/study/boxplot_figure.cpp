@@ -1,6 +1,5 @@
 #include "study/boxplot_figure.hpp"
 
-#include <cairo-svg.h>
 #include <cairo.h>
 
 #include <algorithm>
@@ -200,11 +199,6 @@ void draw(cairo_t* cr, const StudyResult& result, double width) {
   text(cr, width / 2.0, 24.0, title, 13.0, 0.5);
 }
 
-cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
-
 double figure_width(const StudyResult& result) {
   const std::vector<Panel> panels = build_panels(result);
   return std::max(kWidth, panels.back().left + panels.back().width + 30.0);
@@ -213,37 +207,9 @@ double figure_width(const StudyResult& result) {
 }  // namespace
 
 FigureFiles render_study_figure(const StudyResult& result) {
-  FigureFiles files;
   const double width = figure_width(result);
-  {
-    cairo_surface_t* svg =
-        cairo_svg_surface_create_for_stream(append_to_string, &files.svg, width, kHeight);
-    cairo_t* cr = cairo_create(svg);
-    draw(cr, result, width);
-    const cairo_status_t status = cairo_status(cr);
-    cairo_destroy(cr);
-    cairo_surface_finish(svg);
-    cairo_surface_destroy(svg);
-    if (status != CAIRO_STATUS_SUCCESS) {
-      throw std::runtime_error(std::string("figure.svg: ") + cairo_status_to_string(status));
-    }
-  }
-  {
-    cairo_surface_t* image = cairo_image_surface_create(
-        CAIRO_FORMAT_RGB24, static_cast<int>(std::ceil(width)), static_cast<int>(kHeight));
-    cairo_t* cr = cairo_create(image);
-    draw(cr, result, width);
-    cairo_status_t status = cairo_status(cr);
-    cairo_destroy(cr);
-    if (status == CAIRO_STATUS_SUCCESS) {
-      status = cairo_surface_write_to_png_stream(image, append_to_string, &files.png);
-    }
-    cairo_surface_destroy(image);
-    if (status != CAIRO_STATUS_SUCCESS) {
-      throw std::runtime_error(std::string("figure.png: ") + cairo_status_to_string(status));
-    }
-  }
-  return files;
+  return render_svg_and_png(width, kHeight, [&](cairo_t* cr) { draw(cr, result, width); },
+                            "figure");
 }
 
 }  // namespace aloft::host

@@ -9,16 +9,12 @@
 
 #include <string>
 
+#include "common/figure_render.hpp"
 #include "study/study_result.hpp"
 
 namespace aloft::host {
 
-struct FigureFiles {
-  std::string svg;
-  std::string png;
-};
-
-// Renders both files in memory. Throws std::runtime_error if cairo fails.
+// Renders both files in memory. Throws aloft::host::Error if cairo fails.
 FigureFiles render_study_figure(const StudyResult& result);
 
 }  // namespace aloft::host
