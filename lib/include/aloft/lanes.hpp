@@ -2,7 +2,7 @@
 // written once over a "lane type" T, which is either a plain float or double (one
 // simulation) or a SIMD register holding several of them (several simulations side by
 // side, aloft/xsimd_lanes.hpp). A lane type needs +, -, *, /, sqrt, comparisons and
-// select(mask, a, b); for plain scalars select is the ternary below, for SIMD types it is
+// select(mask, a, b) and any(mask); for plain scalars they are defined below, for SIMD types it is
 // found by argument-dependent lookup in the SIMD library's namespace.
 #pragma once
 
@@ -39,5 +39,8 @@ template <typename T, std::enable_if_t<std::is_floating_point<T>::value, int> = 
 inline T select(bool mask, T a, T b) {
   return mask ? a : b;
 }
+
+// Whether any lane of a mask is set (xsimd::any for SIMD masks).
+inline bool any(bool mask) { return mask; }
 
 }  // namespace aloft
