@@ -38,12 +38,12 @@ Analysis monte_carlo_analysis(const InertiaPerturbation& perturbation, std::size
   return a;
 }
 
-std::vector<Analysis> paper_monte_carlo_analyses(std::size_t simulations) {
+std::vector<Analysis> paper_monte_carlo_analyses(std::size_t simulations, AxesSampler sampler) {
   std::vector<Analysis> out;
   for (PerturbationFamily family :
        {PerturbationFamily::moments, PerturbationFamily::axes, PerturbationFamily::both}) {
     for (double bound : paper::kBounds) {
-      out.push_back(monte_carlo_analysis({family, bound}, simulations));
+      out.push_back(monte_carlo_analysis({family, bound, sampler}, simulations));
     }
   }
   return out;

@@ -41,8 +41,9 @@ Analysis model_analysis(const std::string& name, const InertiaTensor<double>& in
 Analysis monte_carlo_analysis(const InertiaPerturbation& perturbation, std::size_t simulations);
 
 // The 12 Monte Carlo analyses of the seed study: moments, axes and both, each at
-// ±2.5, 5, 7.5 and 10 (% or degrees), `simulations` each.
-std::vector<Analysis> paper_monte_carlo_analyses(std::size_t simulations);
+// ±2.5, 5, 7.5 and 10 (% or degrees), `simulations` each, axes drawn by `sampler`.
+std::vector<Analysis> paper_monte_carlo_analyses(std::size_t simulations,
+                                                 AxesSampler sampler = AxesSampler::ball);
 
 struct RunSettings {
   std::uint64_t seed = 1;

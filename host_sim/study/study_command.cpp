@@ -19,6 +19,7 @@
 #include "study/paper_cylinder.hpp"
 #include "study/recorded_flights.hpp"
 #include "study/study_outputs.hpp"
+#include "study/throw_options.hpp"
 
 namespace aloft::host {
 namespace {
@@ -30,6 +31,7 @@ struct StudyOptions {
   unsigned threads = 0;  // 0: every core
   std::string frame = "both";  // body, world or both (study/da_frame.hpp)
   RecordingInput recording;
+  ThrowOptions throw_options;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -53,6 +55,12 @@ void check_options(const StudyOptions& o) {
   if (o.frame != "body" && o.frame != "world" && o.frame != "both") {
     throw Error("study: --frame must be body, world or both, not '" + o.frame + "'");
   }
+  if (!r.body_path.empty() && o.throw_options.throw_given()) {
+    throw Error("study: --throw, --spin-*, --duration and --marker-* shape the built-in "
+                "throw; they do not apply to a recording");
+  }
+  resolve_throw(o.throw_options);  // refuses bad values before any work
+  resolve_axes_sampler(o.throw_options);
   if (o.frame == "world" && !r.imu_path.empty()) {
     throw Error("study: --frame world needs orientations; an IMU recording has only body rates");
   }
@@ -88,7 +96,8 @@ StudyResult run_study(const StudyOptions& o) {
   InertiaTensor<double> nominal;
   std::vector<Analysis> models;
   if (o.recording.body_path.empty()) {
-    BuiltInTrial trial = make_built_in_trial();
+    BuiltInTrial trial = make_built_in_trial(resolve_throw(o.throw_options));
+    trial.description["preset"] = o.throw_options.preset;
     result.built_in = true;
     result.input = "built-in throw of the paper's cylinder";
     result.trial = trial.description;
@@ -111,11 +120,13 @@ StudyResult run_study(const StudyOptions& o) {
   result.phase_time_s.emplace_back("trial", seconds_since(start));
 
   // The simulations: every flight, models then the 12 Monte Carlo analyses.
+  const AxesSampler sampler = resolve_axes_sampler(o.throw_options);
+  result.axes_sampler = sampler;
   const Clock::time_point simulations_start = Clock::now();
   for (std::size_t i = 0; i < result.flights.size(); ++i) {
     FlightStudy& fs = result.flights[i];
     fs.analyses = models;
-    for (Analysis& a : paper_monte_carlo_analyses(o.mc_samples)) fs.analyses.push_back(a);
+    for (Analysis& a : paper_monte_carlo_analyses(o.mc_samples, sampler)) fs.analyses.push_back(a);
     RunSettings run;
     run.seed = o.seed;
     run.stream_base = 64 * i;
@@ -201,6 +212,7 @@ void add_study_command(CLI::App& app) {
   cmd->add_option("--poses", options->recording.poses_path, "poses (.mot, .sto, pose .csv)");
   cmd->add_option("--imu", options->recording.imu_path, "IMU log (plain or phyphox .csv)");
   cmd->add_option("--segments", options->recording.segments_path, "flights within the IMU log");
+  add_throw_options(*cmd, options->throw_options);
   cmd->callback([options] { study(*options); });
 }
 
