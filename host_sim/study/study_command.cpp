@@ -14,6 +14,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/commands.hpp"
+#include "common/option_checks.hpp"
 #include "study/boxplot_figure.hpp"
 #include "study/built_in_study.hpp"
 #include "study/paper_cylinder.hpp"
@@ -199,11 +200,15 @@ void add_study_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "study", "the seed paper's inertia study: GF vs CP and 12 Monte Carlo analyses, on the "
                "built-in throw or on a recording");
-  cmd->add_option("--out", options->out_dir, "output folder (default aloft-study)");
-  cmd->add_option("--seed", options->seed, "seed of the Monte Carlo draws (default 1)");
+  cmd->add_option("--out", options->out_dir, "output folder (default aloft-study)")
+      ->check(output_folder());
+  cmd->add_option("--seed", options->seed, "seed of the Monte Carlo draws (default 1)")
+      ->check(whole_number());
   cmd->add_option("--mc-samples", options->mc_samples,
-                  "simulations per Monte Carlo analysis (default 5000)");
-  cmd->add_option("--threads", options->threads, "worker threads (default: every core)");
+                  "simulations per Monte Carlo analysis (default 5000)")
+      ->check(whole_number());
+  cmd->add_option("--threads", options->threads, "worker threads (default: every core)")
+      ->check(whole_number());
   cmd->add_option("--frame", options->frame,
                   "axes in which simulated and measured omega are compared: body, world or "
                   "both (default both; IMU input: body only)");
