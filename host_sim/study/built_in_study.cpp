@@ -6,6 +6,14 @@
 
 namespace aloft::host {
 
+InertiaTensor<double> compound_pendulum_inertia() {
+  InertiaTensor<double> cp;
+  const Eigen::Vector3d moments(paper::kCompoundPendulumKgM2[0], paper::kCompoundPendulumKgM2[1],
+                                paper::kCompoundPendulumKgM2[2]);
+  InertiaTensor<double>::make_from_principal(moments, Eigen::Quaterniond::Identity(), cp);
+  return cp;
+}
+
 BuiltInTrial make_built_in_trial(const SyntheticThrowSettings& settings) {
   const SyntheticThrow sim = make_synthetic_throw(settings);
   const PoseTrial fitted = fit_poses(sim.markers, sim.body);

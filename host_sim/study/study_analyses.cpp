@@ -57,7 +57,7 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
   std::vector<std::size_t> first(analyses.size() + 1, 0);
   for (std::size_t a = 0; a < analyses.size(); ++a) {
     Analysis& an = analyses[a];
-    if (!an.monte_carlo) an.simulations = n;
+    if (!an.monte_carlo) an.simulations = (n + an.seed_stride - 1) / an.seed_stride;
     for (std::vector<double>& v : an.rms_da_deg) v.assign(an.simulations, 0.0);
     first[a + 1] = first[a] + an.simulations;
   }
@@ -72,7 +72,7 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
     Analysis& an = analyses[a];
     const std::size_t i = flat - first[a];
     if (!an.monte_carlo) {
-      store(an, i, full_flight_rms_da_deg(flight, an.inertia, i));
+      store(an, i, full_flight_rms_da_deg(flight, an.inertia, i * an.seed_stride));
       return;
     }
     SimulationRandom random(settings.seed, settings.stream_base, i);  // paired across analyses

@@ -29,7 +29,10 @@ struct Analysis {
   bool monte_carlo = false;
   InertiaTensor<double> inertia;       // model analyses
   InertiaPerturbation perturbation;    // Monte Carlo analyses
-  std::size_t simulations = 0;         // Monte Carlo; a model runs one per sample
+  std::size_t simulations = 0;         // Monte Carlo; a model runs one per seed sample
+  // Models: seeded at every seed_stride-th sample (1, the paper's: every sample; the
+  // calibration search thins them out for speed).
+  std::size_t seed_stride = 1;
   // Filled by run_analyses: one RMS DA per simulation, in each frame (study/da_frame.hpp;
   // the world frame holds NaN for a rate flight).
   std::array<std::vector<double>, kDaFrames> rms_da_deg;

@@ -2,6 +2,7 @@
 // same analyses on a recording. Everything is computed in memory first; only then are
 // the files written, each atomically, so a failure leaves no half-written output.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +18,7 @@
 #include "common/option_checks.hpp"
 #include "study/boxplot_figure.hpp"
 #include "study/built_in_study.hpp"
+#include "study/paper_calibration_report.hpp"
 #include "study/paper_cylinder.hpp"
 #include "study/recorded_flights.hpp"
 #include "study/study_outputs.hpp"
@@ -33,6 +35,7 @@ struct StudyOptions {
   std::string frame = "both";  // body, world or both (study/da_frame.hpp)
   RecordingInput recording;
   ThrowOptions throw_options;
+  bool calibrate_to_paper = false;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -59,6 +62,14 @@ void check_options(const StudyOptions& o) {
   if (!r.body_path.empty() && o.throw_options.throw_given()) {
     throw Error("study: --throw, --spin-*, --duration and --marker-* shape the built-in "
                 "throw; they do not apply to a recording");
+  }
+  const ThrowOptions& t = o.throw_options;
+  if (o.calibrate_to_paper &&
+      (!r.body_path.empty() || t.preset != "built-in" || !std::isnan(t.spin_rate_rev_s) ||
+       !std::isnan(t.spin_tilt_deg) || !std::isnan(t.spin_azimuth_deg) ||
+       !std::isnan(t.marker_noise_mm))) {
+    throw Error("study: --calibrate-to-paper searches the built-in throw's spin and marker "
+                "noise; it takes no recording, --throw, --spin-* or --marker-noise");
   }
   resolve_throw(o.throw_options);  // refuses bad values before any work
   resolve_axes_sampler(o.throw_options);
@@ -103,12 +114,7 @@ StudyResult run_study(const StudyOptions& o) {
     result.input = "built-in throw of the paper's cylinder";
     result.trial = trial.description;
     nominal = trial.body.inertia;
-    InertiaTensor<double> cp;
-    const Eigen::Vector3d cp_moments(paper::kCompoundPendulumKgM2[0],
-                                     paper::kCompoundPendulumKgM2[1],
-                                     paper::kCompoundPendulumKgM2[2]);
-    InertiaTensor<double>::make_from_principal(cp_moments, Eigen::Quaterniond::Identity(), cp);
-    models = {model_analysis("GF", nominal), model_analysis("CP", cp)};
+    models = {model_analysis("GF", nominal), model_analysis("CP", compound_pendulum_inertia())};
     result.flights.push_back({std::move(trial.flight), {}});
   } else {
     RecordedTrial trial = load_recorded_trial(o.recording);
@@ -159,8 +165,38 @@ void write_outputs(const std::string& dir, const std::vector<std::pair<std::stri
   }
 }
 
+// "study: calibrate: grid 120 / 1120" now and then on stderr: the search takes minutes.
+std::function<void(const std::string&, std::size_t, std::size_t)> calibration_progress() {
+  const bool terminal = ::isatty(STDERR_FILENO);
+  return [terminal](const std::string& phase, std::size_t done, std::size_t total) {
+    if (terminal) {
+      std::fprintf(stderr, "\rstudy: calibrate: %s %zu / %zu\033[K", phase.c_str(), done, total);
+    } else if (done == total || done % 100 == 0) {
+      std::fprintf(stderr, "study: calibrate: %s %zu / %zu\n", phase.c_str(), done, total);
+    }
+    std::fflush(stderr);
+  };
+}
+
+void calibrate(const StudyOptions& o) {
+  CalibrationSettings s;
+  s.base = resolve_throw(o.throw_options);
+  s.sampler = resolve_axes_sampler(o.throw_options);
+  s.mc_samples = o.mc_samples;
+  s.seed = o.seed;
+  s.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  s.progress = calibration_progress();
+  const CalibrationResult result = calibrate_to_paper(s, frames_to_report(o));
+  if (::isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
+  write_outputs(o.out_dir, {{"calibration.json", calibration_json(result, s).dump(2) + "\n"}});
+  std::fputs(calibration_table(result).c_str(), stdout);
+  std::printf("wall time %.1f s on %u thread%s; wrote %s/calibration.json\n", result.wall_time_s,
+              s.threads, s.threads == 1 ? "" : "s", o.out_dir.c_str());
+}
+
 void study(const StudyOptions& o) {
   check_options(o);
+  if (o.calibrate_to_paper) return calibrate(o);
   const Clock::time_point start = Clock::now();
   StudyResult result = run_study(o);
 
@@ -218,6 +254,10 @@ void add_study_command(CLI::App& app) {
   cmd->add_option("--imu", options->recording.imu_path, "IMU log (plain or phyphox .csv)");
   cmd->add_option("--segments", options->recording.segments_path, "flights within the IMU log");
   add_throw_options(*cmd, options->throw_options);
+  cmd->add_flag("--calibrate-to-paper", options->calibrate_to_paper,
+                "search the throw (spin rate, axis, marker noise) that matches the paper's GF "
+                "and CP rows, per frame, and predict its Monte Carlo rows (README); writes "
+                "calibration.json");
   cmd->callback([options] { study(*options); });
 }
 

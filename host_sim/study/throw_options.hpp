@@ -16,7 +16,7 @@ namespace aloft::host {
 
 struct ThrowOptions {
   static constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
-  std::string preset = "built-in";  // "built-in" or "paper" (study/throw_presets.hpp)
+  std::string preset = "built-in";  // study/throw_presets.hpp
   double spin_rate_rev_s = kUnset;
   double spin_tilt_deg = kUnset;
   double spin_azimuth_deg = kUnset;

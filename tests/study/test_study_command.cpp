@@ -166,6 +166,25 @@ TEST_CASE("the throw and the axes sampler are options, recorded in results.json"
   CHECK(w[2].get<double>() == Approx(2.0 * M_PI * std::cos(80.0 * M_PI / 180.0)));
 }
 
+TEST_CASE("the paper-body throw gives GF and CP rows near the paper's, as calibrated") {
+  StudyScratch scratch;
+  const auto r = run_aloft(scratch, "study --throw paper-body --frame body --mc-samples 10 "
+                                    "--threads 2 --out '" + scratch.path("o") + "'");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const json results = json::parse(read_file(scratch.path("o/results.json")));
+  CHECK(results.at("trial").at("preset") == "paper-body");
+  for (const char* model : {"GF", "CP"}) {
+    const json& m = results.at("models").at(model);
+    for (const char* key : {"p10", "median", "p90"}) {
+      INFO(model << " " << key);
+      // The search left an RMS difference of 0.40 deg over the six numbers.
+      CHECK(m.at("rms_da_deg").at(key).get<double>() ==
+            Approx(m.at("paper_rms_da_deg").at(key).get<double>()).margin(1.0));
+    }
+  }
+}
+
 TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing written") {
   StudyScratch scratch;
   const std::string out = scratch.path("out");
@@ -202,6 +221,16 @@ TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing 
     CHECK(r.exit_code == 2);
     CHECK(count_lines(r.err) == 1);
     CHECK(r.err.find("--spin-rate") != std::string::npos);
+  }
+  SECTION("calibration with a searched option") {
+    const auto r = run_aloft(scratch, "study --calibrate-to-paper --spin-rate 2 --out '" + out + "'");
+    CHECK(r.exit_code == 2);
+    CHECK(count_lines(r.err) == 1);
+  }
+  SECTION("an unknown throw preset") {
+    const auto r = run_aloft(scratch, "study --throw paper --out '" + out + "'");
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--throw") != std::string::npos);
   }
   SECTION("an unknown axes sampler") {
     const auto r = run_aloft(scratch, "study --axes-sampler euler --out '" + out + "'");
