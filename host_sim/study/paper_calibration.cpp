@@ -90,7 +90,7 @@ std::vector<ThrowParameters> coarse_grid() {
 Scored refine(const CalibrationSettings& s, DaFrame frame, Scored best, std::size_t& evaluations,
               const std::function<void()>& tick) {
   constexpr std::size_t kStride = 2;
-  constexpr std::size_t kBudget = 60;
+  const std::size_t kBudget = s.refine_budget;
   best.score = rms_difference(evaluate_models(s, best.p, kStride), frame);
   std::array<double, 4> step;
   for (std::size_t i = 0; i < 4; ++i) step[i] = kRanges[i].first_step;
@@ -166,7 +166,7 @@ CalibrationResult calibrate_to_paper(const CalibrationSettings& s,
   CalibrationResult result;
 
   // 1. The grid, scored in every frame at once.
-  const std::vector<ThrowParameters> grid = coarse_grid();
+  const std::vector<ThrowParameters> grid = s.grid.empty() ? coarse_grid() : s.grid;
   result.grid_points = grid.size();
   std::vector<std::vector<Scored>> scored(kDaFrames);
   for (std::size_t g = 0; g < grid.size(); ++g) {
@@ -178,7 +178,9 @@ CalibrationResult calibrate_to_paper(const CalibrationSettings& s,
   for (DaFrame frame : frames) {
     // 2. Refine the best three grid points.
     std::vector<Scored>& candidates = scored[frame_index(frame)];
-    std::partial_sort(candidates.begin(), candidates.begin() + 3, candidates.end(),
+    const std::size_t starts = std::max<std::size_t>(1, std::min(s.refine_starts, candidates.size()));
+    std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(starts),
+                      candidates.end(),
                       [](const Scored& a, const Scored& b) { return a.score < b.score; });
     FrameCalibration fc;
     fc.frame = frame;
@@ -186,9 +188,9 @@ CalibrationResult calibrate_to_paper(const CalibrationSettings& s,
     const std::string phase = std::string("refine ") + frame_name(frame);
     std::size_t refined = 0;
     Scored best;
-    for (std::size_t c = 0; c < 3; ++c) {
+    for (std::size_t c = 0; c < starts; ++c) {
       const Scored found = refine(s, frame, candidates[c], fc.evaluations,
-                                  [&] { report(phase, ++refined, 3 * 60); });
+                                  [&] { report(phase, ++refined, starts * s.refine_budget); });
       if (c == 0 || found.score < best.score) best = found;
     }
     // 3. The throw found, every sample, and the rows it predicts.

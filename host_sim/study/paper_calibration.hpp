@@ -40,6 +40,11 @@ struct CalibrationSettings {
   std::size_t mc_samples = 5000;
   std::uint64_t seed = 1;
   unsigned threads = 1;
+  // The search's size: the grid (empty: the built-in 1,120 points), how many of its best
+  // points are refined, and the evaluations each refinement may take.
+  std::vector<ThrowParameters> grid;
+  std::size_t refine_starts = 3;
+  std::size_t refine_budget = 60;
   // (phase, done, total) now and then; phases "grid", "refine body", ...
   std::function<void(const std::string&, std::size_t, std::size_t)> progress;
 };
