@@ -2,7 +2,6 @@
 // same analyses on a recording. Everything is computed in memory first; only then are
 // the files written, each atomically, so a failure leaves no half-written output.
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -63,11 +62,7 @@ void check_options(const StudyOptions& o) {
     throw Error("study: --throw, --spin-*, --duration and --marker-* shape the built-in "
                 "throw; they do not apply to a recording");
   }
-  const ThrowOptions& t = o.throw_options;
-  if (o.calibrate_to_paper &&
-      (!r.body_path.empty() || t.preset != "built-in" || !std::isnan(t.spin_rate_rev_s) ||
-       !std::isnan(t.spin_tilt_deg) || !std::isnan(t.spin_azimuth_deg) ||
-       !std::isnan(t.marker_noise_mm))) {
+  if (o.calibrate_to_paper && (!r.body_path.empty() || o.throw_options.searched_given())) {
     throw Error("study: --calibrate-to-paper searches the built-in throw's spin and marker "
                 "noise; it takes no recording, --throw, --spin-* or --marker-noise");
   }

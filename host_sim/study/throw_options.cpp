@@ -24,9 +24,12 @@ void apply(double value, const char* option, double low, double high, double& in
 }  // namespace
 
 bool ThrowOptions::throw_given() const {
+  return searched_given() || given(duration_s) || !marker_layout.empty();
+}
+
+bool ThrowOptions::searched_given() const {
   return preset != "built-in" || given(spin_rate_rev_s) || given(spin_tilt_deg) ||
-         given(spin_azimuth_deg) || given(duration_s) || given(marker_noise_mm) ||
-         !marker_layout.empty();
+         given(spin_azimuth_deg) || given(marker_noise_mm);
 }
 
 void add_throw_options(CLI::App& cmd, ThrowOptions& o) {

@@ -27,6 +27,9 @@ struct ThrowOptions {
 
   // True when an option of the throw itself (not the sampler) was given.
   bool throw_given() const;
+  // True when an option the calibration searches (or replaces) was given: --throw,
+  // --spin-*, --marker-noise.
+  bool searched_given() const;
 };
 
 void add_throw_options(CLI::App& command, ThrowOptions& options);

@@ -90,19 +90,15 @@ Eigen::Vector3d tilted_within(const Eigen::Vector3d& axis, double degrees, Simul
   return c * axis + std::sqrt(1.0 - c * c) * (std::cos(phi) * a + std::sin(phi) * b);
 }
 
-}  // namespace
+struct Variant {
+  std::string name;
+  std::uint64_t stream;  // 0: paired with the moments analysis
+  Draw draw;
+};
 
-int main(int argc, char** argv) {
-  std::string preset = "built-in";
-  std::size_t sims = 5000;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--throw")) preset = argv[i + 1];
-    if (!std::strcmp(argv[i], "--sims")) sims = std::stoul(argv[i + 1]);
-  }
-  const BuiltInTrial trial = make_built_in_trial(throw_preset(preset));
-  const InertiaTensor<double> gf = trial.body.inertia;
+// The candidate variants of "both ±10 % + ±10°" around the nominal tensor `gf`.
+std::vector<Variant> both_variants(const InertiaTensor<double>& gf) {
   const Eigen::Vector3d lambda = gf.principal_moments();
-
   const auto family = [&gf](PerturbationFamily f, double bound, AxesSampler sampler) -> Draw {
     return [=, &gf](SimulationRandom& r) { return draw_perturbed_inertia(gf, {f, bound, sampler}, r); };
   };
@@ -129,11 +125,6 @@ int main(int argc, char** argv) {
     return [=](SimulationRandom& r) { return ball_axes(r, degrees); };
   };
 
-  struct Variant {
-    std::string name;
-    std::uint64_t stream;
-    Draw draw;
-  };
   std::vector<Variant> variants = {
       {"ball, shared (aloft)", 0, family(PerturbationFamily::both, 10.0, AxesSampler::ball)},
       {"cardan", 0, family(PerturbationFamily::both, 10.0, AxesSampler::cardan)},
@@ -169,10 +160,28 @@ int main(int argc, char** argv) {
                         both_variant(ball(degrees), principal_tensor)});
   }
 
+  return variants;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string preset = "built-in";
+  std::size_t sims = 5000;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--throw")) preset = argv[i + 1];
+    if (!std::strcmp(argv[i], "--sims")) sims = std::stoul(argv[i + 1]);
+  }
+  const BuiltInTrial trial = make_built_in_trial(throw_preset(preset));
+  const InertiaTensor<double>& gf = trial.body.inertia;
+  const std::vector<Variant> variants = both_variants(gf);
+  const auto family = [&gf](PerturbationFamily f) -> Draw {
+    return [=, &gf](SimulationRandom& r) { return draw_perturbed_inertia(gf, {f, 10.0}, r); };
+  };
   std::printf("throw %s, %zu simulations per analysis, seed %llu\n", preset.c_str(), sims,
               static_cast<unsigned long long>(kSeed));
-  const Outcome moments = run(trial, sims, 0, family(PerturbationFamily::moments, 10.0, AxesSampler::ball));
-  const Outcome axes = run(trial, sims, 0, family(PerturbationFamily::axes, 10.0, AxesSampler::ball));
+  const Outcome moments = run(trial, sims, 0, family(PerturbationFamily::moments));
+  const Outcome axes = run(trial, sims, 0, family(PerturbationFamily::axes));
   for (DaFrame f : kAllDaFrames) {
     const std::size_t fi = frame_index(f);
     std::printf("%s axes: moments ±10 median %.2f, axes ±10 median %.2f (paper 4.4 and 3.3; both 6.4)\n",
