@@ -50,7 +50,9 @@ BuiltInTrial make_built_in_trial(const SyntheticThrowSettings& settings) {
       "C1 cubic Hermite spline in the tangent space of SO(3), knot rates from three-point "
       "derivatives, to 1000 Hz";
   d["samples"] = out.flight.samples();
-  d["omega_measured"] = "log(q_j^-1 q_{j+1}) / dt between consecutive resampled orientations";
+  d["omega_measured"] =
+      "log(q_j^-1 q_{j+1}) / dt between consecutive resampled orientations (body axes); "
+      "q_j times it in world axes";
   return out;
 }
 
