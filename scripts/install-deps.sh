@@ -8,7 +8,7 @@ set -euo pipefail
 host_packages=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev libbenchmark-dev
-  libcairo2-dev
+  libcairo2-dev libxsimd-dev
 )
 target_packages=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib

@@ -66,20 +66,44 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
   const auto store = [](Analysis& an, std::size_t i, const RmsDaByFrame& rms) {
     for (std::size_t f = 0; f < kDaFrames; ++f) an.rms_da_deg[f][i] = rms[f];
   };
-  const auto run_one = [&](std::size_t flat) {
+  // Simulation `flat`: its analysis, index in it, seed sample and tensor.
+  struct Simulation {
+    Analysis* analysis;
+    std::size_t index;
+    std::size_t seed_sample;
+    InertiaTensor<double> inertia;
+  };
+  const auto simulation = [&](std::size_t flat) {
     const std::size_t a = static_cast<std::size_t>(
         std::upper_bound(first.begin(), first.end(), flat) - first.begin() - 1);
     Analysis& an = analyses[a];
     const std::size_t i = flat - first[a];
-    if (!an.monte_carlo) {
-      store(an, i, full_flight_rms_da_deg(flight, an.inertia, i * an.seed_stride));
-      return;
-    }
+    if (!an.monte_carlo) return Simulation{&an, i, i * an.seed_stride, an.inertia};
     SimulationRandom random(settings.seed, settings.stream_base, i);  // paired across analyses
     boost::random::uniform_int_distribution<std::size_t> sample(0, n - 1);
     const std::size_t k = sample(random);
-    const InertiaTensor<double> inertia = draw_perturbed_inertia(nominal, an.perturbation, random);
-    store(an, i, full_flight_rms_da_deg(flight, inertia, k));
+    return Simulation{&an, i, k, draw_perturbed_inertia(nominal, an.perturbation, random)};
+  };
+  const LaneFlight lane_flight(flight);
+  const std::size_t lanes = settings.simd_lanes ? simulation_lanes() : 1;
+  // Simulations [begin, end), `lanes` at a time.
+  const auto run_range = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t group = begin; group < end; group += lanes) {
+      const std::size_t count = std::min(lanes, end - group);
+      Simulation sims[8];
+      FlightSimulation<double> lane_sims[8];
+      RmsDaByFrame rms[8];
+      for (std::size_t l = 0; l < count; ++l) {
+        sims[l] = simulation(group + l);
+        lane_sims[l] = flight_simulation(sims[l].inertia, sims[l].seed_sample);
+      }
+      if (settings.simd_lanes) {
+        full_flight_rms_da_deg_lanes(lane_flight, lane_sims, count, rms);
+      } else {
+        rms[0] = full_flight_rms_da_deg(flight, sims[0].inertia, sims[0].seed_sample);
+      }
+      for (std::size_t l = 0; l < count; ++l) store(*sims[l].analysis, sims[l].index, rms[l]);
+    }
   };
 
   constexpr std::size_t kChunk = 64;
@@ -93,7 +117,7 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
         const std::size_t begin = next.fetch_add(kChunk);
         if (begin >= total) return;
         const std::size_t end = std::min(total, begin + kChunk);
-        for (std::size_t f = begin; f < end; ++f) run_one(f);
+        run_range(begin, end);
         done.fetch_add(end - begin);
       }
     } catch (...) {
