@@ -9,7 +9,7 @@
 #include "common/commands.hpp"
 #include "readers/c3d_numbers.hpp"
 #include "readers/c3d_parameters.hpp"
-#include "readers/trc_reader.hpp"
+#include "readers/length_units.hpp"
 
 namespace aloft::host {
 

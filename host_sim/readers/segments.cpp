@@ -46,13 +46,16 @@ std::vector<Segment> read_segments_csv(const std::string& path) {
     std::vector<std::string> cells =
         split_csv_line(file.lines[i], path, line, header.size() == 5 ? 5 : 0);
     for (std::string& cell : cells) cell = trim(cell);  // also inside quotes
+    ++rows;
+    // SPEC §3: a keep=false row is not a flight and is skipped whatever its other cells
+    // hold (phyphox users leave its start and end blank), so keep is read first.
+    if (cells.size() >= 4 && !parse_keep(cells[3], path, line)) continue;
     if (cells.size() < 3) {
       throw Error(at_line(path, line, "a segment needs a name, a start and an end"));
     }
     if (cells.size() > header.size()) {
       throw Error(at_line(path, line, "more cells than the header names"));
     }
-    ++rows;
     Segment s;
     s.name = cells[0];
     if (s.name.empty()) throw Error(at_line(path, line, "segment name is empty"));
@@ -65,7 +68,6 @@ std::vector<Segment> read_segments_csv(const std::string& path) {
       throw Error(at_line(path, line, "segment " + s.name + " ends before it starts"));
     }
     if (cells.size() >= 5) s.comment = cells[4];
-    if (cells.size() >= 4 && !parse_keep(cells[3], path, line)) continue;
     kept.push_back(s);
   }
   if (rows == 0) throw Error(path + ": no segments after the header");
