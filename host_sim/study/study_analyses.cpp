@@ -3,13 +3,9 @@
 #include <boost/random/uniform_int_distribution.hpp>
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cstdio>
-#include <exception>
-#include <mutex>
-#include <thread>
 
+#include "common/parallel_for.hpp"
 #include "study/full_flight_simulation.hpp"
 #include "study/paper_cylinder.hpp"
 
@@ -79,44 +75,7 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
     an.rms_da_deg[i] = full_flight_rms_da_deg(flight, inertia, k);
   };
 
-  constexpr std::size_t kChunk = 64;
-  std::atomic<std::size_t> next{0};
-  std::atomic<std::size_t> done{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  const auto worker = [&] {
-    try {
-      for (;;) {
-        const std::size_t begin = next.fetch_add(kChunk);
-        if (begin >= total) return;
-        const std::size_t end = std::min(total, begin + kChunk);
-        for (std::size_t f = begin; f < end; ++f) run_one(f);
-        done.fetch_add(end - begin);
-      }
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-      next.store(total);
-    }
-  };
-
-  const unsigned threads = std::max(1u, settings.threads);
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
-  if (settings.progress) {
-    // The calling thread reports progress while the workers run, then joins the work.
-    std::thread last(worker);
-    while (done.load() < total && next.load() < total) {
-      settings.progress(done.load(), total);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-    last.join();
-  } else {
-    worker();
-  }
-  for (std::thread& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
-  if (settings.progress) settings.progress(total, total);
+  parallel_for(total, std::max(1u, settings.threads), run_one, ParallelProgress{settings.progress});
 }
 
 }  // namespace aloft::host
