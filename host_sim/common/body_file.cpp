@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/commands.hpp"
+#include "common/file_error.hpp"
 #include "common/warning.hpp"
 
 namespace aloft::host {
@@ -207,11 +208,13 @@ Body parse_body_json(const std::string& text, const std::string& source) {
 }
 
 Body read_body_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open body file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_body_json(text.str(), path);
+  return with_file_context(path, [&] {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot open body file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_body_json(text.str(), path);
+  });
 }
 
 }  // namespace aloft::host

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "common/commands.hpp"
+#include "common/file_error.hpp"
 #include "readers/c3d_numbers.hpp"
 #include "readers/c3d_parameters.hpp"
 #include "readers/length_units.hpp"
@@ -75,7 +76,7 @@ std::vector<std::string> point_labels(const ParameterSection& params, std::size_
 
 }  // namespace
 
-MarkerTrial read_c3d(const std::string& path, C3dDetails* details) {
+static MarkerTrial read_c3d_unguarded(const std::string& path, C3dDetails* details) {
   const std::vector<std::uint8_t> bytes = read_bytes(path);
   const ByteView file(bytes);
   const std::uint8_t* header = file.at(0, kBlockBytes);  // read_bytes checked it is there
@@ -189,6 +190,10 @@ MarkerTrial read_c3d(const std::string& path, C3dDetails* details) {
     details->parameter_repairs = params.repairs;
   }
   return trial;
+}
+
+MarkerTrial read_c3d(const std::string& path, C3dDetails* details) {
+  return with_file_context(path, [&] { return read_c3d_unguarded(path, details); });
 }
 
 }  // namespace aloft::host

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "common/commands.hpp"
+#include "common/file_error.hpp"
 #include "readers/text_cells.hpp"
 
 namespace aloft::host {
@@ -183,7 +184,7 @@ FreeJointColumns free_joint(const pugi::xml_node& joint, const std::string& name
 
 }  // namespace
 
-FreeJointColumns read_osim_joint(const std::string& osim_path, const std::string& joint_name) {
+static FreeJointColumns read_osim_joint_unguarded(const std::string& osim_path, const std::string& joint_name) {
   pugi::xml_document doc;
   const pugi::xml_parse_result parsed = doc.load_file(osim_path.c_str());
   if (!parsed) {
@@ -218,6 +219,10 @@ FreeJointColumns read_osim_joint(const std::string& osim_path, const std::string
   }
   out.source = type + " " + joint_name + " of " + osim_path;
   return out;
+}
+
+FreeJointColumns read_osim_joint(const std::string& osim_path, const std::string& joint_name) {
+  return with_file_context(osim_path, [&] { return read_osim_joint_unguarded(osim_path, joint_name); });
 }
 
 }  // namespace aloft::host

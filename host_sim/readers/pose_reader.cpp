@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "common/commands.hpp"
+#include "common/file_error.hpp"
 #include "readers/free_joint.hpp"
 #include "readers/text_cells.hpp"
 #include "readers/time_stamps.hpp"
@@ -67,7 +68,7 @@ JointColumnIndices find_joint_columns(const FreeJointColumns& joint, const std::
 
 }  // namespace
 
-PoseTrial read_mot(const std::string& path, const PoseNaming& naming) {
+static PoseTrial read_mot_unguarded(const std::string& path, const PoseNaming& naming) {
   const std::optional<FreeJointColumns> named = free_joint_from_naming(naming);
   const TextFile file = read_text_file(path);
   std::optional<bool> in_degrees;
@@ -172,28 +173,55 @@ PoseTrial read_mot(const std::string& path, const PoseNaming& naming) {
   return trial;
 }
 
-PoseTrial read_pose_csv(const std::string& path) {
-  const TextFile file = read_text_file(path);
-  std::size_t i = 0;
-  while (is_blank(file.lines[i])) ++i;
-  const std::size_t header_line = i + 1;
-  const std::vector<std::string> header = split_csv_line(file.lines[i], path, header_line);
+namespace {
+
+// Columns of a pose CSV header: t, qw..qz, and x, y, z (-1 when absent).
+struct PoseCsvColumns {
+  int t = -1;
+  int q[4] = {-1, -1, -1, -1};
+  int p[3] = {-1, -1, -1};
+  bool has_position() const { return p[0] >= 0; }
+};
+
+PoseCsvColumns pose_csv_columns(const std::vector<std::string>& header, const std::string& path,
+                                std::size_t header_line) {
   auto find = [&](const char* name) {
     for (std::size_t k = 0; k < header.size(); ++k) {
       if (to_lower(trim(header[k])) == name) return static_cast<int>(k);
     }
     return -1;
   };
-  const int t = find("t");
-  const int q[4] = {find("qw"), find("qx"), find("qy"), find("qz")};
-  const int p[3] = {find("x"), find("y"), find("z")};
-  if (t < 0 || q[0] < 0 || q[1] < 0 || q[2] < 0 || q[3] < 0) {
+  PoseCsvColumns c;
+  c.t = find("t");
+  const char* quaternion[4] = {"qw", "qx", "qy", "qz"};
+  const char* position[3] = {"x", "y", "z"};
+  for (int k = 0; k < 4; ++k) c.q[k] = find(quaternion[k]);
+  for (int k = 0; k < 3; ++k) c.p[k] = find(position[k]);
+  if (c.t < 0 || c.q[0] < 0 || c.q[1] < 0 || c.q[2] < 0 || c.q[3] < 0) {
     throw Error(at_line(path, header_line, "header must hold t,qw,qx,qy,qz[,x,y,z]"));
   }
-  const int positions = (p[0] >= 0) + (p[1] >= 0) + (p[2] >= 0);
+  const int positions = (c.p[0] >= 0) + (c.p[1] >= 0) + (c.p[2] >= 0);
   if (positions != 0 && positions != 3) {
     throw Error(at_line(path, header_line, "position needs all of x, y, z or none"));
   }
+  return c;
+}
+
+}  // namespace
+
+static PoseTrial read_pose_csv_unguarded(const std::string& path) {
+  const TextFile file = read_text_file(path, [&](const std::string& line, std::size_t number) {
+    pose_csv_columns(split_csv_line(line, path, number), path, number);
+  });
+  std::size_t i = 0;
+  while (is_blank(file.lines[i])) ++i;
+  const std::size_t header_line = i + 1;
+  const std::vector<std::string> header = split_csv_line(file.lines[i], path, header_line);
+  const PoseCsvColumns columns = pose_csv_columns(header, path, header_line);
+  const int t = columns.t;
+  const int* q = columns.q;
+  const int* p = columns.p;
+  const int positions = columns.has_position() ? 3 : 0;
 
   PoseTrial trial;
   trial.path = path;
@@ -230,6 +258,14 @@ PoseTrial read_pose_csv(const std::string& path) {
   check_time_stamps(trial.time_s, path, line_numbers);
   make_hemispheres_continuous(trial.orientation);
   return trial;
+}
+
+PoseTrial read_mot(const std::string& path, const PoseNaming& naming) {
+  return with_file_context(path, [&] { return read_mot_unguarded(path, naming); });
+}
+
+PoseTrial read_pose_csv(const std::string& path) {
+  return with_file_context(path, [&] { return read_pose_csv_unguarded(path); });
 }
 
 }  // namespace aloft::host

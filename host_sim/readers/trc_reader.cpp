@@ -5,6 +5,7 @@
 #include <map>
 
 #include "common/commands.hpp"
+#include "common/file_error.hpp"
 #include "common/warning.hpp"
 #include "readers/length_units.hpp"
 #include "readers/text_cells.hpp"
@@ -61,11 +62,13 @@ std::size_t header_count(const std::map<std::string, std::string>& header, const
 
 }  // namespace
 
-MarkerTrial read_trc(const std::string& path) {
-  const TextFile file = read_text_file(path);
-  if (to_lower(file.lines[0]).rfind("pathfiletype", 0) != 0) {
-    throw Error(at_line(path, 1, "not a TRC file: first line must start with PathFileType"));
-  }
+static MarkerTrial read_trc_unguarded(const std::string& path) {
+  const auto check_first_line = [&](const std::string& line, std::size_t number) {
+    if (number != 1 || to_lower(line).rfind("pathfiletype", 0) != 0) {
+      throw Error(at_line(path, 1, "not a TRC file: first line must start with PathFileType"));
+    }
+  };
+  const TextFile file = read_text_file(path, check_first_line);
   if (file.lines.size() < kFirstHeaderLines) {
     throw Error(path + ": header ends early (a TRC header has five lines)");
   }
@@ -154,6 +157,10 @@ MarkerTrial read_trc(const std::string& path) {
   }
   check_time_stamps(trial.time_s, path, line_numbers);
   return trial;
+}
+
+MarkerTrial read_trc(const std::string& path) {
+  return with_file_context(path, [&] { return read_trc_unguarded(path); });
 }
 
 }  // namespace aloft::host

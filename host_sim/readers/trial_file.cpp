@@ -5,6 +5,7 @@
 #include <set>
 
 #include "common/commands.hpp"
+#include "common/file_error.hpp"
 #include "readers/c3d_reader.hpp"
 #include "readers/pose_reader.hpp"
 #include "readers/text_cells.hpp"
@@ -40,7 +41,7 @@ const char* kind_name(TrialKind kind) {
 
 }  // namespace
 
-TrialFormat detect_trial_format(const std::string& path) {
+static TrialFormat detect_trial_format_unguarded(const std::string& path) {
   const std::string extension = to_lower(std::filesystem::path(path).extension().string());
   if (extension == ".trc") return {TrialKind::markers, "trc"};
   if (extension == ".c3d") return {TrialKind::markers, "c3d"};
@@ -95,6 +96,10 @@ PoseTrial read_pose_file(const std::string& path, const PoseNaming& naming) {
     return read_pose_csv(path);
   }
   throw Error(path + ": holds " + kind_name(format.kind) + ", not poses (.mot, .sto, pose CSV)");
+}
+
+TrialFormat detect_trial_format(const std::string& path) {
+  return with_file_context(path, [&] { return detect_trial_format_unguarded(path); });
 }
 
 }  // namespace aloft::host
