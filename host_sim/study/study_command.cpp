@@ -148,8 +148,10 @@ void write_outputs(const std::string& dir, const std::vector<std::pair<std::stri
   }
   std::vector<std::string> written;
   try {
-    for (const auto& [name, content] : files) {
-      const std::string path = (std::filesystem::path(dir) / name).string();
+    for (const auto& file : files) {
+      // Not a structured binding: a lambda capturing one is C++20, and clang refuses it.
+      const std::string& content = file.second;
+      const std::string path = (std::filesystem::path(dir) / file.first).string();
       write_file_atomically(path, [&](std::ostream& out) { out << content; });
       written.push_back(path);
     }
