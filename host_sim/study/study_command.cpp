@@ -83,7 +83,9 @@ StudyResult run_study(const StudyOptions& o) {
     const Eigen::Vector3d cp_moments(paper::kCompoundPendulumKgM2[0],
                                      paper::kCompoundPendulumKgM2[1],
                                      paper::kCompoundPendulumKgM2[2]);
-    InertiaTensor<double>::make_from_principal(cp_moments, Eigen::Quaterniond::Identity(), cp);
+    const Status made =
+        InertiaTensor<double>::make_from_principal(cp_moments, Eigen::Quaterniond::Identity(), cp);
+    if (made != Status::ok) throw Error(std::string("the paper's CP tensor: ") + describe(made));
     models = {model_analysis("GF", nominal), model_analysis("CP", cp)};
     result.flights.push_back({std::move(trial.flight), {}});
   } else {
@@ -179,7 +181,7 @@ void add_study_command(CLI::App& app) {
   cmd->add_option("--seed", options->seed, "seed of the Monte Carlo draws (default 1)")
       ->check(whole_number());
   cmd->add_option("--mc-samples", options->mc_samples,
-                  "simulations per Monte Carlo analysis (default 5000)")
+                  "simulations per Monte Carlo analysis and flight (default 5000)")
       ->check(whole_number());
   cmd->add_option("--threads", options->threads, "worker threads (default: every core)")
       ->check(whole_number());
