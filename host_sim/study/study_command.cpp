@@ -29,6 +29,7 @@ struct StudyOptions {
   std::uint64_t seed = 1;
   std::size_t mc_samples = paper::kMonteCarloSimulations;
   unsigned threads = 0;  // 0: every core
+  std::string frame = "both";  // body, world or both (study/da_frame.hpp)
   RecordingInput recording;
 };
 
@@ -56,6 +57,19 @@ void check_options(const StudyOptions& o) {
     throw Error("study: --segments goes with --imu");
   }
   if (o.mc_samples < 1) throw Error("study: --mc-samples must be at least 1");
+  if (o.frame != "body" && o.frame != "world" && o.frame != "both") {
+    throw Error("study: --frame must be body, world or both, not '" + o.frame + "'");
+  }
+  if (o.frame == "world" && !r.imu_path.empty()) {
+    throw Error("study: --frame world needs orientations; an IMU recording has only body rates");
+  }
+}
+
+// The frames to report: an IMU recording has no world frame, so "both" is body there.
+std::vector<DaFrame> frames_to_report(const StudyOptions& o) {
+  if (o.frame == "body" || !o.recording.imu_path.empty()) return {DaFrame::body};
+  if (o.frame == "world") return {DaFrame::world};
+  return {DaFrame::body, DaFrame::world};
 }
 
 // "\rstudy: 12,345 / 61,746 simulations (20 %)" on a terminal, nothing otherwise.
@@ -74,6 +88,7 @@ StudyResult run_study(const StudyOptions& o) {
   StudyResult result;
   result.seed = o.seed;
   result.mc_samples = o.mc_samples;
+  result.frames = frames_to_report(o);
   result.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
 
   // The trial and the tensors the analyses use.
@@ -193,6 +208,9 @@ void add_study_command(CLI::App& app) {
       ->check(whole_number());
   cmd->add_option("--threads", options->threads, "worker threads (default: every core)")
       ->check(whole_number());
+  cmd->add_option("--frame", options->frame,
+                  "axes in which simulated and measured omega are compared: body, world or "
+                  "both (default both; IMU input: body only)");
   cmd->add_option("--body", options->recording.body_path, "body file of a recording (SPEC §2)");
   cmd->add_option("--markers", options->recording.markers_path, "marker trajectories (.trc, .c3d)");
   cmd->add_option("--poses", options->recording.poses_path, "poses (.mot, .sto, pose .csv)");

@@ -24,6 +24,10 @@ StudyFlight make_pose_flight(const std::string& name, const ResampledPoses& pose
                                                   f.measured_omega_body[j]);
     if (s != Status::ok) f.measured_omega_body[j].setZero();
   }
+  f.measured_omega_world.resize(f.measured_omega_body.size());
+  for (std::size_t j = 0; j < f.measured_omega_body.size(); ++j) {
+    f.measured_omega_world[j] = f.orientation[j] * f.measured_omega_body[j];
+  }
   return f;
 }
 
