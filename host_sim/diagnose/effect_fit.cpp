@@ -72,6 +72,22 @@ Eigen::VectorXd standard_errors(const Eigen::MatrixXd& normal, int count, double
   return se;
 }
 
+// Covariance of the first `count` parameters (initial rates marginalised), over the
+// directions the data informs.
+Eigen::MatrixXd covariance(const Eigen::MatrixXd& normal, int count, double variance) {
+  if (count == 0 || normal.rows() == 0) return Eigen::MatrixXd::Zero(count, count);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(normal);
+  const Eigen::VectorXd& values = solver.eigenvalues();
+  const double cutoff = 1e-12 * std::max(values.maxCoeff(), 1e-300);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(count, count);
+  for (int k = 0; k < values.size(); ++k) {
+    if (values(k) <= cutoff) continue;
+    const Eigen::VectorXd v = solver.eigenvectors().col(k).head(count);
+    out += v * v.transpose() / values(k);
+  }
+  return out * variance;
+}
+
 struct Setup {
   Effect effect;
   const NominalInertia* nominal;
@@ -118,6 +134,7 @@ EffectFit result_of(const Setup& setup, const LeastSquaresResult& solution, int 
   const int dof = std::max(1, fit.residual_count - parameters);
   fit.theta_standard_error =
       standard_errors(solution.normal_matrix, shared_count, std::max(fit.cost / dof, 1e-12));
+  fit.theta_covariance = covariance(solution.normal_matrix, shared_count, std::max(fit.cost / dof, 1e-12));
   fit.converged = std::isfinite(fit.cost);
   return fit;
 }

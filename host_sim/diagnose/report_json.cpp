@@ -25,8 +25,21 @@ json invariant_json(const InvariantBehaviour& b) {
           {"behaviour", b.behaviour}};
 }
 
+json tensor_json(const TensorReport& t) {
+  static const char* axis[] = {"x", "y", "z"};
+  return {{"consistent_with_nominal", t.consistent_with_nominal},
+          {"ratio_best", {t.ratio_best(0), t.ratio_best(1)}},
+          {"ratio_95", {{t.ratio_low(0), t.ratio_high(0)}, {t.ratio_low(1), t.ratio_high(1)}}},
+          {"axes_95_deg", t.axes_known ? json(t.axes_95_deg) : json(nullptr)},
+          {"ratio_nominal", {t.ratio_nominal(0), t.ratio_nominal(1)}},
+          {"ratios", {std::string("I") + axis[1] + "/I" + axis[0], std::string("I") + axis[2] + "/I" + axis[0]}},
+          {"flights", t.flights},
+          {"method", t.method}};
+}
+
 json analysis_json(const Analysis& a) {
   json out;
+  if (a.tensor) out["tensor"] = tensor_json(*a.tensor);
   out["baseline"] = {{"rms_da_deg", a.baseline.rms_da_deg}, {"rms_rel_err", a.baseline.rms_rel_err}};
   json where;
   where["onset_s"] = a.where.onset_s ? json(*a.where.onset_s) : json(nullptr);
@@ -122,6 +135,7 @@ std::string params_text(Effect effect, const EffectParameters& p) {
 
 std::string analysis_summary(const Analysis& a) {
   std::ostringstream out;
+  if (a.tensor) out << "  " << tensor_summary(*a.tensor);
   out << fmt("  baseline (nominal model): RMS DA %.3f deg, RMS relative error %.4f", a.baseline.rms_da_deg,
              a.baseline.rms_rel_err)
       << fmt(", %.2f x the noise floor", a.where.gap_over_noise) << "\n";
