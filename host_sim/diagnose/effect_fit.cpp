@@ -147,10 +147,14 @@ std::vector<Eigen::VectorXd> starting_rates(const Setup& setup, const EffectFit*
   const bool rigid = setup.effect == Effect::internal_damping;
   const EffectModel model{rigid ? Effect::none : setup.effect, *setup.nominal, setup.impulse_time_s};
   const Eigen::VectorXd held = rigid ? Eigen::VectorXd() : theta;
+  // At theta = 0 every effect is the nominal model, whose fitted rates are already the
+  // answer: nothing to refine.
+  const bool nominal_model = nominal_fit != nullptr && (rigid || theta.isZero());
   std::vector<Eigen::VectorXd> rates;
   for (std::size_t i = 0; i < setup.data->size(); ++i) {
     const Vec3 guess = starting_rate((*setup.data)[i], setup.refs[i], nominal_fit, i, *setup.nominal);
-    rates.emplace_back(fit_initial_state(model, (*setup.data)[i], setup.refs[i], held, &guess).omega_ref);
+    rates.emplace_back(nominal_model ? guess
+                                     : fit_initial_state(model, (*setup.data)[i], setup.refs[i], held, &guess).omega_ref);
   }
   return rates;
 }

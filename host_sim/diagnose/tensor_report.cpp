@@ -214,12 +214,23 @@ void temper_confidence(Analysis& analysis) {
   Verdict& v = analysis.verdict;
   if (v.effect == Effect::none || v.chosen < 0) return;
   const Candidate& chosen = analysis.candidates[static_cast<std::size_t>(v.chosen)];
-  char text[200];
+  char text[400];
   if (chosen.shrink < kPracticalShrink) {
     v.confident = false;
     std::snprintf(text, sizeof text, "%s shrinks the held-out gap by only %.0f %% (below the %.0f %% that matters)",
                   effect_name(v.effect), 100.0 * chosen.shrink, 100.0 * kPracticalShrink);
     v.could_not_judge.push_back(text);
+  }
+  // A candidate ruled out for senseless parameters that explains far more than the verdict
+  // says the models considered do not hold this gap: the verdict is a second best.
+  for (const Candidate& c : analysis.candidates) {
+    if (c.evaluated && !c.physical && c.shrink > chosen.shrink + kPracticalShrink) {
+      v.confident = false;
+      std::snprintf(text, sizeof text, "%s would shrink the held-out gap by %.0f %% but was ruled out (%s)",
+                    effect_name(c.effect), 100.0 * c.shrink, c.note.c_str());
+      v.could_not_judge.push_back(text);
+      break;
+    }
   }
   if (analysis.tensor && analysis.tensor->consistent_with_nominal) {
     v.confident = false;
