@@ -124,6 +124,7 @@ struct FlipPeriodSummary {
 
 struct SessionDiagnosis {
   Analysis pooled;
+  bool single_flight = false;  // one judged flight: `pooled` is that flight's own analysis
   std::vector<FlightDiagnosis> flights;
   std::optional<FlipPeriodSummary> flip_period;
 };

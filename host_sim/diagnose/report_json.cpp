@@ -163,6 +163,7 @@ std::string analysis_summary(const Analysis& a) {
     out << fmt(": the held-out gap (RMS DA %.3f deg) is what the noise explains", v.heldout_rms_da_before_deg) << "\n";
   }
   for (const std::string& s : v.could_not_judge) out << "  could not judge: " << s << "\n";
+  for (const std::string& s : a.notes) out << "  note: " << s << "\n";
   return out.str();
 }
 
@@ -217,7 +218,7 @@ json flight_report(const FlightDiagnosis& d) {
 
 json session_report(const SessionDiagnosis& s) {
   json out = analysis_json(s.pooled);
-  out["heldout"] = "leave_one_flight_out";
+  out["heldout"] = s.single_flight ? "within_the_flight" : "leave_one_flight_out";
   json flights = json::array();
   for (const FlightDiagnosis& d : s.flights) flights.push_back(flight_report(d));
   out["flights"] = flights;
@@ -244,7 +245,9 @@ std::string flight_summary(const FlightDiagnosis& d) {
 
 std::string session_summary(const SessionDiagnosis& s) {
   std::ostringstream out;
-  out << "session of " << s.flights.size() << " flights (pooled, held out: leave one flight out)\n"
+  out << "session of " << s.flights.size()
+      << (s.single_flight ? " flight(s), one judged (its own verdict, held out within the flight)\n"
+                          : " flights (pooled, held out: leave one flight out)\n")
       << analysis_summary(s.pooled);
   if (s.flip_period) {
     out << fmt("  flip period from the first sample, %.0f flights: mean error %.1f %% nominal", s.flip_period->flights,

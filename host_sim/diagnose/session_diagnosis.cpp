@@ -267,6 +267,17 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
   }
   Analysis& analysis = session.pooled;
   const std::size_t count = pool.flights.size();
+  if (count == 1) {
+    // One flight: nothing to pool, so the top level is that flight's own analysis (held
+    // out within the flight), said so.
+    std::vector<std::string> notes = std::move(analysis.notes);
+    analysis = *pool.own.front();
+    notes.push_back("one judged flight (" + pool.flights.front()->name +
+                    "): the top level is that flight's own verdict, held out within the flight");
+    analysis.notes.insert(analysis.notes.end(), notes.begin(), notes.end());
+    session.single_flight = true;
+    return session;
+  }
   if (count < 2) {
     analysis.verdict.confident = false;
     analysis.verdict.could_not_judge.push_back(
