@@ -3,13 +3,9 @@
 #include <boost/random/uniform_int_distribution.hpp>
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cstdio>
-#include <exception>
-#include <mutex>
-#include <thread>
 
+#include "common/parallel_for.hpp"
 #include "study/full_flight_simulation.hpp"
 #include "study/paper_cylinder.hpp"
 
@@ -38,12 +34,12 @@ Analysis monte_carlo_analysis(const InertiaPerturbation& perturbation, std::size
   return a;
 }
 
-std::vector<Analysis> paper_monte_carlo_analyses(std::size_t simulations) {
+std::vector<Analysis> paper_monte_carlo_analyses(std::size_t simulations, AxesSampler sampler) {
   std::vector<Analysis> out;
   for (PerturbationFamily family :
        {PerturbationFamily::moments, PerturbationFamily::axes, PerturbationFamily::both}) {
     for (double bound : paper::kBounds) {
-      out.push_back(monte_carlo_analysis({family, bound}, simulations));
+      out.push_back(monte_carlo_analysis({family, bound, sampler}, simulations));
     }
   }
   return out;
@@ -57,7 +53,7 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
   std::vector<std::size_t> first(analyses.size() + 1, 0);
   for (std::size_t a = 0; a < analyses.size(); ++a) {
     Analysis& an = analyses[a];
-    if (!an.monte_carlo) an.simulations = n;
+    if (!an.monte_carlo) an.simulations = (n + an.seed_stride - 1) / an.seed_stride;
     for (std::vector<double>& v : an.rms_da_deg) v.assign(an.simulations, 0.0);
     first[a + 1] = first[a] + an.simulations;
   }
@@ -78,7 +74,7 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
         std::upper_bound(first.begin(), first.end(), flat) - first.begin() - 1);
     Analysis& an = analyses[a];
     const std::size_t i = flat - first[a];
-    if (!an.monte_carlo) return Simulation{&an, i, i, an.inertia};
+    if (!an.monte_carlo) return Simulation{&an, i, i * an.seed_stride, an.inertia};
     SimulationRandom random(settings.seed, settings.stream_base, i);  // paired across analyses
     boost::random::uniform_int_distribution<std::size_t> sample(0, n - 1);
     const std::size_t k = sample(random);
@@ -106,44 +102,18 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
     }
   };
 
+  // Chunks of simulations keep the hand-out cheap next to the work (~100 us each).
   constexpr std::size_t kChunk = 64;
-  std::atomic<std::size_t> next{0};
-  std::atomic<std::size_t> done{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  const auto worker = [&] {
-    try {
-      for (;;) {
-        const std::size_t begin = next.fetch_add(kChunk);
-        if (begin >= total) return;
-        const std::size_t end = std::min(total, begin + kChunk);
-        run_range(begin, end);
-        done.fetch_add(end - begin);
-      }
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-      next.store(total);
-    }
-  };
-
-  const unsigned threads = std::max(1u, settings.threads);
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+  const std::size_t chunks = (total + kChunk - 1) / kChunk;
+  ParallelProgress progress;
   if (settings.progress) {
-    // The calling thread reports progress while the workers run, then joins the work.
-    std::thread last(worker);
-    while (done.load() < total && next.load() < total) {
-      settings.progress(done.load(), total);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-    last.join();
-  } else {
-    worker();
+    progress.report = [&](std::size_t done, std::size_t) {
+      settings.progress(std::min(total, done * kChunk), total);
+    };
   }
-  for (std::thread& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
-  if (settings.progress) settings.progress(total, total);
+  parallel_for(
+      chunks, std::max(1u, settings.threads),
+      [&](std::size_t c) { run_range(c * kChunk, std::min(total, (c + 1) * kChunk)); }, progress);
 }
 
 }  // namespace aloft::host

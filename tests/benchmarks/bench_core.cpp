@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <cstdlib>
 #include <boost/numeric/odeint.hpp>
 
 #include "aloft/aloft.hpp"
@@ -17,9 +18,10 @@ template <typename S>
 aloft::InertiaTensor<S> gf_cylinder_tilted() {
   // The study's cylinder with its principal axes a little off the body axes (full tensor).
   aloft::InertiaTensor<S> inertia;
-  aloft::InertiaTensor<S>::make_from_principal(
+  const aloft::Status made = aloft::InertiaTensor<S>::make_from_principal(
       aloft::Vec3<S>(S(0.0183892), S(0.0183892), S(0.0210806)),
       aloft::quat_wxyz(S(0.999), S(0.03), S(-0.02), S(0.01)).normalized(), inertia);
+  if (made != aloft::Status::ok) std::abort();
   return inertia;
 }
 
@@ -36,7 +38,7 @@ void BM_Step(benchmark::State& bench) {
   const Integrator<S> integrator(gf_cylinder_tilted<S>());
   aloft::RigidBodyState<S> state = thrown_state<S>();
   for (auto _ : bench) {
-    integrator.step(state, S(1e-3));
+    benchmark::DoNotOptimize(integrator.step(state, S(1e-3)));
     benchmark::DoNotOptimize(state);
   }
 }
@@ -56,16 +58,18 @@ void BM_OnboardCheckUpdateK8(benchmark::State& bench) {
   std::array<aloft::Vec3<S>, 1000> gyro;
   aloft::RigidBodyState<S> state = thrown_state<S>();
   for (auto& g : gyro) {
-    integrator.step(state, S(1e-3));
+    if (integrator.step(state, S(1e-3)) != aloft::Status::ok) std::abort();
     g = state.omega_body;
   }
   aloft::OnboardCheckSettings<S> settings;
   settings.seed_every = 10;
   aloft::OnboardCheck<S, 8> check(inertia, settings);
-  for (int k = 0; k < 100; ++k) check.update(gyro[std::size_t(k)], S(1e-3));
+  for (int k = 0; k < 100; ++k) {
+    if (check.update(gyro[std::size_t(k)], S(1e-3)) != aloft::Status::ok) std::abort();
+  }
   std::size_t k = 0;
   for (auto _ : bench) {
-    check.update(gyro[k], S(1e-3));
+    benchmark::DoNotOptimize(check.update(gyro[k], S(1e-3)));
     k = (k + 1) % gyro.size();
     benchmark::DoNotOptimize(check);
   }
