@@ -101,7 +101,7 @@ RecordedTrial load_recorded_trial(const RecordingInput& in) {
     const std::string ext = extension_of(in.poses_path);
     PoseTrial poses;
     if (ext == ".mot" || ext == ".sto") {
-      poses = read_mot(in.poses_path);
+      poses = read_mot(in.poses_path, in.pose_naming);
     } else if (ext == ".csv") {
       poses = read_pose_csv(in.poses_path);
     } else {
