@@ -1,5 +1,8 @@
 #include "study/built_in_study.hpp"
 
+#include <string>
+
+#include "common/commands.hpp"
 #include "readers/marker_pose_fit.hpp"
 #include "study/paper_cylinder.hpp"
 #include "study/tangent_spline_resampler.hpp"
@@ -10,7 +13,9 @@ InertiaTensor<double> compound_pendulum_inertia() {
   InertiaTensor<double> cp;
   const Eigen::Vector3d moments(paper::kCompoundPendulumKgM2[0], paper::kCompoundPendulumKgM2[1],
                                 paper::kCompoundPendulumKgM2[2]);
-  InertiaTensor<double>::make_from_principal(moments, Eigen::Quaterniond::Identity(), cp);
+  const Status made =
+      InertiaTensor<double>::make_from_principal(moments, Eigen::Quaterniond::Identity(), cp);
+  if (made != Status::ok) throw Error(std::string("the paper's CP tensor: ") + describe(made));
   return cp;
 }
 

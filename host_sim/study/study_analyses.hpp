@@ -52,6 +52,9 @@ struct RunSettings {
   std::uint64_t seed = 1;
   std::uint64_t stream_base = 0;  // separates the streams of several flights
   unsigned threads = 1;
+  // Simulations several at once in SIMD lanes (study/full_flight_simulation.hpp); false:
+  // one at a time, the scalar path kept for comparison (same numbers within 1e-9 deg).
+  bool simd_lanes = true;
   // Called now and then from the calling thread with (done, total) simulations.
   std::function<void(std::size_t, std::size_t)> progress;
 };

@@ -77,7 +77,8 @@ SyntheticThrow make_synthetic_throw(const SyntheticThrowSettings& settings) {
   for (std::size_t i = 0; i < frames; ++i) {
     if (i > 0) {
       for (int s = 0; s < kSubsteps; ++s) {
-        integrator.step(state, frame_dt / kSubsteps, TimeDirection::forward);
+        const Status stepped = integrator.step(state, frame_dt / kSubsteps, TimeDirection::forward);
+        if (stepped != Status::ok) throw std::logic_error(std::string("built-in throw: ") + describe(stepped));
       }
     }
     const double t = static_cast<double>(i) * frame_dt;
