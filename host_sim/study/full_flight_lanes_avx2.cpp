@@ -1,6 +1,6 @@
 // Compiled with -mavx2 -mfma when the compiler targets x86-64 (host_sim/study/CMakeLists.txt);
-// see full_flight_lanes_avx2.hpp.
-#include "study/full_flight_lanes_avx2.hpp"
+// see full_flight_wide_lanes.hpp.
+#include "study/full_flight_wide_lanes.hpp"
 
 #if defined(__AVX2__) && defined(__FMA__)
 #include "aloft/xsimd_lanes.hpp"

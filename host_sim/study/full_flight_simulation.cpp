@@ -11,7 +11,7 @@
 #include "aloft/rk4_integrator.hpp"
 #include "aloft/xsimd_lanes.hpp"
 #include "common/commands.hpp"
-#include "study/full_flight_lanes_avx2.hpp"
+#include "study/full_flight_wide_lanes.hpp"
 
 namespace aloft::host {
 namespace {
@@ -123,20 +123,23 @@ LaneFlight::LaneFlight(const StudyFlight& flight) {
 }
 
 std::size_t simulation_lanes() {
-  return full_flight_lanes_avx2_supported() ? kFullFlightLanesAvx2
-                                            : std::size_t(LaneTraits<xsimd::batch<double>>::count);
+  if (full_flight_lanes_avx512_supported()) return kFullFlightLanesAvx512;
+  if (full_flight_lanes_avx2_supported()) return kFullFlightLanesAvx2;
+  return std::size_t(LaneTraits<xsimd::batch<double>>::count);
 }
 
 void full_flight_rms_da_deg_lanes(const LaneFlight& flight, const FlightSimulation<double>* sims,
                                   std::size_t count, RmsDaByFrame* out) {
-  constexpr std::size_t kMaxLanes = 8;
+  constexpr std::size_t kMaxLanes = kFullFlightLanesAvx512;
   const std::size_t lanes = simulation_lanes();
   if (count == 0 || count > lanes) throw Error("full_flight_rms_da_deg_lanes: bad count (internal error)");
   // Lanes past `count` repeat the last simulation; their results are dropped.
   FlightSimulation<double> padded[kMaxLanes];
   for (std::size_t l = 0; l < lanes; ++l) padded[l] = sims[std::min(l, count - 1)];
   SquaredDeviations<double> sums[kMaxLanes];
-  if (lanes == kFullFlightLanesAvx2 && full_flight_lanes_avx2_supported()) {
+  if (lanes == kFullFlightLanesAvx512) {
+    run_full_flight_lanes_avx512(flight.arrays(), padded, sums);
+  } else if (lanes == kFullFlightLanesAvx2) {
     run_full_flight_lanes_avx2(flight.arrays(), padded, sums);
   } else {
     run_lanes_baseline(flight.arrays(), padded, sums);

@@ -34,7 +34,8 @@ class LaneFlight {
   FlightArrays<double> arrays_;
 };
 
-// How many simulations run side by side on this machine (4 with AVX2 and FMA, else 2).
+// How many simulations run side by side on this machine: 8 with AVX-512, 4 with AVX2
+// and FMA, else 2 (SSE2).
 std::size_t simulation_lanes();
 
 // RMS DA per frame of sims[0 .. count), count <= simulation_lanes().

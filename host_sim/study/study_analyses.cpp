@@ -7,6 +7,7 @@
 
 #include "common/parallel_for.hpp"
 #include "study/full_flight_simulation.hpp"
+#include "study/full_flight_wide_lanes.hpp"
 #include "study/paper_cylinder.hpp"
 
 namespace aloft::host {
@@ -86,9 +87,9 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
   const auto run_range = [&](std::size_t begin, std::size_t end) {
     for (std::size_t group = begin; group < end; group += lanes) {
       const std::size_t count = std::min(lanes, end - group);
-      Simulation sims[8];
-      FlightSimulation<double> lane_sims[8];
-      RmsDaByFrame rms[8];
+      Simulation sims[kFullFlightLanesAvx512];
+      FlightSimulation<double> lane_sims[kFullFlightLanesAvx512];
+      RmsDaByFrame rms[kFullFlightLanesAvx512];
       for (std::size_t l = 0; l < count; ++l) {
         sims[l] = simulation(group + l);
         lane_sims[l] = flight_simulation(sims[l].inertia, sims[l].seed_sample);

@@ -10,6 +10,7 @@
 
 #include "aloft/aloft.hpp"
 #include "aloft/xsimd_lanes.hpp"
+#include "lanes_flight.hpp"
 
 namespace {
 
@@ -77,7 +78,7 @@ void BM_OnboardCheckUpdateK8(benchmark::State& bench) {
 BENCHMARK_TEMPLATE(BM_OnboardCheckUpdateK8, double);
 BENCHMARK_TEMPLATE(BM_OnboardCheckUpdateK8, float);
 
-constexpr int kFlightSteps = 872;  // 0.872 s at 1 kHz: 873 samples
+using aloft_bench::kFlightSteps;
 
 // aloft as a hot loop uses it: into the principal frame once, 872 steps there, and
 // back into body axes at the end (where Odeint also ends with its state).
@@ -92,26 +93,24 @@ void BM_FullFlight_aloft(benchmark::State& bench) {
 }
 BENCHMARK(BM_FullFlight_aloft);
 
-// The same flight for as many simulations as one SIMD register holds (xsimd, this
-// build's instruction set), each its own tensor: time per flight.
+// The same flight for as many simulations as one SIMD register holds, each its own
+// tensor: time per flight (lanes_flight.hpp). This build's register (xsimd::batch<double>:
+// SSE2, 2 doubles), and AVX2 with FMA (4 doubles) where the CPU has them.
 void BM_FullFlight_aloft_lanes(benchmark::State& bench) {
-  using Lanes = xsimd::batch<double>;
-  constexpr int L = aloft::LaneTraits<Lanes>::count;
   const aloft::Rk4Integrator<double> integrator(gf_cylinder_tilted<double>());
-  const aloft::PrincipalState<double> one = integrator.frame().to_principal(thrown_state<double>());
-  const aloft::EulerCoefficients<double>& c1 = integrator.frame().coefficients();
-  const aloft::EulerCoefficients<Lanes> c{Lanes(c1.c1), Lanes(c1.c2), Lanes(c1.c3)};
-  for (auto _ : bench) {
-    aloft::PrincipalState<Lanes> s{{Lanes(one.q.w), Lanes(one.q.x), Lanes(one.q.y), Lanes(one.q.z)},
-                                   {Lanes(one.w.x), Lanes(one.w.y), Lanes(one.w.z)}};
-    for (int k = 0; k < kFlightSteps; ++k) aloft::principal_rk4_step(c, s, Lanes(1e-3));
-    benchmark::DoNotOptimize(s);
-  }
-  bench.SetItemsProcessed(bench.iterations() * L);
-  bench.counters["lanes"] = L;
-  bench.counters["per_flight_ns"] = benchmark::Counter(
-      static_cast<double>(bench.iterations() * L), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  aloft_bench::full_flight_lanes<xsimd::batch<double>>(
+      bench, integrator.frame().coefficients(), integrator.frame().to_principal(thrown_state<double>()));
 }
+void BM_FullFlight_aloft_lanes_avx2(benchmark::State& bench) {
+  if (!aloft_bench::avx2_fma_supported()) {
+    bench.SkipWithError("this CPU has no AVX2 and FMA");
+    return;
+  }
+  const aloft::Rk4Integrator<double> integrator(gf_cylinder_tilted<double>());
+  aloft_bench::full_flight_lanes_avx2(bench, integrator.frame().coefficients(),
+                                      integrator.frame().to_principal(thrown_state<double>()));
+}
+BENCHMARK(BM_FullFlight_aloft_lanes_avx2);
 BENCHMARK(BM_FullFlight_aloft_lanes);
 
 // The same flight through the body-state API, Rk4Integrator::step_unchecked, which
