@@ -17,9 +17,11 @@
 #include "common/option_checks.hpp"
 #include "study/boxplot_figure.hpp"
 #include "study/built_in_study.hpp"
+#include "study/paper_calibration_report.hpp"
 #include "study/paper_cylinder.hpp"
 #include "study/recorded_flights.hpp"
 #include "study/study_outputs.hpp"
+#include "study/throw_options.hpp"
 
 namespace aloft::host {
 namespace {
@@ -31,6 +33,8 @@ struct StudyOptions {
   unsigned threads = 0;  // 0: every core
   std::string frame = "both";  // body, world or both (study/da_frame.hpp)
   RecordingInput recording;
+  ThrowOptions throw_options;
+  bool calibrate_to_paper = false;
 };
 
 // What the nominal figure of a recording measures, beside `aloft diagnose`'s baseline for
@@ -60,6 +64,16 @@ void check_options(const StudyOptions& o) {
   if (o.frame != "body" && o.frame != "world" && o.frame != "both") {
     throw Error("study: --frame must be body, world or both, not '" + o.frame + "'");
   }
+  if (!r.body_path.empty() && o.throw_options.throw_given()) {
+    throw Error("study: --throw, --spin-*, --duration and --marker-* shape the built-in "
+                "throw; they do not apply to a recording");
+  }
+  if (o.calibrate_to_paper && (!r.body_path.empty() || o.throw_options.searched_given())) {
+    throw Error("study: --calibrate-to-paper searches the built-in throw's spin and marker "
+                "noise; it takes no recording, --throw, --spin-* or --marker-noise");
+  }
+  resolve_throw(o.throw_options);  // refuses bad values before any work
+  resolve_axes_sampler(o.throw_options);
   if (o.frame == "world" && !r.imu_path.empty()) {
     throw Error("study: --frame world needs orientations; an IMU recording has only body rates");
   }
@@ -95,19 +109,13 @@ StudyResult run_study(const StudyOptions& o) {
   InertiaTensor<double> nominal;
   std::vector<Analysis> models;
   if (o.recording.body_path.empty()) {
-    BuiltInTrial trial = make_built_in_trial();
+    BuiltInTrial trial = make_built_in_trial(resolve_throw(o.throw_options));
+    trial.description["preset"] = o.throw_options.preset;
     result.built_in = true;
     result.input = "built-in throw of the paper's cylinder";
     result.trial = trial.description;
     nominal = trial.body.inertia;
-    InertiaTensor<double> cp;
-    const Eigen::Vector3d cp_moments(paper::kCompoundPendulumKgM2[0],
-                                     paper::kCompoundPendulumKgM2[1],
-                                     paper::kCompoundPendulumKgM2[2]);
-    const Status made =
-        InertiaTensor<double>::make_from_principal(cp_moments, Eigen::Quaterniond::Identity(), cp);
-    if (made != Status::ok) throw Error(std::string("the paper's CP tensor: ") + describe(made));
-    models = {model_analysis("GF", nominal), model_analysis("CP", cp)};
+    models = {model_analysis("GF", nominal), model_analysis("CP", compound_pendulum_inertia())};
     result.flights.push_back({std::move(trial.flight), {}});
   } else {
     RecordedTrial trial = load_recorded_trial(o.recording);
@@ -121,11 +129,13 @@ StudyResult run_study(const StudyOptions& o) {
   result.phase_time_s.emplace_back("trial", seconds_since(start));
 
   // The simulations: every flight, models then the 12 Monte Carlo analyses.
+  const AxesSampler sampler = resolve_axes_sampler(o.throw_options);
+  result.axes_sampler = sampler;
   const Clock::time_point simulations_start = Clock::now();
   for (std::size_t i = 0; i < result.flights.size(); ++i) {
     FlightStudy& fs = result.flights[i];
     fs.analyses = models;
-    for (Analysis& a : paper_monte_carlo_analyses(o.mc_samples)) fs.analyses.push_back(a);
+    for (Analysis& a : paper_monte_carlo_analyses(o.mc_samples, sampler)) fs.analyses.push_back(a);
     RunSettings run;
     run.seed = o.seed;
     run.stream_base = 64 * i;
@@ -145,8 +155,10 @@ void write_outputs(const std::string& dir, const std::vector<std::pair<std::stri
   }
   std::vector<std::string> written;
   try {
-    for (const auto& [name, content] : files) {
-      const std::string path = (std::filesystem::path(dir) / name).string();
+    for (const auto& file : files) {
+      // Not a structured binding: a lambda capturing one is C++20, and clang refuses it.
+      const std::string& content = file.second;
+      const std::string path = (std::filesystem::path(dir) / file.first).string();
       write_file_atomically(path, [&](std::ostream& out) { out << content; });
       written.push_back(path);
     }
@@ -157,8 +169,38 @@ void write_outputs(const std::string& dir, const std::vector<std::pair<std::stri
   }
 }
 
+// "study: calibrate: grid 120 / 1120" now and then on stderr: the search takes minutes.
+std::function<void(const std::string&, std::size_t, std::size_t)> calibration_progress() {
+  const bool terminal = ::isatty(STDERR_FILENO);
+  return [terminal](const std::string& phase, std::size_t done, std::size_t total) {
+    if (terminal) {
+      std::fprintf(stderr, "\rstudy: calibrate: %s %zu / %zu\033[K", phase.c_str(), done, total);
+    } else if (done == total || done % 100 == 0) {
+      std::fprintf(stderr, "study: calibrate: %s %zu / %zu\n", phase.c_str(), done, total);
+    }
+    std::fflush(stderr);
+  };
+}
+
+void calibrate(const StudyOptions& o) {
+  CalibrationSettings s;
+  s.base = resolve_throw(o.throw_options);
+  s.sampler = resolve_axes_sampler(o.throw_options);
+  s.mc_samples = o.mc_samples;
+  s.seed = o.seed;
+  s.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  s.progress = calibration_progress();
+  const CalibrationResult result = calibrate_to_paper(s, frames_to_report(o));
+  if (::isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
+  write_outputs(o.out_dir, {{"calibration.json", calibration_json(result, s).dump(2) + "\n"}});
+  std::fputs(calibration_table(result).c_str(), stdout);
+  std::printf("wall time %.1f s on %u thread%s; wrote %s/calibration.json\n", result.wall_time_s,
+              s.threads, s.threads == 1 ? "" : "s", o.out_dir.c_str());
+}
+
 void study(const StudyOptions& o) {
   check_options(o);
+  if (o.calibrate_to_paper) return calibrate(o);
   const Clock::time_point start = Clock::now();
   StudyResult result = run_study(o);
 
@@ -216,6 +258,11 @@ void add_study_command(CLI::App& app) {
   cmd->add_option("--poses", options->recording.poses_path, "poses (.mot, .sto, pose .csv)");
   cmd->add_option("--imu", options->recording.imu_path, "IMU log (plain or phyphox .csv)");
   cmd->add_option("--segments", options->recording.segments_path, "flights within the IMU log");
+  add_throw_options(*cmd, options->throw_options);
+  cmd->add_flag("--calibrate-to-paper", options->calibrate_to_paper,
+                "search the throw (spin rate, axis, marker noise) that matches the paper's GF "
+                "and CP rows, per frame, and predict its Monte Carlo rows (README); writes "
+                "calibration.json");
   cmd->callback([options] { study(*options); });
 }
 

@@ -9,6 +9,7 @@
 #include <boost/numeric/odeint.hpp>
 
 #include "aloft/aloft.hpp"
+#include "aloft/xsimd_lanes.hpp"
 
 namespace {
 
@@ -90,6 +91,28 @@ void BM_FullFlight_aloft(benchmark::State& bench) {
   }
 }
 BENCHMARK(BM_FullFlight_aloft);
+
+// The same flight for as many simulations as one SIMD register holds (xsimd, this
+// build's instruction set), each its own tensor: time per flight.
+void BM_FullFlight_aloft_lanes(benchmark::State& bench) {
+  using Lanes = xsimd::batch<double>;
+  constexpr int L = aloft::LaneTraits<Lanes>::count;
+  const aloft::Rk4Integrator<double> integrator(gf_cylinder_tilted<double>());
+  const aloft::PrincipalState<double> one = integrator.frame().to_principal(thrown_state<double>());
+  const aloft::EulerCoefficients<double>& c1 = integrator.frame().coefficients();
+  const aloft::EulerCoefficients<Lanes> c{Lanes(c1.c1), Lanes(c1.c2), Lanes(c1.c3)};
+  for (auto _ : bench) {
+    aloft::PrincipalState<Lanes> s{{Lanes(one.q.w), Lanes(one.q.x), Lanes(one.q.y), Lanes(one.q.z)},
+                                   {Lanes(one.w.x), Lanes(one.w.y), Lanes(one.w.z)}};
+    for (int k = 0; k < kFlightSteps; ++k) aloft::principal_rk4_step(c, s, Lanes(1e-3));
+    benchmark::DoNotOptimize(s);
+  }
+  bench.SetItemsProcessed(bench.iterations() * L);
+  bench.counters["lanes"] = L;
+  bench.counters["per_flight_ns"] = benchmark::Counter(
+      static_cast<double>(bench.iterations() * L), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_FullFlight_aloft_lanes);
 
 // The same flight through the body-state API, Rk4Integrator::step_unchecked, which
 // crosses the principal frame at every step.
