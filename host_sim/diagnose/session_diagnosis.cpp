@@ -7,11 +7,10 @@
 // by a fit that saw it.
 #include <algorithm>
 #include <cctype>
-#include <atomic>
 #include <cmath>
 #include <optional>
-#include <thread>
 
+#include "common/parallel_for.hpp"
 #include "diagnose/candidate_ranking.hpp"
 #include "diagnose/diagnosis.hpp"
 #include "diagnose/held_out.hpp"
@@ -21,19 +20,6 @@ namespace aloft::host::diagnose {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-
-// Runs body(i) for i in [0, count) on up to `threads` threads.
-template <typename Body>
-void parallel_for(std::size_t count, int threads, Body body) {
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i = next++; i < count; i = next++) body(i);
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads && static_cast<std::size_t>(t) < count; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-}
 
 struct PooledData {
   std::vector<const Flight*> flights;
@@ -140,7 +126,7 @@ void judge_leaving_flights_out(Candidate& c, const NominalInertia& nominal, cons
   c.heldout_readings.assign(count, {});
   std::vector<GapSums> sums(count);
   c.heldout_theta = leave_one_flight_out(c.fit, nominal, pool.all);
-  parallel_for(count, threads, [&](std::size_t j) {
+  parallel_for(count, static_cast<unsigned>(std::max(threads, 1)), [&](std::size_t j) {
     EffectFit others = c.fit;
     others.theta = c.heldout_theta[j];
     const Flight& flight = *pool.flights[j];
@@ -242,7 +228,8 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
                                   int threads) {
   SessionDiagnosis session;
   session.flights.resize(flights.size());
-  parallel_for(flights.size(), threads,
+  const unsigned workers = static_cast<unsigned>(std::max(threads, 1));
+  parallel_for(flights.size(), workers,
                [&](std::size_t i) { session.flights[i] = diagnose_flight(flights[i], nominal); });
 
   // Only flights that could be judged on their own take part in the pooled analysis.

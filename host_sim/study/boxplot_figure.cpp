@@ -159,8 +159,8 @@ std::vector<Panel> build_panels(const StudyResult& result, DaFrame frame, double
     const char* title;
     const char* x_label;
   } families[] = {{PerturbationFamily::moments, "B1", "bound on principal moments (\u00b1%)"},
-                  {PerturbationFamily::axes, "B2", "bound on principal axes (\u00b1deg)"},
-                  {PerturbationFamily::both, "B3", "bound on moments (\u00b1%) and axes (\u00b1deg)"}};
+                  {PerturbationFamily::axes, "B2", "bound on principal axes (\u00b1\u00b0)"},
+                  {PerturbationFamily::both, "B3", "bound on moments (\u00b1%) and axes (\u00b1\u00b0)"}};
   for (const auto& fam : families) {
     Panel p;
     p.title = fam.title;

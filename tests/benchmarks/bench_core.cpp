@@ -5,9 +5,11 @@
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <cstdlib>
 #include <boost/numeric/odeint.hpp>
 
 #include "aloft/aloft.hpp"
+#include "aloft/xsimd_lanes.hpp"
 
 namespace {
 
@@ -15,9 +17,10 @@ template <typename S>
 aloft::InertiaTensor<S> gf_cylinder_tilted() {
   // The study's cylinder with its principal axes a little off the body axes (full tensor).
   aloft::InertiaTensor<S> inertia;
-  aloft::InertiaTensor<S>::make_from_principal(
+  const aloft::Status made = aloft::InertiaTensor<S>::make_from_principal(
       aloft::Vec3<S>(S(0.0183892), S(0.0183892), S(0.0210806)),
       aloft::quat_wxyz(S(0.999), S(0.03), S(-0.02), S(0.01)).normalized(), inertia);
+  if (made != aloft::Status::ok) std::abort();
   return inertia;
 }
 
@@ -34,7 +37,7 @@ void BM_Step(benchmark::State& bench) {
   const Integrator<S> integrator(gf_cylinder_tilted<S>());
   aloft::RigidBodyState<S> state = thrown_state<S>();
   for (auto _ : bench) {
-    integrator.step(state, S(1e-3));
+    benchmark::DoNotOptimize(integrator.step(state, S(1e-3)));
     benchmark::DoNotOptimize(state);
   }
 }
@@ -54,16 +57,18 @@ void BM_OnboardCheckUpdateK8(benchmark::State& bench) {
   std::array<aloft::Vec3<S>, 1000> gyro;
   aloft::RigidBodyState<S> state = thrown_state<S>();
   for (auto& g : gyro) {
-    integrator.step(state, S(1e-3));
+    if (integrator.step(state, S(1e-3)) != aloft::Status::ok) std::abort();
     g = state.omega_body;
   }
   aloft::OnboardCheckSettings<S> settings;
   settings.seed_every = 10;
   aloft::OnboardCheck<S, 8> check(inertia, settings);
-  for (int k = 0; k < 100; ++k) check.update(gyro[std::size_t(k)], S(1e-3));
+  for (int k = 0; k < 100; ++k) {
+    if (check.update(gyro[std::size_t(k)], S(1e-3)) != aloft::Status::ok) std::abort();
+  }
   std::size_t k = 0;
   for (auto _ : bench) {
-    check.update(gyro[k], S(1e-3));
+    benchmark::DoNotOptimize(check.update(gyro[k], S(1e-3)));
     k = (k + 1) % gyro.size();
     benchmark::DoNotOptimize(check);
   }
@@ -86,6 +91,28 @@ void BM_FullFlight_aloft(benchmark::State& bench) {
   }
 }
 BENCHMARK(BM_FullFlight_aloft);
+
+// The same flight for as many simulations as one SIMD register holds (xsimd, this
+// build's instruction set), each its own tensor: time per flight.
+void BM_FullFlight_aloft_lanes(benchmark::State& bench) {
+  using Lanes = xsimd::batch<double>;
+  constexpr int L = aloft::LaneTraits<Lanes>::count;
+  const aloft::Rk4Integrator<double> integrator(gf_cylinder_tilted<double>());
+  const aloft::PrincipalState<double> one = integrator.frame().to_principal(thrown_state<double>());
+  const aloft::EulerCoefficients<double>& c1 = integrator.frame().coefficients();
+  const aloft::EulerCoefficients<Lanes> c{Lanes(c1.c1), Lanes(c1.c2), Lanes(c1.c3)};
+  for (auto _ : bench) {
+    aloft::PrincipalState<Lanes> s{{Lanes(one.q.w), Lanes(one.q.x), Lanes(one.q.y), Lanes(one.q.z)},
+                                   {Lanes(one.w.x), Lanes(one.w.y), Lanes(one.w.z)}};
+    for (int k = 0; k < kFlightSteps; ++k) aloft::principal_rk4_step(c, s, Lanes(1e-3));
+    benchmark::DoNotOptimize(s);
+  }
+  bench.SetItemsProcessed(bench.iterations() * L);
+  bench.counters["lanes"] = L;
+  bench.counters["per_flight_ns"] = benchmark::Counter(
+      static_cast<double>(bench.iterations() * L), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_FullFlight_aloft_lanes);
 
 // The same flight through the body-state API, Rk4Integrator::step_unchecked, which
 // crosses the principal frame at every step.

@@ -48,7 +48,7 @@ TEST_CASE("250 Hz poses of the torque-free throw resampled to 1 kHz follow the t
   // The truth at 1 kHz, integrated finely.
   const aloft::Rk4Integrator<double> integrator(truth.body.inertia);
   aloft::RigidBodyState<double> s{settings.initial_orientation.normalized(),
-                                  settings.initial_omega_body_rad_s};
+                                  settings.initial_omega_body_rad_s()};
   double worst_angle = 0.0, worst_rate = 0.0;
   for (std::size_t i = 0; i < r.time_s.size(); ++i) {
     if (i > 0) {
