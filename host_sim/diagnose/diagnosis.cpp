@@ -5,6 +5,7 @@
 
 #include "diagnose/candidate_ranking.hpp"
 #include "diagnose/held_out.hpp"
+#include "diagnose/plausibility.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -152,8 +153,10 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
     analysis.candidates.push_back(std::move(c));
   }
 
+  rule_out_senseless(analysis.candidates);
   rank_candidates(analysis, flight.gyro_input, {&flight}, {inverse_sigma}, mean_speed(flight),
                   d.end_s - d.start_s);
+  attach_flight_tensor_report(analysis, flight, nominal);
 
   // Onset: for an impulse, the fitted time; otherwise when the nominal motion fitted to
   // the first fifth of the flight stops explaining the data. None when the verdict is none.
