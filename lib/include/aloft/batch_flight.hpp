@@ -158,9 +158,9 @@ class BatchFlight {
         h[l] = forward ? dt : -dt;
         // Pose flights compare interval j; rate flights the sample stepped to.
         const std::size_t m = pose ? j : (forward ? j + 1 : j);
-        for (int a = 0; a < 3; ++a) mb[a][l] = f_.measured_body[3 * m + a];
+        for (int a = 0; a < 3; ++a) mb[a][l] = f_.measured_body[3 * m + static_cast<std::size_t>(a)];
         if (world) {
-          for (int a = 0; a < 3; ++a) mw[a][l] = f_.measured_world[3 * m + a];
+          for (int a = 0; a < 3; ++a) mw[a][l] = f_.measured_world[3 * m + static_cast<std::size_t>(a)];
         }
       }
       const T step = load(h);
