@@ -24,7 +24,7 @@ TEST_CASE("the resampler reproduces a constant body rate exactly, on uneven knot
 }
 
 TEST_CASE("the right Jacobian and its inverse are inverses, also near zero") {
-  for (const Eigen::Vector3d p : {Eigen::Vector3d(0.3, -1.2, 0.7), Eigen::Vector3d(1e-5, 2e-5, 0.0),
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0.3, -1.2, 0.7), Eigen::Vector3d(1e-5, 2e-5, 0.0),
                                   Eigen::Vector3d(2.5, 0.1, 0.0)}) {
     const Eigen::Matrix3d product = so3_right_jacobian(p) * so3_right_jacobian_inverse(p);
     CHECK((product - Eigen::Matrix3d::Identity()).norm() < 1e-12);
