@@ -25,6 +25,68 @@ json invariant_json(const InvariantBehaviour& b) {
           {"behaviour", b.behaviour}};
 }
 
+// The whole final model's parameters: each effect's keys (SPEC keys never collide
+// between effects that can share a model).
+json model_params_json(const Verdict& v) {
+  json out = json::object();
+  for (const VerdictEffect& e : v.effects) {
+    const json params = params_json(e.effect, e.params);
+    for (auto it = params.begin(); it != params.end(); ++it) {
+      if (!out.contains(it.key())) out[it.key()] = it.value();
+    }
+  }
+  return out;
+}
+
+json verdict_effects_json(const Verdict& v) {
+  json out = json::array();
+  for (const VerdictEffect& e : v.effects) {
+    out.push_back({{"effect", effect_name(e.effect)},
+                   {"equivalent", names(e.equivalent)},
+                   {"params", params_json(e.effect, e.params)},
+                   {"heldout_rms_rel_err_after", e.heldout_rms_rel_err_after},
+                   {"heldout_rms_da_after_deg", e.heldout_rms_da_after_deg},
+                   {"shrink", e.shrink},
+                   {"step", e.step},
+                   {"step_shrink", e.step_shrink}});
+  }
+  return out;
+}
+
+// Each step of the stepwise selection: the model it started from, what joined (null:
+// nothing did, the selection stopped), the held-out gap before and after, and the
+// candidate additions it weighed.
+json steps_json(const Analysis& a) {
+  json out = json::array();
+  for (std::size_t i = 0; i < a.steps.size(); ++i) {
+    const ModelStep& s = a.steps[i];
+    const std::vector<Candidate>& candidates = i == 0 ? a.candidates : s.candidates;
+    json step = {{"model", names(s.model)},
+                 {"added", s.added >= 0 ? json(effect_name(candidates[static_cast<std::size_t>(s.added)].effect))
+                                        : json(nullptr)},
+                 {"equivalent", names(s.equivalent)},
+                 {"heldout_rms_rel_err_before", s.heldout_rms_rel_err_before},
+                 {"heldout_rms_rel_err_after", s.heldout_rms_rel_err_after},
+                 {"heldout_rms_da_before_deg", s.heldout_rms_da_before_deg},
+                 {"heldout_rms_da_after_deg", s.heldout_rms_da_after_deg},
+                 {"shrink", s.shrink}};
+    if (i > 0) {
+      json tried = json::array();
+      for (const Candidate& c : s.candidates) {
+        if (c.reference || !c.evaluated) continue;
+        tried.push_back({{"effect", effect_name(c.effect)},
+                         {"heldout_rms_rel_err", c.heldout_rms_rel_err},
+                         {"shrink", c.shrink},
+                         {"score", c.score},
+                         {"physical", c.physical}});
+      }
+      step["candidates"] = tried;
+    }
+    out.push_back(step);
+  }
+  return out;
+}
+
 json analysis_json(const Analysis& a) {
   json out;
   out["baseline"] = {{"rms_da_deg", a.baseline.rms_da_deg}, {"rms_rel_err", a.baseline.rms_rel_err}};
@@ -77,15 +139,16 @@ json analysis_json(const Analysis& a) {
   json verdict;
   verdict["effect"] = effect_name(v.effect);
   verdict["equivalent"] = names(v.equivalent);
-  verdict["params"] = v.chosen >= 0
-                          ? params_json(v.effect, a.candidates[static_cast<std::size_t>(v.chosen)].params)
-                          : json::object();
+  verdict["params"] = model_params_json(v);
   verdict["heldout_rms_da_before_deg"] = v.heldout_rms_da_before_deg;
   verdict["heldout_rms_da_after_deg"] = v.heldout_rms_da_after_deg;
   verdict["heldout_rms_rel_err_before"] = v.heldout_rms_rel_err_before;
   verdict["heldout_rms_rel_err_after"] = v.heldout_rms_rel_err_after;
   verdict["confident"] = v.confident;
   verdict["could_not_judge"] = v.could_not_judge;
+  verdict["effects"] = verdict_effects_json(v);
+  verdict["shrink"] = v.heldout_rms_rel_err_before > 0 ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before : 0.0;
+  verdict["steps"] = steps_json(a);
   out["verdict"] = verdict;
   out["unexplained_dispersion"] = a.dispersion;
   if (!a.notes.empty()) out["notes"] = a.notes;
@@ -139,12 +202,16 @@ std::string analysis_summary(const Analysis& a) {
     for (std::size_t i = 1; i < v.equivalent.size(); ++i) out << " " << effect_name(v.equivalent[i]);
     out << ")";
   }
-  if (v.chosen >= 0 && v.effect != Effect::none) {
-    const Candidate& c = a.candidates[static_cast<std::size_t>(v.chosen)];
-    out << ": " << params_text(v.effect, c.params) << "\n";
+  if (!v.effects.empty()) {
+    out << ": " << params_text(v.effects.front().effect, v.effects.front().params) << "\n";
+    for (std::size_t i = 1; i < v.effects.size(); ++i) {
+      out << "  and " << effect_name(v.effects[i].effect) << ": " << params_text(v.effects[i].effect, v.effects[i].params)
+          << fmt(" (the model without it: held-out error %.0f %% larger)", 100.0 * (1.0 / std::max(1e-9, 1.0 - v.effects[i].shrink) - 1.0))
+          << "\n";
+    }
     out << fmt("  held out: RMS DA %.3f -> %.3f deg, relative error %.4f -> %.4f", v.heldout_rms_da_before_deg,
                v.heldout_rms_da_after_deg, v.heldout_rms_rel_err_before, v.heldout_rms_rel_err_after)
-        << fmt(" (shrink %.0f %%)", 100.0 * c.shrink) << "\n";
+        << fmt(" (shrink %.0f %%)", 100.0 * (v.heldout_rms_rel_err_before > 0 ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before : 0.0)) << "\n";
   } else {
     out << fmt(": the held-out gap (RMS DA %.3f deg) is what the noise explains", v.heldout_rms_da_before_deg) << "\n";
   }
