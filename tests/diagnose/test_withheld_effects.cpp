@@ -96,8 +96,10 @@ TEST_CASE("withheld effects: right class in >= 90 %, none for noise, parameters 
       noise_right += ok;
     }
     parameter_failures += !problem.empty() && identifiable;
-    std::printf("%-32s %-20s -> %-20s %s %s\n", c.name.c_str(), g.truth.effect.c_str(), verdict.c_str(),
-                ok ? "ok   " : "WRONG", problem.c_str());
+    std::string all_effects;
+    for (const VerdictEffect& e : v.effects) all_effects += std::string(" ") + effect_name(e.effect);
+    std::printf("%-32s %-20s -> %-20s %s %s [%s ] %s\n", c.name.c_str(), g.truth.effect.c_str(), verdict.c_str(),
+                ok ? "ok   " : "WRONG", problem.c_str(), all_effects.c_str(), v.confident ? "confident" : "");
     if (!ok || !problem.empty()) {  // the ranking behind a miss, to see why
       std::printf("    body %s, %zu samples, noise %.4f\n", g.truth.body.c_str(), flight.size(), d.noise.sigma.mean());
       for (const Candidate& k : d.analysis.candidates) {
