@@ -1,14 +1,17 @@
 // aloft: the host program. Each command lives in its own folder and registers itself
-// here; main only dispatches and turns an escaped error into one line and exit code 2.
+// here; main only dispatches, and keeps the command line's contract: a refused command
+// line or a failed command is one line on stderr and exit code 2.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <exception>
 
 #include "common/commands.hpp"
+#include "common/usage_error.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"aloft: validate a rigid body's inertia tensor by throwing it"};
+  CLI::App app{"aloft: validate a rigid body's inertia tensor by throwing it", "aloft"};
+  app.set_version_flag("--version", "aloft " ALOFT_VERSION);
   app.require_subcommand(1);
   aloft::host::add_simulate_command(app);
   aloft::host::add_study_command(app);
@@ -16,8 +19,11 @@ int main(int argc, char** argv) {
   aloft::host::add_diagnose_command(app);
   try {
     app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
+  } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "%s\n", aloft::host::usage_error_line(app, e).c_str());
+    return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "aloft: %s\n", e.what());
     return 2;

@@ -11,6 +11,7 @@
 #include "common/atomic_file.hpp"
 #include "common/body_file.hpp"
 #include "common/commands.hpp"
+#include "common/option_checks.hpp"
 #include "diagnose/diagnosis.hpp"
 #include "diagnose/flight_input.hpp"
 #include "diagnose/gap_plot.hpp"
@@ -128,8 +129,9 @@ void add_diagnose_command(CLI::App& app) {
   cmd->add_option("--window", options->window, "A:B, the flight inside the IMU log (seconds)");
   cmd->add_option("--markers", options->markers, "marker trajectories (.trc or .c3d)");
   cmd->add_option("--poses", options->poses, "poses (.mot, .sto or pose CSV)");
-  cmd->add_option("--json", options->json, "write the JSON report here");
-  cmd->add_option("--plot", options->plot, "write DA, relative error and invariant plots (SVG, PNG) here");
+  cmd->add_option("--json", options->json, "write the JSON report here")->check(output_file());
+  cmd->add_option("--plot", options->plot, "write DA, relative error and invariant plots (SVG, PNG) here")
+      ->check(output_folder());
   cmd->add_option("--threads", options->threads, "threads for a session (default 2)")
       ->check(CLI::Range(1, 64));
   cmd->callback([options] { run_diagnose(*options); });

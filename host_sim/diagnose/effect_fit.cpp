@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "diagnose/initial_state_fit.hpp"
 #include "diagnose/levenberg_marquardt.hpp"
 
 namespace aloft::host::diagnose {
@@ -126,11 +127,18 @@ EffectFit result_of(const Setup& setup, const LeastSquaresResult& solution, int 
   return fit;
 }
 
-std::vector<Eigen::VectorXd> starting_rates(const Setup& setup, const EffectFit* nominal_fit) {
+// Each flight's starting rate: the guess of starting_rate, refined with `theta` held by
+// the separatrix-safe initial-state fit (initial_state_fit.hpp). The rotor of internal
+// damping has no neutral theta, so its flights start from the rigid body's rates.
+std::vector<Eigen::VectorXd> starting_rates(const Setup& setup, const EffectFit* nominal_fit,
+                                            const Eigen::VectorXd& theta) {
+  const bool rigid = setup.effect == Effect::internal_damping;
+  const EffectModel model{rigid ? Effect::none : setup.effect, *setup.nominal, setup.impulse_time_s, setup.base};
+  const Eigen::VectorXd held = rigid ? Eigen::VectorXd(theta.head(model_parameter_count(model))) : theta;
   std::vector<Eigen::VectorXd> rates;
   for (std::size_t i = 0; i < setup.data->size(); ++i) {
-    rates.emplace_back(starting_rate((*setup.data)[i], setup.refs[i], nominal_fit, i,
-                                     *setup.nominal));
+    const Vec3 guess = starting_rate((*setup.data)[i], setup.refs[i], nominal_fit, i, *setup.nominal);
+    rates.emplace_back(fit_initial_state(model, (*setup.data)[i], setup.refs[i], held, &guess).omega_ref);
   }
   return rates;
 }
@@ -215,10 +223,10 @@ std::vector<std::size_t> scan_impulse_times(const Setup& setup, const std::vecto
 
 EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
   const Flight& flight = *(*setup.data)[0].flight;
-  const std::vector<Eigen::VectorXd> rates = starting_rates(setup, nominal_fit);
   const int p = static_cast<int>(setup.base_theta.size()) + 3;
   Eigen::VectorXd zero = Eigen::VectorXd::Zero(p);
   zero.head(setup.base_theta.size()) = setup.base_theta;
+  const std::vector<Eigen::VectorXd> rates = starting_rates(setup, nominal_fit, zero);
   LeastSquaresOptions quick;
   quick.max_iterations = 10;
   const std::size_t n = flight.size();
@@ -297,11 +305,10 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal,
   }
   const int p = effect_parameter_count(effect);
   const ArrowProblem problem = problem_of(setup, p);
-  const std::vector<Eigen::VectorXd> rates = starting_rates(setup, nominal_fit);
-  Eigen::VectorXd theta = Eigen::VectorXd::Zero(p);
-  if (theta_start != nullptr && theta_start->size() == p) {
-    theta = *theta_start;
-  } else if (effect == Effect::internal_damping) {
+  const bool seeded = theta_start != nullptr && theta_start->size() == p;
+  Eigen::VectorXd theta = seeded ? *theta_start : Eigen::VectorXd::Zero(p);
+  const std::vector<Eigen::VectorXd> rates = starting_rates(setup, nominal_fit, theta);
+  if (!seeded && effect == Effect::internal_damping) {
     // The rotor's size and coupling enter non-linearly, and "no rotor" is a limit, not a
     // point: start from the best of a small grid of plausible rotors, each given a few
     // iterations with the initial rate free (a tumbling flight's nominal fit can be far
@@ -387,7 +394,7 @@ EffectFit fit_initial_rates(const EffectFit& fixed, const NominalInertia& nomina
     problem.residuals(block, theta, local, r);
   };
   const LeastSquaresResult solution =
-      minimise(held, Eigen::VectorXd(), starting_rates(setup, nominal_fit));
+      minimise(held, Eigen::VectorXd(), starting_rates(setup, nominal_fit, theta));
   EffectFit fit = result_of(setup, solution, 0);
   fit.theta = theta;
   fit.theta_standard_error = fixed.theta_standard_error;

@@ -1,7 +1,7 @@
 // `aloft simulate` (SPEC §5): one torque-free flight from a given initial state,
 // written as CSV t,qw,qx,qy,qz,wx,wy,wz (omega in body axes), one row per sample.
+#include <charconv>
 #include <cstdio>
-#include <iomanip>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -10,6 +10,7 @@
 #include "common/atomic_file.hpp"
 #include "common/body_file.hpp"
 #include "common/commands.hpp"
+#include "common/option_checks.hpp"
 #include "simulate/trajectory.hpp"
 
 namespace aloft::host {
@@ -34,6 +35,15 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count,
                 std::to_string(values.size()));
   }
   return values;
+}
+
+// The shortest text that reads back as the same number, so 0.005 is written "0.005", not
+// "0.0050000000000000001"; a single-precision result is written at float's precision.
+template <typename Number>
+std::string shortest(Number value) {
+  char text[32];
+  const auto [end, error] = std::to_chars(text, text + sizeof(text), value);
+  return std::string(text, error == std::errc() ? end : text);
 }
 
 struct SimulateOptions {
@@ -64,12 +74,18 @@ void run_simulate(const SimulateOptions& o) {
   request.precision = o.single_precision ? Precision::single_precision : Precision::double_precision;
   const std::vector<TrajectorySample> samples = simulate_trajectory(body.inertia, request);
   write_file_atomically(o.out_path, [&](std::ostream& out) {
-    out << "t,qw,qx,qy,qz,wx,wy,wz\n" << std::setprecision(17);
+    out << "t,qw,qx,qy,qz,wx,wy,wz\n";
+    const auto state_cell = [&](double v) {
+      return o.single_precision ? shortest(static_cast<float>(v)) : shortest(v);
+    };
     for (const TrajectorySample& s : samples) {
       const auto& r = s.state.orientation;
       const auto& v = s.state.omega_body;
-      out << s.t_s << ',' << r.w() << ',' << r.x() << ',' << r.y() << ',' << r.z() << ','
-          << v.x() << ',' << v.y() << ',' << v.z() << '\n';
+      out << shortest(s.t_s);
+      for (const double cell : {r.w(), r.x(), r.y(), r.z(), v.x(), v.y(), v.z()}) {
+        out << ',' << state_cell(cell);
+      }
+      out << '\n';
     }
   });
   std::fprintf(stderr, "aloft simulate: %zu samples written to %s\n", samples.size(),
@@ -91,9 +107,10 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--rate", options->rate_hz, "output sample rate, Hz (internal steps <= 1 ms)")
       ->required();
   cmd->add_option("--integrator", options->integrator, "rk4 or splitting (4th-order Lie splitting)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::IsMember({"rk4", "splitting"}));
   cmd->add_flag("--float", options->single_precision, "integrate in single precision");
-  cmd->add_option("--out", options->out_path, "output CSV")->required();
+  cmd->add_option("--out", options->out_path, "output CSV")->required()->check(output_file());
   cmd->callback([options] { run_simulate(*options); });
 }
 

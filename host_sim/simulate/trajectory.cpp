@@ -40,7 +40,9 @@ std::vector<TrajectorySample> run(const Integrator& integrator, const Trajectory
     RigidBodyState<double> sample;
     sample.orientation = state.orientation.template cast<double>();
     sample.omega_body = state.omega_body.template cast<double>();
-    out.push_back({double(k) * dt, sample});
+    // k / rate, not k * dt: the time is then the double nearest the exact instant
+    // (3 / 200 is 0.015; 3 * 0.005 is 0.015000000000000001).
+    out.push_back({double(k) / request.rate_hz, sample});
   }
   return out;
 }

@@ -16,9 +16,10 @@ namespace aloft::host {
 namespace {
 
 constexpr double kWidth = 1260.0;
-constexpr double kHeight = 520.0;
-constexpr double kTop = 70.0;
-constexpr double kBottom = 440.0;  // y of the horizontal axis
+constexpr double kRowHeight = 470.0;  // one row of panels per frame
+constexpr double kTitleHeight = 40.0;
+constexpr double kRowTop = 40.0;      // plot area top, below the row's panel titles
+constexpr double kRowBottom = 400.0;  // y of the horizontal axis within a row
 
 struct Box {
   std::string label;
@@ -28,15 +29,22 @@ struct Box {
 
 struct Panel {
   std::string title;
+  double top = 0.0, bottom = 0.0;  // plot area
   std::string x_label;
   double left = 0.0, width = 0.0;
   double y_max = 1.0;
   std::vector<Box> boxes;
 };
 
+// Grid step of a DA axis: 1, 2 or 5 degrees, about 5 to 10 gridlines.
+double tick_step(double v) { return v > 20.0 ? 5.0 : (v > 8.0 ? 2.0 : 1.0); }
+
+// The top of a DA axis (which starts at 0): 10 % above v, on a whole number of steps of
+// the axis' own grid, so that the axis ends on a labelled tick.
 double nice_ceiling(double v) {
-  const double step = v > 20.0 ? 5.0 : (v > 8.0 ? 2.0 : 1.0);
-  return std::max(step, std::ceil(v * 1.1 / step) * step);
+  double top = std::max(1.0, std::ceil(v * 1.1));
+  while (std::fmod(top, tick_step(top)) != 0.0) top += 1.0;
+  return top;
 }
 
 void text(cairo_t* cr, double x, double y, const std::string& s, double size, double align_x,
@@ -57,10 +65,11 @@ void line(cairo_t* cr, double x0, double y0, double x1, double y1) {
 }
 
 void draw_panel(cairo_t* cr, const Panel& p, bool y_title) {
-  const auto y_of = [&](double v) { return kBottom - (kBottom - kTop) * v / p.y_max; };
+  const double top = p.top, bottom = p.bottom;
+  const auto y_of = [&](double v) { return bottom - (bottom - top) * v / p.y_max; };
   // Axes and grid.
   cairo_set_line_width(cr, 1.0);
-  const double step = p.y_max > 20.0 ? 5.0 : (p.y_max > 8.0 ? 2.0 : 1.0);
+  const double step = tick_step(p.y_max);
   for (double v = 0.0; v <= p.y_max + 1e-9; v += step) {
     cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
     line(cr, p.left, y_of(v), p.left + p.width, y_of(v));
@@ -71,20 +80,20 @@ void draw_panel(cairo_t* cr, const Panel& p, bool y_title) {
     text(cr, p.left - 7.0, y_of(v) + 4.0, label, 11.0, 1.0);
   }
   cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
-  line(cr, p.left, kTop, p.left, kBottom);
-  line(cr, p.left, kBottom, p.left + p.width, kBottom);
-  text(cr, p.left, kTop - 14.0, p.title, 15.0, 0.0, true);
-  text(cr, p.left + p.width / 2.0, kBottom + 42.0, p.x_label, 12.0, 0.5);
+  line(cr, p.left, top, p.left, bottom);
+  line(cr, p.left, bottom, p.left + p.width, bottom);
+  text(cr, p.left, top - 14.0, p.title, 15.0, 0.0, true);
+  text(cr, p.left + p.width / 2.0, bottom + 42.0, p.x_label, 12.0, 0.5);
   if (y_title) {
     cairo_save(cr);
-    cairo_move_to(cr, p.left - 40.0, (kTop + kBottom) / 2.0);
+    cairo_move_to(cr, p.left - 40.0, (top + bottom) / 2.0);
     cairo_rotate(cr, -M_PI / 2.0);
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, 12.0);
     cairo_text_extents_t e;
-    cairo_text_extents(cr, "RMS DA (deg)", &e);
+    cairo_text_extents(cr, "RMS DA of \u03c9 (\u00b0)", &e);
     cairo_rel_move_to(cr, -e.x_advance / 2.0, 0.0);
-    cairo_show_text(cr, "RMS DA (deg)");
+    cairo_show_text(cr, "RMS DA of \u03c9 (\u00b0)");
     cairo_restore(cr);
   }
   // Boxes.
@@ -107,7 +116,7 @@ void draw_panel(cairo_t* cr, const Panel& p, bool y_title) {
     cairo_stroke(cr);
     cairo_set_line_width(cr, 2.2);
     line(cr, x - half, y_of(s.median), x + half, y_of(s.median));
-    text(cr, x, kBottom + 18.0, b.label, 12.0, 0.5);
+    text(cr, x, bottom + 18.0, b.label, 12.0, 0.5);
     if (b.paper != nullptr) {
       const double px = x + half + 9.0;
       cairo_set_source_rgb(cr, 0.80, 0.10, 0.10);
@@ -124,7 +133,7 @@ void draw_panel(cairo_t* cr, const Panel& p, bool y_title) {
   }
 }
 
-std::vector<Panel> build_panels(const StudyResult& result) {
+std::vector<Panel> build_panels(const StudyResult& result, DaFrame frame, double row_top) {
   const bool paper_side = result.built_in;
   const std::vector<Analysis>& analyses = result.flights.front().analyses;
   Panel a;
@@ -135,13 +144,13 @@ std::vector<Panel> build_panels(const StudyResult& result) {
     if (an.monte_carlo) continue;
     if (reference == nullptr) reference = &an;
     if (paper_side || result.flights.size() == 1) {
-      a.boxes.push_back({an.name, summarise(pooled_rms_da(result, an.name)),
+      a.boxes.push_back({an.name, summarise(pooled_rms_da(result, an.name, frame)),
                          paper_side ? published_row(an) : nullptr});
     }
   }
   if (!paper_side && result.flights.size() > 1) {
     for (const FlightStudy& f : result.flights) {
-      a.boxes.push_back({f.flight.name, summarise(f.analyses.front().rms_da_deg), nullptr});
+      a.boxes.push_back({f.flight.name, summarise(f.analyses.front().values(frame)), nullptr});
     }
   }
   std::vector<Panel> panels{a};
@@ -157,14 +166,14 @@ std::vector<Panel> build_panels(const StudyResult& result) {
     p.title = fam.title;
     p.x_label = fam.x_label;
     if (reference != nullptr) {
-      p.boxes.push_back({"0", summarise(pooled_rms_da(result, reference->name)), nullptr});
+      p.boxes.push_back({"0", summarise(pooled_rms_da(result, reference->name, frame)), nullptr});
     }
     for (const Analysis& an : analyses) {
       if (!an.monte_carlo || an.perturbation.family != fam.family) continue;
       char label[16];
       std::snprintf(label, sizeof label, "%g", an.perturbation.bound);
       p.boxes.push_back(
-          {label, summarise(pooled_rms_da(result, an.name)), paper_side ? published_row(an) : nullptr});
+          {label, summarise(pooled_rms_da(result, an.name, frame)), paper_side ? published_row(an) : nullptr});
     }
     panels.push_back(p);
   }
@@ -182,25 +191,33 @@ std::vector<Panel> build_panels(const StudyResult& result) {
     panels[i].width = i == 0 ? 60.0 + 70.0 * static_cast<double>(panels[i].boxes.size()) : 270.0;
     panels[i].left = left;
     panels[i].y_max = nice_ceiling(i == 0 ? a_max : b_max);
+    panels[i].top = row_top + kRowTop;
+    panels[i].bottom = row_top + kRowBottom;
     left += panels[i].width + 60.0;
   }
   return panels;
 }
 
+double row_top(std::size_t row) { return kTitleHeight + kRowHeight * static_cast<double>(row); }
+
 void draw(cairo_t* cr, const StudyResult& result, double width) {
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
   cairo_paint(cr);
-  const std::vector<Panel> panels = build_panels(result);
-  for (std::size_t i = 0; i < panels.size(); ++i) draw_panel(cr, panels[i], true);
+  for (std::size_t row = 0; row < result.frames.size(); ++row) {
+    const DaFrame frame = result.frames[row];
+    std::vector<Panel> panels = build_panels(result, frame, row_top(row));
+    for (Panel& p : panels) p.title += std::string(" (") + frame_name(frame) + " axes)";
+    for (const Panel& p : panels) draw_panel(cr, p, true);
+  }
   cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
-  const std::string title = "RMS deviation angle, " + result.input +
+  const std::string title = "RMS deviation angle of simulated from measured \u03c9, " + result.input +
                             " (box: quartiles, line: median, whiskers: p10-p90" +
                             (result.built_in ? "; red: the paper's median and p10-p90)" : ")");
   text(cr, width / 2.0, 24.0, title, 13.0, 0.5);
 }
 
 double figure_width(const StudyResult& result) {
-  const std::vector<Panel> panels = build_panels(result);
+  const std::vector<Panel> panels = build_panels(result, result.frames.front(), 0.0);
   return std::max(kWidth, panels.back().left + panels.back().width + 30.0);
 }
 
@@ -208,7 +225,8 @@ double figure_width(const StudyResult& result) {
 
 FigureFiles render_study_figure(const StudyResult& result) {
   const double width = figure_width(result);
-  return render_svg_and_png(width, kHeight, [&](cairo_t* cr) { draw(cr, result, width); },
+  const double height = row_top(result.frames.size());
+  return render_svg_and_png(width, height, [&](cairo_t* cr) { draw(cr, result, width); },
                             "figure");
 }
 

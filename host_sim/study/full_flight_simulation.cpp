@@ -1,6 +1,7 @@
 #include "study/full_flight_simulation.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "aloft/angular_velocity.hpp"
@@ -14,35 +15,44 @@ namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / M_PI;
 
+// Sums of squared DA, one per frame.
+struct SquaredDaSums {
+  double body = 0.0, world = 0.0;
+  void add(const Eigen::Quaterniond& from, const Eigen::Quaterniond& to, const StudyFlight& f,
+           std::size_t j) {
+    const double b = deviation_angle(rotation_axis_between(from, to), f.measured_omega_body[j]);
+    const double w =
+        deviation_angle(world_rotation_axis_between(from, to), f.measured_omega_world[j]);
+    body += b * b;
+    world += w * w;
+  }
+};
+
 // Pose flight: orientation and rate integrated; the simulated omega of each interval
 // comes from the two simulated orientations that bound it, like the measured one. The
 // flight was validated once (validate_study_flight), so the steps are unchecked.
-double pose_flight_rms_da(const StudyFlight& f, const InertiaTensor<double>& inertia,
-                          std::size_t k) {
+RmsDaByFrame pose_flight_rms_da(const StudyFlight& f, const InertiaTensor<double>& inertia,
+                                std::size_t k) {
   const Rk4Integrator<double> integrator(inertia);
   const std::size_t n = f.samples();
   const RigidBodyState<double> seed{f.orientation[k], f.state_omega_body[k]};
-  double sum_sq = 0.0;
+  SquaredDaSums sums;
 
   RigidBodyState<double> s = seed;
   for (std::size_t j = k; j + 1 < n; ++j) {
-    const double dt = f.time_s[j + 1] - f.time_s[j];
     const Eigen::Quaterniond before = s.orientation;
-    integrator.step_unchecked(s, dt);
-    const double da = deviation_angle(rotation_axis_between(before, s.orientation),
-                                      f.measured_omega_body[j]);
-    sum_sq += da * da;
+    integrator.step_unchecked(s, f.time_s[j + 1] - f.time_s[j]);
+    sums.add(before, s.orientation, f, j);
   }
   s = seed;
   for (std::size_t j = k; j-- > 0;) {
-    const double dt = f.time_s[j + 1] - f.time_s[j];
     const Eigen::Quaterniond after = s.orientation;
-    integrator.step_unchecked(s, -dt);
-    const double da = deviation_angle(rotation_axis_between(s.orientation, after),
-                                      f.measured_omega_body[j]);
-    sum_sq += da * da;
+    integrator.step_unchecked(s, -(f.time_s[j + 1] - f.time_s[j]));
+    sums.add(s.orientation, after, f, j);
   }
-  return std::sqrt(sum_sq / static_cast<double>(n - 1)) * kDegreesPerRadian;
+  const double intervals = static_cast<double>(n - 1);
+  return {std::sqrt(sums.body / intervals) * kDegreesPerRadian,
+          std::sqrt(sums.world / intervals) * kDegreesPerRadian};
 }
 
 // Rate flight: the body rate alone, compared with the gyro at every sample (the seed
@@ -73,10 +83,16 @@ Eigen::Vector3d rotation_axis_between(const Eigen::Quaterniond& a, const Eigen::
   return d.w() < 0.0 ? Eigen::Vector3d(-d.vec()) : Eigen::Vector3d(d.vec());
 }
 
-double full_flight_rms_da_deg(const StudyFlight& flight, const InertiaTensor<double>& inertia,
-                              std::size_t k) {
-  return flight.has_orientation() ? pose_flight_rms_da(flight, inertia, k)
-                                  : rate_flight_rms_da(flight, inertia, k);
+Eigen::Vector3d world_rotation_axis_between(const Eigen::Quaterniond& a,
+                                            const Eigen::Quaterniond& b) {
+  const Eigen::Quaterniond d = b * a.conjugate();
+  return d.w() < 0.0 ? Eigen::Vector3d(-d.vec()) : Eigen::Vector3d(d.vec());
+}
+
+RmsDaByFrame full_flight_rms_da_deg(const StudyFlight& flight, const InertiaTensor<double>& inertia,
+                                    std::size_t k) {
+  if (flight.has_orientation()) return pose_flight_rms_da(flight, inertia, k);
+  return {rate_flight_rms_da(flight, inertia, k), std::numeric_limits<double>::quiet_NaN()};
 }
 
 void validate_study_flight(const StudyFlight& f) {
@@ -87,7 +103,8 @@ void validate_study_flight(const StudyFlight& f) {
   }
   if (f.state_omega_body.size() != n ||
       (f.has_orientation() && f.orientation.size() != n) ||
-      f.measured_omega_body.size() != (f.has_orientation() ? n - 1 : n)) {
+      f.measured_omega_body.size() != (f.has_orientation() ? n - 1 : n) ||
+      f.measured_omega_world.size() != (f.has_orientation() ? n - 1 : 0)) {
     throw Error(where + "inconsistent flight data (internal error)");
   }
   for (std::size_t i = 0; i < n; ++i) {

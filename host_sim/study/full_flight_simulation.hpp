@@ -8,13 +8,15 @@
 #include <cstddef>
 
 #include "aloft/inertia_tensor.hpp"
+#include "study/da_frame.hpp"
 #include "study/study_flight.hpp"
 
 namespace aloft::host {
 
-// RMS DA (degrees) of the full-flight simulation with `inertia` seeded at sample k.
-double full_flight_rms_da_deg(const StudyFlight& flight, const InertiaTensor<double>& inertia,
-                              std::size_t k);
+// RMS DA (degrees) in body and world axes of the full-flight simulation with `inertia`
+// seeded at sample k. A rate flight has no world frame: NaN there.
+RmsDaByFrame full_flight_rms_da_deg(const StudyFlight& flight, const InertiaTensor<double>& inertia,
+                                    std::size_t k);
 
 // The axis of the rotation from orientation a to orientation b, in a's body axes, scaled
 // by sin(angle/2): the vector part of a^-1 b on the short side. It points along
@@ -22,6 +24,11 @@ double full_flight_rms_da_deg(const StudyFlight& flight, const InertiaTensor<dou
 // needs only that direction, so the simulation loop skips the log's atan2 and division
 // (a test checks both give the same RMS DA).
 Eigen::Vector3d rotation_axis_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b);
+
+// The same axis in world axes: the vector part of b a^-1 on the short side (a's body
+// axis rotated by a), pointing along omega_world dt.
+Eigen::Vector3d world_rotation_axis_between(const Eigen::Quaterniond& a,
+                                            const Eigen::Quaterniond& b);
 
 // Checks a flight before thousands of simulations run on it: at least 3 samples,
 // increasing times, finite unit orientations, finite non-zero measured rates. Throws

@@ -58,25 +58,28 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
   for (std::size_t a = 0; a < analyses.size(); ++a) {
     Analysis& an = analyses[a];
     if (!an.monte_carlo) an.simulations = n;
-    an.rms_da_deg.assign(an.simulations, 0.0);
+    for (std::vector<double>& v : an.rms_da_deg) v.assign(an.simulations, 0.0);
     first[a + 1] = first[a] + an.simulations;
   }
   const std::size_t total = first.back();
 
+  const auto store = [](Analysis& an, std::size_t i, const RmsDaByFrame& rms) {
+    for (std::size_t f = 0; f < kDaFrames; ++f) an.rms_da_deg[f][i] = rms[f];
+  };
   const auto run_one = [&](std::size_t flat) {
     const std::size_t a = static_cast<std::size_t>(
         std::upper_bound(first.begin(), first.end(), flat) - first.begin() - 1);
     Analysis& an = analyses[a];
     const std::size_t i = flat - first[a];
     if (!an.monte_carlo) {
-      an.rms_da_deg[i] = full_flight_rms_da_deg(flight, an.inertia, i);
+      store(an, i, full_flight_rms_da_deg(flight, an.inertia, i));
       return;
     }
     SimulationRandom random(settings.seed, settings.stream_base, i);  // paired across analyses
     boost::random::uniform_int_distribution<std::size_t> sample(0, n - 1);
     const std::size_t k = sample(random);
     const InertiaTensor<double> inertia = draw_perturbed_inertia(nominal, an.perturbation, random);
-    an.rms_da_deg[i] = full_flight_rms_da_deg(flight, inertia, k);
+    store(an, i, full_flight_rms_da_deg(flight, inertia, k));
   };
 
   constexpr std::size_t kChunk = 64;

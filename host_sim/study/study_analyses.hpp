@@ -11,12 +11,14 @@
 // scaled by its bound (common random numbers, study/inertia_perturbation.hpp).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "aloft/inertia_tensor.hpp"
+#include "study/da_frame.hpp"
 #include "study/inertia_perturbation.hpp"
 #include "study/study_flight.hpp"
 
@@ -28,7 +30,11 @@ struct Analysis {
   InertiaTensor<double> inertia;       // model analyses
   InertiaPerturbation perturbation;    // Monte Carlo analyses
   std::size_t simulations = 0;         // Monte Carlo; a model runs one per sample
-  std::vector<double> rms_da_deg;      // filled by run_analyses, one per simulation
+  // Filled by run_analyses: one RMS DA per simulation, in each frame (study/da_frame.hpp;
+  // the world frame holds NaN for a rate flight).
+  std::array<std::vector<double>, kDaFrames> rms_da_deg;
+
+  const std::vector<double>& values(DaFrame frame) const { return rms_da_deg[frame_index(frame)]; }
 };
 
 Analysis model_analysis(const std::string& name, const InertiaTensor<double>& inertia);
@@ -47,7 +53,7 @@ struct RunSettings {
 };
 
 // Runs every analysis on `flight` (validated first), Monte Carlo draws centred on
-// `nominal`. Fills each analysis' rms_da_deg.
+// `nominal`. Fills each analysis' rms_da_deg in both frames.
 void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nominal,
                   std::vector<Analysis>& analyses, const RunSettings& settings);
 

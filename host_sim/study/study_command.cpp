@@ -14,6 +14,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/commands.hpp"
+#include "common/option_checks.hpp"
 #include "study/boxplot_figure.hpp"
 #include "study/built_in_study.hpp"
 #include "study/paper_cylinder.hpp"
@@ -28,6 +29,7 @@ struct StudyOptions {
   std::uint64_t seed = 1;
   std::size_t mc_samples = paper::kMonteCarloSimulations;
   unsigned threads = 0;  // 0: every core
+  std::string frame = "both";  // body, world or both (study/da_frame.hpp)
   RecordingInput recording;
 };
 
@@ -49,6 +51,19 @@ void check_options(const StudyOptions& o) {
     throw Error("study: --segments goes with --imu");
   }
   if (o.mc_samples < 1) throw Error("study: --mc-samples must be at least 1");
+  if (o.frame != "body" && o.frame != "world" && o.frame != "both") {
+    throw Error("study: --frame must be body, world or both, not '" + o.frame + "'");
+  }
+  if (o.frame == "world" && !r.imu_path.empty()) {
+    throw Error("study: --frame world needs orientations; an IMU recording has only body rates");
+  }
+}
+
+// The frames to report: an IMU recording has no world frame, so "both" is body there.
+std::vector<DaFrame> frames_to_report(const StudyOptions& o) {
+  if (o.frame == "body" || !o.recording.imu_path.empty()) return {DaFrame::body};
+  if (o.frame == "world") return {DaFrame::world};
+  return {DaFrame::body, DaFrame::world};
 }
 
 // "\rstudy: 12,345 / 61,746 simulations (20 %)" on a terminal, nothing otherwise.
@@ -67,6 +82,7 @@ StudyResult run_study(const StudyOptions& o) {
   StudyResult result;
   result.seed = o.seed;
   result.mc_samples = o.mc_samples;
+  result.frames = frames_to_report(o);
   result.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
 
   // The trial and the tensors the analyses use.
@@ -173,11 +189,18 @@ void add_study_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "study", "the seed paper's inertia study: GF vs CP and 12 Monte Carlo analyses, on the "
                "built-in throw or on a recording");
-  cmd->add_option("--out", options->out_dir, "output folder (default aloft-study)");
-  cmd->add_option("--seed", options->seed, "seed of the Monte Carlo draws (default 1)");
+  cmd->add_option("--out", options->out_dir, "output folder (default aloft-study)")
+      ->check(output_folder());
+  cmd->add_option("--seed", options->seed, "seed of the Monte Carlo draws (default 1)")
+      ->check(whole_number());
   cmd->add_option("--mc-samples", options->mc_samples,
-                  "simulations per Monte Carlo analysis (default 5000)");
-  cmd->add_option("--threads", options->threads, "worker threads (default: every core)");
+                  "simulations per Monte Carlo analysis (default 5000)")
+      ->check(whole_number());
+  cmd->add_option("--threads", options->threads, "worker threads (default: every core)")
+      ->check(whole_number());
+  cmd->add_option("--frame", options->frame,
+                  "axes in which simulated and measured omega are compared: body, world or "
+                  "both (default both; IMU input: body only)");
   cmd->add_option("--body", options->recording.body_path, "body file of a recording (SPEC §2)");
   cmd->add_option("--markers", options->recording.markers_path, "marker trajectories (.trc, .c3d)");
   cmd->add_option("--poses", options->recording.poses_path, "poses (.mot, .sto, pose .csv)");

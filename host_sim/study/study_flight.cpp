@@ -22,6 +22,10 @@ StudyFlight make_pose_flight(const std::string& name, const ResampledPoses& pose
     omega_body_from_orientations(f.orientation[j], f.orientation[j + 1],
                                  f.time_s[j + 1] - f.time_s[j], f.measured_omega_body[j]);
   }
+  f.measured_omega_world.resize(f.measured_omega_body.size());
+  for (std::size_t j = 0; j < f.measured_omega_body.size(); ++j) {
+    f.measured_omega_world[j] = f.orientation[j] * f.measured_omega_body[j];
+  }
   return f;
 }
 

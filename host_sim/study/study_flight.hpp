@@ -1,5 +1,6 @@
 // One flight as the study analyses it: sampled states to seed simulations from, and the
-// measured angular velocity the simulations are compared with (body axes, SPEC §1).
+// measured angular velocity the simulations are compared with, in body axes (SPEC §1)
+// and, for pose flights, in world axes (study/da_frame.hpp).
 //
 // Two kinds:
 //  - pose flights (motion capture, pose files, the built-in throw): an orientation at
@@ -27,6 +28,7 @@ struct StudyFlight {
   std::vector<Eigen::Quaterniond> orientation;    // n for pose flights, empty for rate flights
   std::vector<Eigen::Vector3d> state_omega_body;  // n: omega of the state seeded at sample k
   std::vector<Eigen::Vector3d> measured_omega_body;  // n-1 (pose) or n (rate) comparisons
+  std::vector<Eigen::Vector3d> measured_omega_world;  // n-1 (pose: q_j omega_j), empty (rate)
 
   bool has_orientation() const { return !orientation.empty(); }
   std::size_t samples() const { return time_s.size(); }

@@ -11,11 +11,12 @@ namespace aloft::host {
 
 using nlohmann::json;
 
-std::vector<double> pooled_rms_da(const StudyResult& result, const std::string& name) {
+std::vector<double> pooled_rms_da(const StudyResult& result, const std::string& name,
+                                  DaFrame frame) {
   std::vector<double> out;
   for (const FlightStudy& f : result.flights) {
     for (const Analysis& a : f.analyses) {
-      if (a.name == name) out.insert(out.end(), a.rms_da_deg.begin(), a.rms_da_deg.end());
+      if (a.name == name) out.insert(out.end(), a.values(frame).begin(), a.values(frame).end());
     }
   }
   return out;
@@ -111,6 +112,36 @@ void analyses_json(const std::vector<Analysis>& analyses, bool with_paper, Value
 
 }  // namespace
 
+namespace {
+
+// SPEC §5's "models" and "monte_carlo" in the first frame reported, and "frames" with
+// both keys in every frame reported, for analyses whose values in a frame are
+// values_of(a, frame).
+template <typename ValuesOf>
+void frames_json(const StudyResult& result, const std::vector<Analysis>& analyses,
+                 bool with_paper, ValuesOf values_of, json& out) {
+  json frames = json::object();
+  for (DaFrame frame : result.frames) {
+    json block;
+    analyses_json(analyses, with_paper, [&](const Analysis& a) { return values_of(a, frame); },
+                  block);
+    frames[frame_name(frame)] = block;
+  }
+  out["frame"] = frame_name(result.frames.front());
+  out["models"] = frames[frame_name(result.frames.front())]["models"];
+  out["monte_carlo"] = frames[frame_name(result.frames.front())]["monte_carlo"];
+  out["frames"] = frames;
+}
+
+json frame_definitions() {
+  return {{"body", "omega in the body's own axes: the vector part of q_j^-1 q_{j+1}"},
+          {"world", "omega in the fixed lab axes: the vector part of q_{j+1} q_j^-1"},
+          {"top_level_keys", "\"models\" and \"monte_carlo\" hold the frame named by "
+                             "\"frame\"; \"frames\" holds every frame reported"}};
+}
+
+}  // namespace
+
 json results_json(const StudyResult& result) {
   json out;
   out["input"] = result.input;
@@ -120,9 +151,10 @@ json results_json(const StudyResult& result) {
   out["mc_samples"] = result.mc_samples;
   out["percentile_definition"] =
       "linear interpolation between order statistics at rank p(n-1) (Hyndman-Fan type 7)";
+  out["frame_definitions"] = frame_definitions();
   const std::vector<Analysis>& first = result.flights.front().analyses;
-  analyses_json(first, result.built_in,
-                [&](const Analysis& a) { return pooled_rms_da(result, a.name); }, out);
+  frames_json(result, first, result.built_in,
+              [&](const Analysis& a, DaFrame f) { return pooled_rms_da(result, a.name, f); }, out);
   if (!result.built_in) {
     json flights = json::array();
     for (const FlightStudy& f : result.flights) {
@@ -131,7 +163,8 @@ json results_json(const StudyResult& result) {
       entry["start_s"] = f.flight.start_s;
       entry["end_s"] = f.flight.end_s;
       entry["samples"] = f.flight.samples();
-      analyses_json(f.analyses, false, [](const Analysis& a) { return a.rms_da_deg; }, entry);
+      frames_json(result, f.analyses, false,
+                  [](const Analysis& a, DaFrame frame) { return a.values(frame); }, entry);
       flights.push_back(entry);
     }
     out["flights"] = flights;
@@ -146,13 +179,16 @@ json results_json(const StudyResult& result) {
 std::string rms_da_csv(const StudyResult& result) {
   std::ostringstream out;
   out.precision(9);
-  out << "analysis,index,rms_da_deg\n";
+  out << "analysis,index,rms_da_deg,frame\n";
   const bool several = result.flights.size() > 1;
-  for (const FlightStudy& f : result.flights) {
-    for (const Analysis& a : f.analyses) {
-      const std::string key = several ? f.flight.name + "/" + analysis_key(a) : analysis_key(a);
-      for (std::size_t i = 0; i < a.rms_da_deg.size(); ++i) {
-        out << key << ',' << i << ',' << a.rms_da_deg[i] << '\n';
+  for (DaFrame frame : result.frames) {
+    for (const FlightStudy& f : result.flights) {
+      for (const Analysis& a : f.analyses) {
+        const std::string key = several ? f.flight.name + "/" + analysis_key(a) : analysis_key(a);
+        const std::vector<double>& values = a.values(frame);
+        for (std::size_t i = 0; i < values.size(); ++i) {
+          out << key << ',' << i << ',' << values[i] << ',' << frame_name(frame) << '\n';
+        }
       }
     }
   }
@@ -189,24 +225,35 @@ std::string comparison_table(const StudyResult& result) {
   std::ostringstream out;
   char line[200];
   const bool paper_side = result.built_in;
-  std::snprintf(line, sizeof line, "%-22s %8s %8s %8s %7s", "RMS DA (deg)", "p10", "median",
-                "p90", "sims");
+  std::snprintf(line, sizeof line, "%-22s", "RMS DA (deg)");
   out << line;
-  if (paper_side) out << "  | paper  p10 median   p90";
+  for (DaFrame frame : result.frames) {
+    std::snprintf(line, sizeof line, " | %-5s axes p10 median   p90", frame_name(frame));
+    out << line;
+  }
+  out << " |  sims";
+  if (paper_side) out << " | paper p10 median   p90";
   out << '\n';
   for (const Analysis& a : result.flights.front().analyses) {
-    const std::vector<double> values = pooled_rms_da(result, a.name);
-    const DistributionSummary s = summarise(values);
-    std::snprintf(line, sizeof line, "%-22s %8.2f %8.2f %8.2f %7zu", a.name.c_str(), s.p10,
-                  s.median, s.p90, values.size());
+    std::snprintf(line, sizeof line, "%-22s", a.name.c_str());
+    out << line;
+    std::size_t sims = 0;
+    for (DaFrame frame : result.frames) {
+      const std::vector<double> values = pooled_rms_da(result, a.name, frame);
+      const DistributionSummary s = summarise(values);
+      sims = values.size();
+      std::snprintf(line, sizeof line, " |       %6.2f %6.2f %5.2f", s.p10, s.median, s.p90);
+      out << line;
+    }
+    std::snprintf(line, sizeof line, " | %5zu", sims);
     out << line;
     if (paper_side) {
       if (const paper::PublishedRow* row = published_row(a)) {
-        std::snprintf(line, sizeof line, "  |      %5.1f  %5.1f %5.1f", row->p10, row->median,
+        std::snprintf(line, sizeof line, " |     %5.1f  %5.1f %5.1f", row->p10, row->median,
                       row->p90);
         out << line;
       } else {
-        out << "  |          -      -     -";
+        out << " |         -      -     -";
       }
     }
     out << '\n';

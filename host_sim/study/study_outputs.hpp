@@ -3,8 +3,10 @@
 //  - results.json: "models" (GF and CP for the built-in study; "nominal" for a recording)
 //    with principal_kg_m2, simulations and rms_da_deg {p10, median, p90}, "monte_carlo"
 //    (family, bound, unit, simulations, rms_da_deg), "wall_time_s"; beside them the
-//    trial, the seed, quartiles, the paper's numbers and, for recordings, "flights";
-//  - rms_da.csv: analysis,index,rms_da_deg, one row per simulation;
+//    trial, the seed, quartiles, the paper's numbers and, for recordings, "flights".
+//    "models" and "monte_carlo" hold the frame named by "frame" (body axes unless only
+//    --frame world was asked); "frames" holds both keys for every frame reported;
+//  - rms_da.csv: analysis,index,rms_da_deg,frame, one row per simulation and frame;
 //  - experiment.csv: the trial the study used: pose flights t,qw,qx,qy,qz,wx,wy,wz
 //    (omega in body axes); rate flights flight,t,wx,wy,wz;
 //  - the side-by-side table printed on stdout.

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "study/da_frame.hpp"
 #include "study/study_analyses.hpp"
 #include "study/study_flight.hpp"
 
@@ -27,11 +28,14 @@ struct StudyResult {
   std::uint64_t seed = 0;
   unsigned threads = 1;
   std::size_t mc_samples = 0;
+  // The frames reported (--frame), the first one also under SPEC §5's top-level keys.
+  std::vector<DaFrame> frames = {DaFrame::body, DaFrame::world};
   std::vector<std::pair<std::string, double>> phase_time_s;  // where the time went
   double wall_time_s = 0.0;
 };
 
-// Every simulation's RMS DA of the analysis named `name`, pooled over all flights.
-std::vector<double> pooled_rms_da(const StudyResult& result, const std::string& name);
+// Every simulation's RMS DA in `frame` of the analysis named `name`, pooled over all flights.
+std::vector<double> pooled_rms_da(const StudyResult& result, const std::string& name,
+                                  DaFrame frame);
 
 }  // namespace aloft::host

@@ -39,17 +39,22 @@ TEST_CASE("without marker noise the GF model matches the throw from every part o
   for (std::size_t k : {std::size_t(0), std::size_t(1), std::size_t(436), std::size_t(871),
                         std::size_t(872)}) {
     INFO("seeded at sample " << k);
-    // Only resampling error remains: a few thousandths of a degree.
-    CHECK(full_flight_rms_da_deg(trial.flight, trial.body.inertia, k) < 0.02);
-    // The CP tensor predicts a different motion.
-    CHECK(full_flight_rms_da_deg(trial.flight, cp, k) > 5.0);
+    // Only resampling error remains: a few thousandths of a degree, in either frame.
+    const RmsDaByFrame gf = full_flight_rms_da_deg(trial.flight, trial.body.inertia, k);
+    CHECK(gf[frame_index(DaFrame::body)] < 0.02);
+    CHECK(gf[frame_index(DaFrame::world)] < 0.02);
+    // The CP tensor predicts a different motion, seen in either frame.
+    const RmsDaByFrame cpv = full_flight_rms_da_deg(trial.flight, cp, k);
+    CHECK(cpv[frame_index(DaFrame::body)] > 5.0);
+    CHECK(cpv[frame_index(DaFrame::world)] > 1.0);
   }
 }
 
 // The seed study's procedure written out plainly, as the reference for the fast loop:
 // checked RK4 steps forward and backward (TimeDirection), omega of every interval from
-// consecutive orientations (aloft::omega_body_from_orientations), DA, RMS.
-double reference_rms_da_deg(const StudyFlight& f, const aloft::InertiaTensor<double>& inertia,
+// consecutive orientations (aloft::omega_body_from_orientations), rotated into world axes
+// by the interval's first orientation for the world frame, DA, RMS.
+RmsDaByFrame reference_rms_da_deg(const StudyFlight& f, const aloft::InertiaTensor<double>& inertia,
                             std::size_t k) {
   const aloft::Rk4Integrator<double> integrator(inertia);
   const std::size_t n = f.samples();
@@ -67,15 +72,20 @@ double reference_rms_da_deg(const StudyFlight& f, const aloft::InertiaTensor<dou
             aloft::Status::ok);
     q[j] = s.orientation;
   }
-  double sum_sq = 0.0;
+  double body_sq = 0.0, world_sq = 0.0;
   for (std::size_t j = 0; j + 1 < n; ++j) {
     Eigen::Vector3d w;
     REQUIRE(aloft::omega_body_from_orientations(q[j], q[j + 1], f.time_s[j + 1] - f.time_s[j], w) ==
             aloft::Status::ok);
-    const double da = aloft::deviation_angle(w, f.measured_omega_body[j]);
-    sum_sq += da * da;
+    const double body = aloft::deviation_angle(w, f.measured_omega_body[j]);
+    const double world =
+        aloft::deviation_angle(Eigen::Vector3d(q[j] * w),
+                               Eigen::Vector3d(f.orientation[j] * f.measured_omega_body[j]));
+    body_sq += body * body;
+    world_sq += world * world;
   }
-  return std::sqrt(sum_sq / static_cast<double>(n - 1)) * 180.0 / M_PI;
+  const double to_deg = 180.0 / M_PI, intervals = static_cast<double>(n - 1);
+  return {std::sqrt(body_sq / intervals) * to_deg, std::sqrt(world_sq / intervals) * to_deg};
 }
 
 TEST_CASE("the fast simulation loop gives the plain procedure's RMS DA") {
@@ -83,10 +93,14 @@ TEST_CASE("the fast simulation loop gives the plain procedure's RMS DA") {
   const aloft::InertiaTensor<double> cp = compound_pendulum();
   for (std::size_t k : {std::size_t(0), std::size_t(300), std::size_t(872)}) {
     INFO("seeded at sample " << k);
-    const double gf = full_flight_rms_da_deg(trial.flight, trial.body.inertia, k);
-    CHECK(gf == Approx(reference_rms_da_deg(trial.flight, trial.body.inertia, k)).epsilon(1e-9));
-    const double cpv = full_flight_rms_da_deg(trial.flight, cp, k);
-    CHECK(cpv == Approx(reference_rms_da_deg(trial.flight, cp, k)).epsilon(1e-9));
+    for (const aloft::InertiaTensor<double>& inertia : {trial.body.inertia, cp}) {
+      const RmsDaByFrame fast = full_flight_rms_da_deg(trial.flight, inertia, k);
+      const RmsDaByFrame plain = reference_rms_da_deg(trial.flight, inertia, k);
+      for (DaFrame frame : kAllDaFrames) {
+        INFO(frame_name(frame) << " axes");
+        CHECK(fast[frame_index(frame)] == Approx(plain[frame_index(frame)]).epsilon(1e-9));
+      }
+    }
   }
 }
 
@@ -102,10 +116,15 @@ TEST_CASE("a rate flight (gyro) is simulated from body rates and compared at eve
   }
   const StudyFlight f = make_rate_flight("gyro", t, w);
   validate_study_flight(f);
-  CHECK(full_flight_rms_da_deg(f, gf, 0) < 1e-6);
-  CHECK(full_flight_rms_da_deg(f, gf, 250) < 1e-6);
-  CHECK(full_flight_rms_da_deg(f, gf, 500) < 1e-6);
-  CHECK(full_flight_rms_da_deg(f, compound_pendulum(), 250) > 1.0);
+  const auto body = [&](const aloft::InertiaTensor<double>& inertia, std::size_t k) {
+    return full_flight_rms_da_deg(f, inertia, k)[frame_index(DaFrame::body)];
+  };
+  CHECK(body(gf, 0) < 1e-6);
+  CHECK(body(gf, 250) < 1e-6);
+  CHECK(body(gf, 500) < 1e-6);
+  CHECK(body(compound_pendulum(), 250) > 1.0);
+  // No orientation, no world frame.
+  CHECK(std::isnan(full_flight_rms_da_deg(f, gf, 250)[frame_index(DaFrame::world)]));
 }
 
 TEST_CASE("results do not depend on the number of threads") {
@@ -122,11 +141,13 @@ TEST_CASE("results do not depend on the number of threads") {
   const std::vector<Analysis> one = run(1), three = run(3);
   REQUIRE(one.size() == 13);
   for (std::size_t a = 0; a < one.size(); ++a) {
-    REQUIRE(one[a].rms_da_deg.size() == three[a].rms_da_deg.size());
-    CHECK(one[a].rms_da_deg == three[a].rms_da_deg);
+    for (DaFrame frame : kAllDaFrames) {
+      REQUIRE(one[a].values(frame).size() == three[a].values(frame).size());
+      CHECK(one[a].values(frame) == three[a].values(frame));
+    }
   }
-  CHECK(one[0].rms_da_deg.size() == 873);
-  CHECK(one[1].rms_da_deg.size() == 40);
+  CHECK(one[0].values(DaFrame::world).size() == 873);
+  CHECK(one[1].values(DaFrame::body).size() == 40);
 }
 
 TEST_CASE("a flight with a bad sample is refused with its name and sample") {

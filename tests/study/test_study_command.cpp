@@ -76,9 +76,22 @@ TEST_CASE("the default study writes the files of SPEC §5, and the same seed giv
   CHECK(per_family[2] == 4);
   CHECK(results.at("wall_time_s").get<double>() > 0.0);
 
+  // Both frames by default: SPEC §5's keys in body axes, named by "frame", and every
+  // frame under "frames", the world one different.
+  CHECK(results.at("frame") == "body");
+  CHECK(results.at("frames").at("body").at("models") == results["models"]);
+  CHECK(results["frames"]["body"].at("monte_carlo") == results["monte_carlo"]);
+  const json& world = results["frames"].at("world");
+  check_summary(world.at("models").at("CP").at("rms_da_deg"));
+  CHECK(world["models"]["CP"]["rms_da_deg"] != results["models"]["CP"]["rms_da_deg"]);
+  REQUIRE(world.at("monte_carlo").size() == 12);
+  CHECK(r.out.find("world axes") != std::string::npos);
+
   const std::string rms = read_file(scratch.path("a/rms_da.csv"));
-  CHECK(rms.rfind("analysis,index,rms_da_deg\n", 0) == 0);
-  CHECK(count_lines(rms) == 1 + 2 * 873 + 12 * 120);
+  CHECK(rms.rfind("analysis,index,rms_da_deg,frame\n", 0) == 0);
+  CHECK(count_lines(rms) == 1 + 2 * (2 * 873 + 12 * 120));
+  CHECK(rms.find("\nCP,0,") != std::string::npos);
+  CHECK(rms.find(",world\n") != std::string::npos);
   const std::string experiment = read_file(scratch.path("a/experiment.csv"));
   CHECK(experiment.rfind("t,qw,qx,qy,qz,wx,wy,wz\n", 0) == 0);
   CHECK(count_lines(experiment) == 1 + 873);
@@ -103,6 +116,25 @@ TEST_CASE("the default study writes the files of SPEC §5, and the same seed giv
   const json third = json::parse(read_file(scratch.path("c/results.json")));
   CHECK(third["models"] == results["models"]);
   CHECK(third["monte_carlo"] != results["monte_carlo"]);
+}
+
+TEST_CASE("--frame world reports the world frame alone, with the same numbers as both") {
+  StudyScratch scratch;
+  const std::string common = "study --mc-samples 30 --seed 3 --threads 2 --out '";
+  const auto both = run_aloft(scratch, common + scratch.path("both") + "'");
+  const auto world = run_aloft(scratch, common + scratch.path("world") + "' --frame world");
+  INFO(world.err);
+  REQUIRE(both.exit_code == 0);
+  REQUIRE(world.exit_code == 0);
+  const json b = json::parse(read_file(scratch.path("both/results.json")));
+  const json w = json::parse(read_file(scratch.path("world/results.json")));
+  CHECK(w.at("frame") == "world");
+  CHECK(w.at("frames").size() == 1);
+  CHECK(w["models"] == b["frames"]["world"]["models"]);
+  CHECK(w["monte_carlo"] == b["frames"]["world"]["monte_carlo"]);
+  const std::string rms = read_file(scratch.path("world/rms_da.csv"));
+  CHECK(count_lines(rms) == 1 + 2 * 873 + 12 * 30);
+  CHECK(rms.find(",body\n") == std::string::npos);
 }
 
 TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing written") {
@@ -135,6 +167,19 @@ TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing 
     CHECK(r.exit_code != 0);
     CHECK(count_lines(r.err) == 1);
     CHECK(r.err.find("segment 1") != std::string::npos);
+  }
+  SECTION("an unknown frame") {
+    const auto r = run_aloft(scratch, "study --frame lab --out '" + out + "'");
+    CHECK(r.exit_code == 2);
+    CHECK(count_lines(r.err) == 1);
+    CHECK(r.err.find("--frame") != std::string::npos);
+  }
+  SECTION("the world frame of an IMU recording, which has no orientation") {
+    const std::string imu = scratch.write("imu.csv", "t,gx,gy,gz\n0,1,2,3\n0.01,1,2,3\n0.02,1,2,3\n");
+    const auto r = run_aloft(scratch, "study --body '" + body + "' --imu '" + imu +
+                                          "' --frame world --out '" + out + "'");
+    CHECK(r.exit_code == 2);
+    CHECK(count_lines(r.err) == 1);
   }
   SECTION("--markers without --body") {
     const auto r = run_aloft(scratch, "study --markers x.trc --out '" + out + "'");
@@ -184,5 +229,7 @@ TEST_CASE("the study runs on every racquet flight of both sessions") {
       CHECK(f.at("samples").get<int>() > 50);  // about 100 Hz over about a second
     }
     check_summary(results.at("models").at("nominal").at("rms_da_deg"));
+    CHECK(results.at("frame") == "body");  // gyro only: no world frame
+    CHECK(results.at("frames").size() == 1);
   }
 }

@@ -10,7 +10,7 @@ using namespace aloft::host;
 
 namespace {
 
-double median_of(const Analysis& a) { return summarise(a.rms_da_deg).median; }
+double median_of(const Analysis& a) { return summarise(a.values(DaFrame::body)).median; }
 
 const Analysis& find(const std::vector<Analysis>& analyses, PerturbationFamily family,
                      double bound) {
@@ -64,8 +64,8 @@ TEST_CASE("the built-in study has the seed paper's shape") {
     const Analysis& m = find(analyses, PerturbationFamily::moments, bound);
     const Analysis& b = find(analyses, PerturbationFamily::both, bound);
     std::vector<double> paired;
-    for (std::size_t i = 0; i < m.rms_da_deg.size(); ++i) {
-      paired.push_back(b.rms_da_deg[i] - m.rms_da_deg[i]);
+    for (std::size_t i = 0; i < m.values(DaFrame::body).size(); ++i) {
+      paired.push_back(b.values(DaFrame::body)[i] - m.values(DaFrame::body)[i]);
     }
     const double moments = median_of(m);
     const double both = median_of(b);

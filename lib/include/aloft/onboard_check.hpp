@@ -7,15 +7,21 @@
 //     at most K are alive, and starting one more retires the oldest;
 //   - advances every live simulation one step per sample (torque-free body rate, RK4)
 //     and compares it with the gyro: DA and relative error, per seed and overall.
-// Rates are compared in body axes, so no orientation is integrated: a gyro alone
-// cannot observe it and the torque-free body rate does not depend on it.
+// Rates are compared as body rates, so no orientation is integrated: a gyro alone
+// cannot observe it and the torque-free body rate does not depend on it. The
+// simulations live in the tensor's principal axes (Euler's equations with a diagonal
+// tensor, aloft/principal_dynamics.hpp) and each gyro sample is rotated into them once;
+// the deviation angle and relative error do not depend on the axes they are taken in.
+// The DA's atan2 is aloft's polynomial (aloft/lane_angle.hpp), not the C library's
+// software atan2f.
 #pragma once
 
 #include <cstdint>
 
 #include "aloft/deviation.hpp"
-#include "aloft/euler_equations.hpp"
 #include "aloft/flight_detector.hpp"
+#include "aloft/lane_angle.hpp"
+#include "aloft/principal_frame.hpp"
 
 namespace aloft {
 
@@ -42,9 +48,10 @@ class OnboardCheck {
 
  public:
   OnboardCheck(const InertiaTensor<Scalar>& inertia, const OnboardCheckSettings<Scalar>& settings)
-      : inertia_(inertia),
+      : coefficients_(PrincipalFrame<Scalar>(inertia).coefficients()),
         settings_(settings),
-        sensor_to_body_(settings.sensor_to_body.normalized().toRotationMatrix()),
+        sensor_to_principal_(PrincipalFrame<Scalar>(inertia).to_body_matrix().transpose() *
+                             settings.sensor_to_body.normalized().toRotationMatrix()),
         detector_(settings.flight) {
     if (settings_.seed_every == 0) settings_.seed_every = 1;
   }
@@ -81,7 +88,7 @@ class OnboardCheck {
 
  private:
   struct Slot : SeedReport<Scalar> {
-    Vec3<Scalar> omega = Vec3<Scalar>::Zero();  // body rate of the simulation
+    LaneVec3<Scalar> omega = {};  // body rate of the simulation, principal axes
   };
 
   Status validate_sample(const Vec3<Scalar>& gyro, Scalar dt) const {
@@ -91,15 +98,22 @@ class OnboardCheck {
   }
 
   void use_sample(const Vec3<Scalar>& gyro, Scalar dt) {
-    const Vec3<Scalar> measured = sensor_to_body_ * gyro;
-    const bool has_rate = measured.squaredNorm() > Scalar(0);
+    const Vec3<Scalar> m = sensor_to_principal_ * gyro;
+    const LaneVec3<Scalar> measured{m.x(), m.y(), m.z()};
+    const Scalar norm_sq = m.squaredNorm();
+    const bool has_rate = norm_sq > Scalar(0);  // a zero rate has no direction to compare
+    const Scalar inverse_norm = has_rate ? Scalar(1) / std::sqrt(norm_sq) : Scalar(0);
     for (int i = 0; i < K; ++i) {
       Slot& slot = slots_[i];
       if (!slot.live) continue;
-      slot.omega = body_rate_rk4_step(inertia_, slot.omega, dt);
-      if (!has_rate) continue;  // a zero rate has no direction to compare
-      const Scalar da = deviation_angle(slot.omega, measured);
-      const Scalar rel = relative_error(slot.omega, measured);
+      const LaneVec3<Scalar> w = principal_rate_rk4_step(coefficients_, slot.omega, dt);
+      slot.omega = w;
+      if (!has_rate) continue;
+      const Scalar da = lane_deviation_angle(w, measured);
+      const Scalar dx = w.x - measured.x;
+      const Scalar dy = w.y - measured.y;
+      const Scalar dz = w.z - measured.z;
+      const Scalar rel = std::sqrt(dx * dx + dy * dy + dz * dz) * inverse_norm;
       slot.stats.add_values(da, rel);
       overall_.add_values(da, rel);
     }
@@ -107,7 +121,7 @@ class OnboardCheck {
     ++samples_;
   }
 
-  void start_seed(const Vec3<Scalar>& measured) {
+  void start_seed(const LaneVec3<Scalar>& measured) {
     newest_ = (newest_ + 1) % K;  // the oldest slot, once all K are in use
     Slot& slot = slots_[newest_];
     if (!slot.live) ++live_;
@@ -120,9 +134,9 @@ class OnboardCheck {
 
   int slot_of_newest(int i) const { return ((newest_ - i) % K + K) % K; }
 
-  InertiaTensor<Scalar> inertia_;
+  EulerCoefficients<Scalar> coefficients_;
   OnboardCheckSettings<Scalar> settings_;
-  Mat3<Scalar> sensor_to_body_;
+  Mat3<Scalar> sensor_to_principal_;
   FlightDetector<Scalar> detector_;
   Slot slots_[K] = {};
   DeviationStats<Scalar> overall_;

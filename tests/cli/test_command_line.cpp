@@ -1,0 +1,128 @@
+// The command line's contract, swept over bad command lines: each exits 2 with exactly
+// one line on stderr naming the bad word (and the valid choices where there are some),
+// before any work is done; --version and --help succeed; simulate writes numbers at the
+// precision they carry.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+  int exit_code;
+  std::string out, err;
+};
+
+fs::path scratch() {
+  const fs::path dir = fs::temp_directory_path() / ("aloft_cli_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Run run_aloft(const std::string& args) {
+  const fs::path out = scratch() / "stdout.txt", err = scratch() / "stderr.txt";
+  const std::string command =
+      std::string(ALOFT_PROGRAM) + " " + args + " > " + out.string() + " 2> " + err.string();
+  const int status = std::system(command.c_str());
+  return {WEXITSTATUS(status), read_text(out), read_text(err)};
+}
+
+const std::string body = std::string(ALOFT_EXAMPLES) + "/gf_cylinder.json";
+const std::string imu_missing = (scratch() / "no_such_log.csv").string();
+
+struct BadLine {
+  std::string args;
+  std::vector<std::string> must_name;  // words the one line must contain
+};
+
+const std::string simulate_base = "simulate --body " + body + " --w0 1,2,3";
+const std::string simulate_ok = simulate_base + " --duration 0.1 --rate 100";
+
+}  // namespace
+
+TEST_CASE("every bad command line exits 2 with one line naming the problem", "[cli]") {
+  const std::string file_as_folder = body + "/inside";
+  const std::vector<BadLine> sweep = {
+      {"", {"no command given", "simulate", "study", "inspect", "diagnose"}},
+      {"frobnicate", {"unknown command frobnicate", "simulate", "diagnose"}},
+      {"studdy", {"unknown command studdy", "did you mean study?"}},
+      {"--frobnicate", {"unknown option --frobnicate"}},
+      {"simulate --bdy " + body, {"unknown option --bdy", "did you mean --body?", "--w0"}},
+      {"simulate --w0 1,2,3", {"--body is required"}},
+      {simulate_ok + " --out x.csv --integrator euler", {"--integrator", "euler", "rk4", "splitting"}},
+      {simulate_ok + " --out x.csv extra", {"unexpected argument extra"}},
+      {simulate_ok + " --out " + scratch().string(), {"--out", "is a folder"}},
+      {simulate_ok + " --out /no/such/folder/x.csv", {"--out", "/no/such/folder", "does not exist"}},
+      {simulate_base + " --rate 100 --out x.csv --duration soon", {"--duration", "soon"}},
+      {simulate_ok + " --out x.csv --rate 5", {"--rate"}},
+      {"study --seed -1", {"--seed", "-1", "whole number"}},
+      {"study --seed 1.5", {"--seed", "1.5"}},
+      {"study --mc-samples -5", {"--mc-samples", "-5"}},
+      {"study --threads two", {"--threads", "two"}},
+      {"study --out " + body, {"--out", body, "not a folder"}},
+      {"study --out " + file_as_folder, {"--out", "is not a folder"}},
+      {"study --seeds 3", {"unknown option --seeds", "did you mean --seed?"}},
+      {"inspect", {"file is required"}},
+      {"diagnose --body " + body + " --imu " + imu_missing + " --json /no/such/folder/r.json",
+       {"--json", "does not exist"}},
+      {"diagnose --body " + body + " --imu " + imu_missing + " --plot " + body,
+       {"--plot", "not a folder"}},
+      {"diagnose --body " + body + " --imu " + imu_missing + " --threads 0", {"--threads", "0"}},
+      {"diagnose --body " + body + " --imus x.csv", {"unknown option --imus", "did you mean --imu?"}},
+  };
+  for (const BadLine& bad : sweep) {
+    CAPTURE(bad.args);
+    const Run r = run_aloft(bad.args);
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.out.empty());
+    for (const std::string& word : bad.must_name) CHECK(r.err.find(word) != std::string::npos);
+  }
+}
+
+TEST_CASE("--version prints the project version and --help succeeds", "[cli]") {
+  const Run version = run_aloft("--version");
+  CHECK(version.exit_code == 0);
+  CHECK(version.out == std::string("aloft ") + ALOFT_VERSION + "\n");
+  const Run help = run_aloft("diagnose --help");
+  CHECK(help.exit_code == 0);
+  CHECK(help.out.find("--threads") != std::string::npos);
+}
+
+TEST_CASE("simulate writes each number at the precision it carries", "[cli]") {
+  const fs::path csv = scratch() / "traj.csv";
+  const Run r = run_aloft(simulate_base + " --duration 0.1 --rate 200 --out " + csv.string());
+  REQUIRE(r.exit_code == 0);
+  std::istringstream rows(read_text(csv));
+  std::string row;
+  std::vector<std::string> times;
+  std::getline(rows, row);  // header
+  while (std::getline(rows, row)) times.push_back(row.substr(0, row.find(',')));
+  REQUIRE(times.size() == 21);
+  CHECK(times[1] == "0.005");
+  CHECK(times[3] == "0.015");
+  CHECK(times[20] == "0.1");
+  std::istringstream again(read_text(csv));
+  std::getline(again, row);
+  std::getline(again, row);
+  CHECK(row.rfind("0,1,0,0,0,1,2,3", 0) == 0);  // the initial state as given
+}
