@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "aloft/deviation.hpp"
+#include "diagnose/moment_scale_equivalence.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -116,6 +117,17 @@ void judge_physics(Candidate& c) {
   }
 }
 
+// A gyro scale can stand in for wrong moments, never the reverse (moment_scale_equivalence.hpp):
+// listed with a moments verdict only where the gyro reads the principal axes and a scale
+// reproduces the fitted moments exactly; never listed with a scale verdict.
+bool one_way_equivalence_allows(const Candidate& best, const Candidate& other, const RankingContext& context) {
+  if (best.effect == Effect::gyro_scale && other.effect == Effect::inertia_moments) return false;
+  if (best.effect != Effect::inertia_moments || other.effect != Effect::gyro_scale) return true;
+  if (context.nominal == nullptr || context.flights.empty()) return false;
+  return gyro_along_principal_axes(context.nominal->principal_axes, context.flights.front()->sensor_to_body) &&
+         scale_mimicking_moments(context.nominal->principal_moments, best.params.principal_kg_m2).has_value();
+}
+
 }  // namespace
 
 StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context, double margin) {
@@ -144,6 +156,7 @@ StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context
     if (!c.reference || c.effect != Effect::none) parameters += effect_penalty_count(c.effect);
     c.score = c.heldout_chi_square / dispersion + kPenaltyPerParameter * parameters;
     c.shrink = reference.heldout_rms_rel_err > 0 ? 1.0 - c.heldout_rms_rel_err / reference.heldout_rms_rel_err : 0.0;
+    c.reference_rms_rel_err = reference.heldout_rms_rel_err;
     c.shrink_da = reference.heldout_rms_da_deg > 0 ? 1.0 - c.heldout_rms_da_deg / reference.heldout_rms_da_deg : 0.0;
     if (c.reference) continue;
     c.identifiable = identifiable(c, context.mean_speed, context.duration_s);
@@ -170,7 +183,7 @@ StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context
   // well (score within the margin) with practically the same predictions (< 0.3 sigma).
   for (const Candidate& c : all) {
     if (&c == &best || !c.evaluated || c.reference || c.effect == Effect::none) continue;
-    if (c.score < best.score + margin &&
+    if (c.score < best.score + margin && one_way_equivalence_allows(best, c, context) &&
         prediction_distance(c, best, context.flights, context.inverse_sigma) < 0.3 * std::sqrt(dispersion)) {
       if (std::find(out.equivalent.begin(), out.equivalent.end(), c.effect) == out.equivalent.end()) {
         out.equivalent.push_back(c.effect);
@@ -191,9 +204,13 @@ StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context
 void rank_candidates(Analysis& analysis, bool gyro_input, const std::vector<const Flight*>& flights,
                      const std::vector<Eigen::Vector3d>& inverse_sigma, double mean_speed,
                      double duration_s) {
+  rank_candidates(analysis, RankingContext{gyro_input, flights, inverse_sigma, mean_speed, duration_s});
+}
+
+void rank_candidates(Analysis& analysis, const RankingContext& context) {
+  const bool gyro_input = context.gyro_input;
   std::vector<Candidate>& all = analysis.candidates;
   for (Candidate& c : all) c.reference = c.effect == Effect::none && c.base.empty();
-  const RankingContext context{gyro_input, flights, inverse_sigma, mean_speed, duration_s};
   const StepRanking step = rank_step(all, context, kVerdictMargin);
   analysis.dispersion = step.dispersion;
   Verdict& v = analysis.verdict;

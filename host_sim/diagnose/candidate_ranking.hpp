@@ -28,6 +28,7 @@ struct RankingContext {
   double mean_speed = 0.0;                     // rad/s
   double duration_s = 0.0;                     // of the data that informs shared parameters
   const NominalInertia* nominal = nullptr;     // the stepwise selection's parameters need it
+  double resolution = 0.0;                     // rad/s (noise_floor.hpp); 0: unknown
 };
 
 // One step of the ranking: scores every candidate of `all` against the one marked
@@ -46,6 +47,7 @@ StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context
 // Fills score, shrink, physical, identifiable and indistinguishable; sorts best first;
 // makes the verdict. `gyro_input` selects the equivalence classes that always hold.
 // `inverse_sigma[f]` weighs flight f (for the indistinguishability test).
+void rank_candidates(Analysis& analysis, const RankingContext& context);
 void rank_candidates(Analysis& analysis, bool gyro_input, const std::vector<const Flight*>& flights,
                      const std::vector<Eigen::Vector3d>& inverse_sigma, double mean_speed,
                      double duration_s);

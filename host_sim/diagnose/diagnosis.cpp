@@ -181,10 +181,9 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
     analysis.candidates.push_back(effect == Effect::none ? nominal_model : evaluate(nominal_model, effect));
   }
 
-  rank_candidates(analysis, flight.gyro_input, {&flight}, {inverse_sigma}, mean_speed(flight),
-                  d.end_s - d.start_s);
-  RankingContext context{flight.gyro_input, {&flight}, {inverse_sigma}, mean_speed(flight), d.end_s - d.start_s,
-                         &nominal};
+  const RankingContext context{flight.gyro_input, {&flight}, {inverse_sigma}, mean_speed(flight),
+                               d.end_s - d.start_s, &nominal, d.noise.resolution};
+  rank_candidates(analysis, context);
   select_stepwise(analysis, context, evaluate);
 
   // Onset: for an impulse, the fitted time; otherwise when the nominal motion fitted to

@@ -66,6 +66,7 @@ struct Candidate {
   double score = 0.0;
   double shrink = 0.0;     // 1 - rel_err(with) / rel_err(none), held out
   double shrink_da = 0.0;  // the same for DA
+  double reference_rms_rel_err = 0.0;  // held out, of the model this candidate is ranked against
   bool identifiable = true;
   bool physical = true;
   bool evaluated = true;   // false: not applicable here (reason in note)

@@ -249,6 +249,10 @@ json flight_report(const FlightDiagnosis& d) {
   out["end_s"] = d.end_s;
   out["samples"] = d.samples;
   out["rate_hz"] = d.rate_hz;
+  out["noise_floor"] = {{"sigma_rad_s", vec(d.noise.sigma)},
+                        {"method", d.noise.method},
+                        {"resolution_rad_s", d.noise.resolution},
+                        {"reliable", d.noise.reliable}};
   out["unusable_samples"] = d.unusable_samples;
   if (!d.comment.empty()) out["comment"] = d.comment;
   if (d.flip_period) {

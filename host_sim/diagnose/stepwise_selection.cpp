@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "diagnose/practical_significance.hpp"
+
 namespace aloft::host::diagnose {
 namespace {
 
@@ -100,7 +102,8 @@ bool next_step(Analysis& a, const RankingContext& context, const CandidateEvalua
   const Candidate& reference = step.candidates[static_cast<std::size_t>(r.reference)];
   step.heldout_rms_rel_err_before = step.heldout_rms_rel_err_after = reference.heldout_rms_rel_err;
   step.heldout_rms_da_before_deg = step.heldout_rms_da_after_deg = reference.heldout_rms_da_deg;
-  const bool joins = r.beats_reference && step.candidates[static_cast<std::size_t>(r.best)].shrink >= kMinimumStepShrink;
+  const bool joins = r.beats_reference && step.candidates[static_cast<std::size_t>(r.best)].shrink >= kMinimumStepShrink &&
+                     matters(step.candidates[static_cast<std::size_t>(r.best)], context);
   if (joins) {
     const Candidate& best = step.candidates[static_cast<std::size_t>(r.best)];
     step.added = r.best;
@@ -123,8 +126,23 @@ void select_stepwise(Analysis& analysis, const RankingContext& context, const Ca
   v.effects.clear();
   const auto none = std::find_if(analysis.candidates.begin(), analysis.candidates.end(),
                                  [](const Candidate& c) { return c.effect == Effect::none && c.base.empty(); });
+  std::string why;
+  if (v.effect != Effect::none && v.chosen >= 0 &&
+      !matters(analysis.candidates[static_cast<std::size_t>(v.chosen)], context, &why)) {
+    analysis.notes.push_back(std::string(effect_name(v.effect)) + " beats the noise but is too small to matter: " + why);
+    v.effect = Effect::none;
+    v.equivalent = {Effect::none};
+    v.could_not_judge.clear();
+    if (none != analysis.candidates.end()) {
+      v.chosen = static_cast<int>(none - analysis.candidates.begin());
+      v.heldout_rms_rel_err_after = none->heldout_rms_rel_err;
+      v.heldout_rms_da_after_deg = none->heldout_rms_da_deg;
+    }
+    analysis.steps.front() = first_step(analysis);
+  }
   if (v.effect == Effect::none || v.chosen < 0) {
     if (none != analysis.candidates.end()) analysis.model = *none;
+    judge_confidence(analysis);
     return;
   }
   Candidate current = analysis.candidates[static_cast<std::size_t>(v.chosen)];
@@ -175,6 +193,22 @@ void select_stepwise(Analysis& analysis, const RankingContext& context, const Ca
   if (!current.identifiable && final_effects.size() > 1) {
     v.confident = false;
     v.could_not_judge.push_back("the compound model explains the gap but its parameters are poorly determined");
+  }
+  judge_confidence(analysis);
+}
+
+void judge_confidence(Analysis& analysis) {
+  Verdict& v = analysis.verdict;
+  if (v.effect == Effect::none) {
+    v.confident = false;
+    analysis.notes.push_back("no effect stands out above the noise; a noise-only verdict is never marked confident "
+                             "(effects below what this flight resolves cannot be ruled out)");
+    return;
+  }
+  const double shrink = v.heldout_rms_rel_err_before > 0 ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before : 0.0;
+  if (shrink < kConfidentShrink) {
+    v.confident = false;
+    v.could_not_judge.push_back("the final model leaves most of the held-out gap unexplained");
   }
 }
 

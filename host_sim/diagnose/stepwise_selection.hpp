@@ -35,7 +35,16 @@ using CandidateEvaluator = std::function<Candidate(const Candidate& base, Effect
 // (rank_candidates), and fills analysis.steps, analysis.model and verdict.effects,
 // verdict.heldout_*_after (the final model's). verdict.effect becomes the most important
 // effect of the final model.
+// The first step's winner must also matter (practical_significance.hpp), else the
+// verdict is `none`. Ends with judge_confidence.
 void select_stepwise(Analysis& analysis, const RankingContext& context,
                      const CandidateEvaluator& evaluate);
+
+// A verdict is confident only if it names an effect, every parameter it reports is pinned
+// (identifiable; rank_candidates and select_stepwise clear `confident` otherwise) and the
+// final model takes at least kConfidentShrink of the held-out gap. Never for `none`. The
+// withheld-effect tests measure how often confident verdicts are right.
+constexpr double kConfidentShrink = 0.3;
+void judge_confidence(Analysis& analysis);
 
 }  // namespace aloft::host::diagnose

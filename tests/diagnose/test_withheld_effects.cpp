@@ -67,6 +67,7 @@ TEST_CASE("withheld effects: right class in >= 90 %, none for noise, parameters 
           "[withheld]") {
   int right = 0, total = 0, noise_flights = 0, noise_right = 0, parameter_failures = 0;
   int flagged = 0;  // right class, but the diagnosis itself says its parameters are not pinned
+  int one_effect = 0, confident = 0, confident_right = 0, noise_confident = 0;
   for (const auto& c : aloft::generator::withheld_effect_cases()) {
     const aloft::generator::GeneratedFlight g = aloft::generator::generate_flight(c.spec, c.seed);
     const NominalInertia nominal = NominalInertia::of(g.body.inertia);
@@ -92,9 +93,14 @@ TEST_CASE("withheld effects: right class in >= 90 %, none for noise, parameters 
     }
     ++total;
     right += ok;
+    // A single effect comes out as one effect (or none).
+    one_effect += ok && v.effects.size() <= 1;
+    confident += v.confident;
+    confident_right += v.confident && ok && v.effects.size() <= 1;
     if (g.truth.effect == "none") {
       ++noise_flights;
       noise_right += ok;
+      noise_confident += v.confident;
     }
     parameter_failures += !problem.empty() && identifiable;
     std::string all_effects;
@@ -111,8 +117,14 @@ TEST_CASE("withheld effects: right class in >= 90 %, none for noise, parameters 
   std::printf("withheld effects: %d of %d right (%.1f %%); none on %d of %d noise-only flights; "
               "%d parameter misses; %d misses reported as not identifiable\n",
               right, total, 100.0 * right / total, noise_right, noise_flights, parameter_failures, flagged);
+  std::printf("single effect named alone: %d of %d (%.1f %%); confident %d, right %d\n", one_effect, total,
+              100.0 * one_effect / total, confident, confident_right);
   CHECK(total >= 60);
   CHECK(right >= 0.9 * total);
+  // The stepwise selection never adds a second effect to a single-effect flight it names.
+  CHECK(one_effect == right);
+  CHECK(noise_confident == 0);
+  CHECK(confident_right >= 0.95 * confident);
   CHECK(noise_right == noise_flights);
   CHECK(parameter_failures == 0);
   CHECK(flagged <= total / 20);
@@ -149,4 +161,5 @@ TEST_CASE("compound flights: both effects named on >= 80 %", "[compound]") {
               100.0 * both / total, confident, confident_right);
   CHECK(total == 21);
   CHECK(both >= 0.8 * total);
+  CHECK(confident_right >= 0.95 * confident);
 }
