@@ -318,6 +318,43 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   }
 }
 
+std::array<int, 3> nearest_body_axes(const Eigen::Matrix3d& axes) {
+  std::array<int, 3> body{-1, -1, -1};
+  std::array<bool, 3> taken{false, false, false};
+  for (int round = 0; round < 3; ++round) {
+    double best = -1.0;
+    int bi = 0, bj = 0;
+    for (int i = 0; i < 3; ++i) {
+      if (body[static_cast<std::size_t>(i)] >= 0) continue;
+      for (int j = 0; j < 3; ++j) {
+        if (taken[static_cast<std::size_t>(j)]) continue;
+        if (std::abs(axes(j, i)) > best) {
+          best = std::abs(axes(j, i));
+          bi = i;
+          bj = j;
+        }
+      }
+    }
+    body[static_cast<std::size_t>(bi)] = bj;
+    taken[static_cast<std::size_t>(bj)] = true;
+  }
+  return body;
+}
+
+namespace {
+
+// Fills the user-facing inertia fields from principal moments along `axes` (body axes).
+void describe_inertia(EffectParameters& p, const Vec3& moments, const Mat3& axes, const NominalInertia& nominal) {
+  p.tensor_kg_m2 = axes * moments.asDiagonal() * axes.transpose();
+  const std::array<int, 3> body = nearest_body_axes(nominal.principal_axes.toRotationMatrix());
+  for (int i = 0; i < 3; ++i) {
+    p.principal_body_order_kg_m2(body[static_cast<std::size_t>(i)]) = moments(i);
+    p.nominal_body_order_kg_m2(body[static_cast<std::size_t>(i)]) = nominal.principal_moments(i);
+  }
+}
+
+}  // namespace
+
 EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta) {
   return effect_parameters(model, theta, model.effect);
 }
@@ -330,12 +367,17 @@ EffectParameters effect_parameters(const EffectModel& model, const Eigen::Vector
   switch (effect) {
     case Effect::inertia_moments:
       p.principal_kg_m2 = inertia_moments_of(model.nominal, theta);
+      describe_inertia(p, p.principal_kg_m2, model.nominal.principal_axes.toRotationMatrix(), model.nominal);
       break;
     case Effect::inertia_axes:
     case Effect::sensor_misalignment:
       p.rotation = canonical_rotation(quat_exp<double>(theta.head<3>()), model.nominal,
                                       effect == Effect::inertia_axes);
       p.angle_deg = angle_between<double>(Eigen::Quaterniond::Identity(), p.rotation) * kDeg;
+      if (effect == Effect::inertia_axes) {
+        describe_inertia(p, model.nominal.principal_moments,
+                         p.rotation.toRotationMatrix() * model.nominal.principal_axes.toRotationMatrix(), model.nominal);
+      }
       break;
     case Effect::aero_torque:
       p.k_N_m_s2 = theta(0) * model.nominal.tensor.trace() / 3.0;

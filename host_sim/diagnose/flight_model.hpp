@@ -24,6 +24,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -79,7 +80,13 @@ Eigen::Vector3d body_rate_for_reading(const EffectModel& model, const Flight& fl
 
 // Physical parameters of the effect for a theta (SPEC §4 keys are made from these).
 struct EffectParameters {
-  Eigen::Vector3d principal_kg_m2 = Eigen::Vector3d::Zero();  // inertia_moments
+  Eigen::Vector3d principal_kg_m2 = Eigen::Vector3d::Zero();  // inertia_moments (ascending nominal order)
+  // Inertia effects, as a user reads them (SPEC §4): the moments in the body file's axis
+  // order (entry i: the principal axis nearest body axis i), the nominal ones in the same
+  // order, and the whole tensor in body axes.
+  Eigen::Vector3d principal_body_order_kg_m2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d nominal_body_order_kg_m2 = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d tensor_kg_m2 = Eigen::Matrix3d::Zero();
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  // axes / misalignment
   double angle_deg = 0.0;
   double k_N_m_s2 = 0.0;                                       // aero_torque
@@ -90,6 +97,10 @@ struct EffectParameters {
 };
 // Of `model.effect` (its slice of theta).
 EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta);
+// For principal axis i (columns of `axes`, body axes), the body axis it lies nearest:
+// a permutation, chosen greedily by the largest |cosine|.
+std::array<int, 3> nearest_body_axes(const Eigen::Matrix3d& axes);
+
 // Of one effect of a compound model.
 EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta, Effect effect);
 

@@ -10,6 +10,9 @@ namespace {
 using nlohmann::json;
 
 json vec(const Eigen::Vector3d& v) { return json::array({v(0), v(1), v(2)}); }
+json matrix(const Eigen::Matrix3d& m) {
+  return json::array({vec(m.row(0).transpose()), vec(m.row(1).transpose()), vec(m.row(2).transpose())});
+}
 json quat(const Eigen::Quaterniond& q) { return json::array({q.w(), q.x(), q.y(), q.z()}); }
 
 json names(const std::vector<Effect>& effects) {
@@ -161,11 +164,22 @@ std::string fmt(const char* format, double a, double b = 0, double c = 0, double
   return buffer;
 }
 
+// "moments about body x, y, z: ... kg m^2 (x +12.0 %, y -3.1 %, z -4.9 %); most changed: x".
+std::string moments_text(const EffectParameters& p) {
+  const Eigen::Vector3d m = p.principal_body_order_kg_m2, n = p.nominal_body_order_kg_m2;
+  Eigen::Vector3d change = Eigen::Vector3d::Zero();
+  for (int i = 0; i < 3; ++i) change(i) = n(i) > 0 ? 100.0 * (m(i) / n(i) - 1.0) : 0.0;
+  Eigen::Index most = 0;
+  change.cwiseAbs().maxCoeff(&most);
+  const char* axis[] = {"x", "y", "z"};
+  return fmt("principal moments about body x, y, z %.4g, %.4g, %.4g kg m^2", m(0), m(1), m(2)) +
+         fmt(" (x %+.1f %%, y %+.1f %%, z %+.1f %% from nominal); most changed: ", change(0), change(1), change(2)) +
+         axis[most] + fmt(" (%+.1f %%)", change(most));
+}
+
 std::string params_text(Effect effect, const EffectParameters& p) {
   switch (effect) {
-    case Effect::inertia_moments:
-      return fmt("principal moments %.4g, %.4g, %.4g kg m^2", p.principal_kg_m2(0),
-                 p.principal_kg_m2(1), p.principal_kg_m2(2));
+    case Effect::inertia_moments: return moments_text(p);
     case Effect::inertia_axes:
     case Effect::sensor_misalignment: return fmt("rotated by %.2f deg", p.angle_deg);
     case Effect::aero_torque: return fmt("k = %.3g N m s^2", p.k_N_m_s2);
@@ -224,8 +238,14 @@ std::string analysis_summary(const Analysis& a) {
 json params_json(Effect effect, const EffectParameters& p) {
   switch (effect) {
     case Effect::none: return json::object();
-    case Effect::inertia_moments: return {{"principal_kg_m2", vec(p.principal_kg_m2)}};
+    case Effect::inertia_moments:
+      return {{"principal_kg_m2", vec(p.principal_body_order_kg_m2)},
+              {"nominal_principal_kg_m2", vec(p.nominal_body_order_kg_m2)},
+              {"principal_axes_order", "body file axes x, y, z (each principal axis by the body axis it lies nearest)"},
+              {"principal_ascending_kg_m2", vec(p.principal_kg_m2)},
+              {"tensor_kg_m2", matrix(p.tensor_kg_m2)}};
     case Effect::inertia_axes:
+      return {{"angle_deg", p.angle_deg}, {"rotation", quat(p.rotation)}, {"tensor_kg_m2", matrix(p.tensor_kg_m2)}};
     case Effect::sensor_misalignment:
       return {{"angle_deg", p.angle_deg}, {"rotation", quat(p.rotation)}};
     case Effect::aero_torque: return {{"k_N_m_s2", p.k_N_m_s2}};
