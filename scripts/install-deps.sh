@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages aloft needs, and nothing when they are all present.
-#   scripts/install-deps.sh host   build and run the host program and its tests
+#   scripts/install-deps.sh host   build and run the host program and its tests (gcc, and
+#                                  clang with its sanitizer and libFuzzer runtimes)
 #   scripts/install-deps.sh all    also the ARM cross toolchains and QEMU (target tests)
 # Needs root; uses sudo when not root.
 set -euo pipefail
@@ -8,7 +9,8 @@ set -euo pipefail
 host_packages=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev libbenchmark-dev
-  libcairo2-dev
+  libcairo2-dev libxsimd-dev libpugixml-dev
+  clang libclang-rt-dev
 )
 target_packages=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib

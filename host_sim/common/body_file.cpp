@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "common/commands.hpp"
+#include "common/file_error.hpp"
+#include "common/warning.hpp"
 
 namespace aloft::host {
 namespace {
@@ -60,11 +62,10 @@ void make_measured(const Make& make, InertiaTensor<double>& out, const std::stri
     if (s == Status::ok) {
       const Eigen::Vector3d m = out.principal_moments();
       const double excess = m(2) - m(0) - m(1);
-      std::fprintf(stderr,
-                   "aloft: warning: %s: principal moments break the triangle inequality by "
-                   "%.1f %% of their sum (measured moments of a flat body?); simulating them "
-                   "as given\n",
-                   source.c_str(), 100.0 * excess / m.sum());
+      char percent[32];
+      std::snprintf(percent, sizeof percent, "%.1f", 100.0 * excess / m.sum());
+      warn(source + ": principal moments break the triangle inequality by " + percent +
+           " % of their sum (measured moments of a flat body?); simulating them as given");
     }
   }
   check(s, source);
@@ -127,15 +128,49 @@ InertiaTensor<double> parse_inertia(const json& body, double mass, bool has_mass
   return out;
 }
 
-}  // namespace
+// nlohmann's message without its internal "[json.exception.parse_error.101] " code.
+std::string without_library_code(const std::string& message) {
+  if (message.rfind("[json.exception.", 0) != 0) return message;
+  const std::size_t end = message.find("] ");
+  return end == std::string::npos ? message : message.substr(end + 2);
+}
 
-Body parse_body_json(const std::string& text, const std::string& source) {
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    fail(source, std::string("not valid JSON (") + e.what() + ")");
+// SPEC §2's keys at each level; anything else is most likely a misspelling ("intertia",
+// "marker"), which would otherwise be ignored without a word.
+void warn_unknown_keys(const json& object, std::initializer_list<const char*> known,
+                       const std::string& where, const std::string& source) {
+  if (!object.is_object()) return;
+  std::string unknown;
+  for (const auto& item : object.items()) {
+    bool found = false;
+    for (const char* k : known) found = found || item.key() == k;
+    if (!found) unknown += (unknown.empty() ? "\"" : ", \"") + where + item.key() + "\"";
   }
+  if (!unknown.empty()) warn(source + ": unknown key(s) " + unknown + " ignored (SPEC §2)");
+}
+
+void warn_unknown_body_keys(const json& j, const std::string& source) {
+  warn_unknown_keys(j, {"name", "mass", "inertia", "markers", "imu"}, "", source);
+  if (j.contains("inertia")) {
+    const json& inertia = j["inertia"];
+    warn_unknown_keys(inertia, {"tensor", "principal", "axes", "shape"}, "inertia.", source);
+    if (inertia.is_object() && inertia.contains("shape")) {
+      const json& shape = inertia["shape"];
+      if (shape.is_object() && shape.contains("cylinder")) {
+        warn_unknown_keys(shape["cylinder"], {"radius", "height"}, "inertia.shape.cylinder.", source);
+      }
+      if (shape.is_object() && shape.contains("box")) {
+        warn_unknown_keys(shape["box"], {"x", "y", "z"}, "inertia.shape.box.", source);
+      }
+      if (shape.is_object() && shape.contains("sphere")) {
+        warn_unknown_keys(shape["sphere"], {"radius"}, "inertia.shape.sphere.", source);
+      }
+    }
+  }
+  if (j.contains("imu")) warn_unknown_keys(j["imu"], {"rotation"}, "imu.", source);
+}
+
+Body parse_body(const json& j, const std::string& source) {
   if (!j.is_object()) fail(source, "a body file must be a JSON object");
   Body body;
   if (j.contains("name")) {
@@ -156,15 +191,30 @@ Body parse_body_json(const std::string& text, const std::string& source) {
     if (!imu.is_object()) fail(source, "\"imu\" must be an object");
     if (imu.contains("rotation")) body.imu_to_body = quaternion(imu["rotation"], "imu.rotation", source);
   }
+  warn_unknown_body_keys(j, source);
   return body;
 }
 
+}  // namespace
+
+Body parse_body_json(const std::string& text, const std::string& source) {
+  // Every exception of the JSON library (syntax, a number like 1e400 out of range, a
+  // type mismatch) becomes aloft's one line naming the file, without the library's code.
+  try {
+    return parse_body(json::parse(text), source);
+  } catch (const json::exception& e) {
+    fail(source, "not a valid body file: " + without_library_code(e.what()));
+  }
+}
+
 Body read_body_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open body file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_body_json(text.str(), path);
+  return with_file_context(path, [&] {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot open body file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_body_json(text.str(), path);
+  });
 }
 
 }  // namespace aloft::host

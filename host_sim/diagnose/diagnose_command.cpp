@@ -12,6 +12,7 @@
 #include "common/body_file.hpp"
 #include "common/commands.hpp"
 #include "common/option_checks.hpp"
+#include "diagnose/airborne_windows.hpp"
 #include "diagnose/diagnosis.hpp"
 #include "diagnose/flight_input.hpp"
 #include "diagnose/gap_plot.hpp"
@@ -51,6 +52,10 @@ std::pair<double, double> parse_window(const std::string& text) {
   }
 }
 
+double log_duration(const ImuLog& log) {
+  return log.time_s.size() > 1 ? log.time_s.back() - log.time_s.front() : 0.0;
+}
+
 std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 void require_enough_samples(const diagnose::Flight& flight, const std::string& source) {
@@ -75,6 +80,7 @@ void run_diagnose(const DiagnoseOptions& o) {
 
   std::vector<diagnose::Flight> flights;
   bool session = false;
+  bool found_by_detector = false;
   std::string source;
   if (!o.imu.empty()) {
     source = o.imu;
@@ -86,6 +92,20 @@ void run_diagnose(const DiagnoseOptions& o) {
       const auto [a, b] = parse_window(o.window);
       flights.push_back(diagnose::flight_from_imu(log, body, a, b, file_name(o.imu) + " " + o.window));
       source = o.imu + " (window " + o.window + ")";
+    } else if (log_duration(log) > diagnose::kLongLog_s) {
+      // A long log holds rest or several throws: never diagnose it as one flight.
+      char length[32];
+      std::snprintf(length, sizeof length, "%.1f s", log_duration(log));
+      if (log.accel_m_s2.empty()) {
+        throw Error(o.imu + ": a " + length + " log without an accelerometer to find its flights by; give --segments or --window");
+      }
+      const std::vector<Segment> windows = diagnose::airborne_windows(log);
+      if (windows.empty()) {
+        throw Error(o.imu + ": the flight detector finds no airborne window in this " + length + " log; give --segments or --window");
+      }
+      session = true;
+      found_by_detector = true;
+      flights = diagnose::flights_from_segments(log, body, windows);
     } else {
       flights.push_back(diagnose::flight_from_imu(log, body, -INFINITY, INFINITY, file_name(o.imu)));
     }
@@ -100,7 +120,11 @@ void run_diagnose(const DiagnoseOptions& o) {
 
   nlohmann::json report;
   if (session) {
-    const diagnose::SessionDiagnosis d = diagnose::diagnose_session(flights, nominal, o.threads);
+    diagnose::SessionDiagnosis d = diagnose::diagnose_session(flights, nominal, o.threads);
+    if (found_by_detector) {
+      d.pooled.notes.push_back(std::to_string(flights.size()) +
+                               " flight(s) found by the accelerometer's flight detector (no --segments or --window given)");
+    }
     report = diagnose::session_report(d);
     std::cout << diagnose::session_summary(d);
     if (!o.plot.empty()) diagnose::write_session_plots(d, nominal, o.plot);
@@ -111,6 +135,13 @@ void run_diagnose(const DiagnoseOptions& o) {
     std::cout << diagnose::flight_summary(d);
     if (!o.plot.empty()) diagnose::write_flight_plots(d, nominal, o.plot);
   }
+  // The same words as `aloft study`'s note on its nominal figure (README, "Study and
+  // diagnose on the same data"): the two commands answer different questions.
+  const char* const measures =
+      "nominal model from the initial rate fitted to the whole flight (its best case); "
+      "aloft study seeds a simulation from each measured sample instead, which drifts further";
+  report["baseline"]["measures"] = measures;
+  std::cout << "  baseline measures: " << measures << "\n";
   if (!o.json.empty()) {
     write_file_atomically(o.json, [&](std::ostream& out) { out << report.dump(2) << "\n"; });
   }

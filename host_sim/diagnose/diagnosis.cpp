@@ -5,6 +5,7 @@
 
 #include "diagnose/candidate_ranking.hpp"
 #include "diagnose/held_out.hpp"
+#include "diagnose/plausibility.hpp"
 #include "diagnose/stepwise_selection.hpp"
 
 namespace aloft::host::diagnose {
@@ -181,10 +182,12 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
     analysis.candidates.push_back(effect == Effect::none ? nominal_model : evaluate(nominal_model, effect));
   }
 
+  rule_out_senseless(analysis.candidates);
   const RankingContext context{flight.gyro_input, {&flight}, {inverse_sigma}, mean_speed(flight),
                                d.end_s - d.start_s, &nominal, d.noise.resolution};
   rank_candidates(analysis, context);
   select_stepwise(analysis, context, evaluate);
+  attach_flight_tensor_report(analysis, flight, nominal);
 
   // Onset: for an impulse, the fitted time; otherwise when the nominal motion fitted to
   // the first fifth of the flight stops explaining the data. None when the verdict is none.

@@ -22,6 +22,7 @@
 #include "diagnose/flip_period.hpp"
 #include "diagnose/invariants.hpp"
 #include "diagnose/noise_floor.hpp"
+#include "diagnose/tensor_report.hpp"
 #include "diagnose/time_gaps.hpp"
 
 namespace aloft::host::diagnose {
@@ -119,6 +120,7 @@ struct Verdict {
 
 struct Analysis {
   Baseline baseline;
+  std::optional<TensorReport> tensor;  // SPEC §4 `tensor` (tensor_report.hpp)
   Where where;
   std::vector<Candidate> candidates;  // best first
   Verdict verdict;
@@ -160,6 +162,7 @@ struct FlipPeriodSummary {
 
 struct SessionDiagnosis {
   Analysis pooled;
+  bool single_flight = false;  // one judged flight: `pooled` is that flight's own analysis
   std::vector<FlightDiagnosis> flights;
   std::optional<FlipPeriodSummary> flip_period;
 };

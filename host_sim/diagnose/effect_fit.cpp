@@ -72,6 +72,22 @@ Eigen::VectorXd standard_errors(const Eigen::MatrixXd& normal, int count, double
   return se;
 }
 
+// Covariance of the first `count` parameters (initial rates marginalised), over the
+// directions the data informs.
+Eigen::MatrixXd covariance(const Eigen::MatrixXd& normal, int count, double variance) {
+  if (count == 0 || normal.rows() == 0) return Eigen::MatrixXd::Zero(count, count);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(normal);
+  const Eigen::VectorXd& values = solver.eigenvalues();
+  const double cutoff = 1e-12 * std::max(values.maxCoeff(), 1e-300);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(count, count);
+  for (int k = 0; k < values.size(); ++k) {
+    if (values(k) <= cutoff) continue;
+    const Eigen::VectorXd v = solver.eigenvectors().col(k).head(count);
+    out += v * v.transpose() / values(k);
+  }
+  return out * variance;
+}
+
 struct Setup {
   Effect effect;
   const NominalInertia* nominal;
@@ -123,6 +139,7 @@ EffectFit result_of(const Setup& setup, const LeastSquaresResult& solution, int 
   const int dof = std::max(1, fit.residual_count - parameters);
   fit.theta_standard_error =
       standard_errors(solution.normal_matrix, shared_count, std::max(fit.cost / dof, 1e-12));
+  fit.theta_covariance = covariance(solution.normal_matrix, shared_count, std::max(fit.cost / dof, 1e-12));
   fit.converged = std::isfinite(fit.cost);
   return fit;
 }
@@ -135,10 +152,14 @@ std::vector<Eigen::VectorXd> starting_rates(const Setup& setup, const EffectFit*
   const bool rigid = setup.effect == Effect::internal_damping;
   const EffectModel model{rigid ? Effect::none : setup.effect, *setup.nominal, setup.impulse_time_s, setup.base};
   const Eigen::VectorXd held = rigid ? Eigen::VectorXd(theta.head(model_parameter_count(model))) : theta;
+  // At theta = 0 every effect is the nominal model, whose fitted rates are already the
+  // answer: nothing to refine (never so for a compound model: its base is fitted).
+  const bool nominal_model = nominal_fit != nullptr && setup.base.empty() && (rigid || theta.isZero());
   std::vector<Eigen::VectorXd> rates;
   for (std::size_t i = 0; i < setup.data->size(); ++i) {
     const Vec3 guess = starting_rate((*setup.data)[i], setup.refs[i], nominal_fit, i, *setup.nominal);
-    rates.emplace_back(fit_initial_state(model, (*setup.data)[i], setup.refs[i], held, &guess).omega_ref);
+    rates.emplace_back(nominal_model ? guess
+                                     : fit_initial_state(model, (*setup.data)[i], setup.refs[i], held, &guess).omega_ref);
   }
   return rates;
 }

@@ -41,6 +41,9 @@ struct EffectFit {
   // Standard errors of theta from cost/dof * (J^T J)^-1 (initial rates marginalised);
   // infinite where the data does not inform a parameter.
   Eigen::VectorXd theta_standard_error;
+  // The same errors' full covariance (uninformed directions left out: their variance is
+  // not bounded by the data).
+  Eigen::MatrixXd theta_covariance;
   bool converged = true;
 };
 

@@ -11,6 +11,7 @@
 
 #include "aloft/deviation.hpp"
 #include "common/atomic_file.hpp"
+#include "common/axis_ticks.hpp"
 #include "common/figure_render.hpp"
 #include "common/commands.hpp"
 
@@ -29,11 +30,22 @@ struct Series {
 struct Panel {
   std::string title, y_label;
   std::vector<Series> series;
+  bool from_zero = false;  // a magnitude (DA, relative error): the axis starts at 0
 };
 
-void draw_panel(cairo_t* cr, const Panel& panel, double top, double height) {
-  const double left = 80, right = kWidth - 20;
-  const double plot_top = top + 28, plot_bottom = top + height - 36;
+void show_text_at(cairo_t* cr, double x, double y, const std::string& text) {
+  cairo_move_to(cr, x, y);
+  cairo_show_text(cr, text.c_str());
+}
+
+double text_width(cairo_t* cr, const std::string& text) {
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, text.c_str(), &e);
+  return e.x_advance;
+}
+
+// Smallest and largest finite values of the series along x (first) and y (second).
+std::pair<std::pair<double, double>, std::pair<double, double>> data_range(const Panel& panel) {
   double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
   for (const Series& s : panel.series) {
     for (std::size_t i = 0; i < s.x.size(); ++i) {
@@ -44,43 +56,81 @@ void draw_panel(cairo_t* cr, const Panel& panel, double top, double height) {
       y1 = std::max(y1, s.y[i]);
     }
   }
-  if (!(x1 > x0)) x1 = x0 + 1;
-  if (!(y1 > y0)) y1 = y0 + 1;
-  const double pad = 0.05 * (y1 - y0);
-  y0 -= pad;
-  y1 += pad;
-  auto px = [&](double x) { return left + (x - x0) / (x1 - x0) * (right - left); };
-  auto py = [&](double y) { return plot_bottom - (y - y0) / (y1 - y0) * (plot_bottom - plot_top); };
+  if (!std::isfinite(x0)) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  return {{x0, x1}, {y0, y1}};
+}
 
+// Ticks and tick labels on both axes, the axis titles, the frame.
+void draw_axes(cairo_t* cr, const Panel& panel, const AxisTicks& xt, const AxisTicks& yt,
+               double left, double right, double plot_top, double plot_bottom,
+               const std::function<double(double)>& px, const std::function<double(double)>& py) {
   cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-  cairo_set_font_size(cr, 14);
-  cairo_move_to(cr, left, top + 18);
-  cairo_show_text(cr, panel.title.c_str());
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, 11);
   cairo_set_line_width(cr, 1);
   cairo_rectangle(cr, left, plot_top, right - left, plot_bottom - plot_top);
   cairo_stroke(cr);
-  char text[64];
-  for (int i = 0; i <= 4; ++i) {
-    const double y = y0 + (y1 - y0) * i / 4.0;
-    std::snprintf(text, sizeof text, "%.3g", y);
-    cairo_move_to(cr, 8, py(y) + 4);
-    cairo_show_text(cr, text);
-    const double x = x0 + (x1 - x0) * i / 4.0;
-    std::snprintf(text, sizeof text, "%.3f", x);
-    cairo_move_to(cr, px(x) - 14, plot_bottom + 16);
-    cairo_show_text(cr, text);
+  for (double y : yt.values) {
+    const std::string label = tick_label(y, yt.decimals);
+    show_text_at(cr, left - 6 - text_width(cr, label), py(y) + 4, label);
+    cairo_move_to(cr, left - 3, py(y));
+    cairo_line_to(cr, left, py(y));
   }
-  cairo_move_to(cr, (left + right) / 2 - 20, plot_bottom + 30);
-  cairo_show_text(cr, "time (s)");
-  cairo_move_to(cr, 8, plot_top - 6);
+  for (double x : xt.values) {
+    const std::string label = tick_label(x, xt.decimals);
+    show_text_at(cr, px(x) - text_width(cr, label) / 2, plot_bottom + 15, label);
+    cairo_move_to(cr, px(x), plot_bottom);
+    cairo_line_to(cr, px(x), plot_bottom + 3);
+  }
+  cairo_stroke(cr);
+  show_text_at(cr, right - text_width(cr, "time since release (s)"), plot_bottom + 30,
+               "time since release (s)");
+  // The y title runs up the left margin, clear of the tick labels.
+  cairo_save(cr);
+  cairo_move_to(cr, 16, (plot_top + plot_bottom) / 2 + text_width(cr, panel.y_label) / 2);
+  cairo_rotate(cr, -M_PI / 2);
   cairo_show_text(cr, panel.y_label.c_str());
-  double legend_x = right - 260;
+  cairo_restore(cr);
+}
+
+void draw_panel(cairo_t* cr, const Panel& panel, double top, double height) {
+  const double left = 80, right = kWidth - 20;
+  const double plot_top = top + 28, plot_bottom = top + height - 40;
+  const auto [x_range, y_range] = data_range(panel);
+  const AxisTicks xt = round_ticks(x_range.first, x_range.second, 8);
+  const AxisTicks yt = round_ticks(panel.from_zero ? 0.0 : y_range.first, y_range.second, 4);
+  const double x0 = xt.first(), x1 = xt.last(), y0 = yt.first(), y1 = yt.last();
+  const std::function<double(double)> px = [&](double x) {
+    return left + (x - x0) / (x1 - x0) * (right - left);
+  };
+  const std::function<double(double)> py = [&](double y) {
+    return plot_bottom - (y - y0) / (y1 - y0) * (plot_bottom - plot_top);
+  };
+
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+  cairo_set_font_size(cr, 14);
+  show_text_at(cr, left, top + 18, panel.title);
+  draw_axes(cr, panel, xt, yt, left, right, plot_top, plot_bottom, px, py);
+
+  // The legend on the title's line, right-aligned, entries laid out by their widths; inside
+  // the plot's top right corner if the title leaves no room.
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+  cairo_set_font_size(cr, 14);
+  const double title_end = left + text_width(cr, panel.title) + 20;
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, 11);
+  double legend_x = right;
+  for (const Series& s : panel.series) legend_x -= 18 + text_width(cr, s.label) + 16;
+  const double legend_y = legend_x >= title_end ? top + 10 : plot_top + 8;
+  if (legend_x < title_end) legend_x -= 8;
   for (const Series& s : panel.series) {
     cairo_set_source_rgb(cr, s.r, s.g, s.b);
     cairo_set_line_width(cr, 1.2);
+    cairo_new_path(cr);
+    cairo_rectangle(cr, left, plot_top, right - left, plot_bottom - plot_top);
+    cairo_save(cr);
+    cairo_clip(cr);
     bool pen_down = false;
     for (std::size_t i = 0; i < s.x.size(); ++i) {
       if (!std::isfinite(s.y[i])) {
@@ -95,12 +145,12 @@ void draw_panel(cairo_t* cr, const Panel& panel, double top, double height) {
       }
     }
     cairo_stroke(cr);
-    cairo_rectangle(cr, legend_x, top + 8, 14, 4);
+    cairo_restore(cr);
+    cairo_rectangle(cr, legend_x, legend_y, 14, 4);
     cairo_fill(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_move_to(cr, legend_x + 18, top + 14);
-    cairo_show_text(cr, s.label.c_str());
-    legend_x += 130;
+    show_text_at(cr, legend_x + 18, legend_y + 6, s.label);
+    legend_x += 18 + text_width(cr, s.label) + 16;
   }
 }
 
@@ -108,9 +158,9 @@ std::vector<Panel> panels_of(const FlightDiagnosis& d) {
   const Flight& flight = *d.flight;
   const Analysis& a = d.analysis;
   std::vector<Panel> panels(3);
-  panels[0] = {"Deviation angle, held out", "DA (deg)", {}};
-  panels[1] = {"Relative error, held out", "|w_sim - w_meas| / |w_meas|", {}};
-  panels[2] = {"Invariants of the measured motion (nominal tensor)", "relative to mean (%)", {}};
+  panels[0] = {"Deviation angle, held out", "DA (deg)", {}, true};
+  panels[1] = {"Relative error, held out", "|\u03c9_sim \u2212 \u03c9_meas| / |\u03c9_meas|", {}, true};
+  panels[2] = {"Invariants of the measured motion (nominal tensor)", "change from mean (%)", {}, false};
   auto add_gap = [&](const Candidate& c, const std::string& label, double r, double g, double b) {
     Series da{label, {}, {}, r, g, b}, rel{label, {}, {}, r, g, b};
     for (std::size_t k = 0; k < flight.size(); ++k) {
@@ -182,7 +232,7 @@ std::string safe_name(const std::string& name) {
 }
 
 std::string title_of(const FlightDiagnosis& d) {
-  return "aloft diagnose: flight " + d.name + " -- verdict " + effect_name(d.analysis.verdict.effect);
+  return "aloft diagnose: flight " + d.name + " \u2014 verdict " + effect_name(d.analysis.verdict.effect);
 }
 
 }  // namespace

@@ -90,8 +90,21 @@ json steps_json(const Analysis& a) {
   return out;
 }
 
+json tensor_json(const TensorReport& t) {
+  static const char* axis[] = {"x", "y", "z"};
+  return {{"consistent_with_nominal", t.consistent_with_nominal},
+          {"ratio_best", {t.ratio_best(0), t.ratio_best(1)}},
+          {"ratio_95", {{t.ratio_low(0), t.ratio_high(0)}, {t.ratio_low(1), t.ratio_high(1)}}},
+          {"axes_95_deg", t.axes_known ? json(t.axes_95_deg) : json(nullptr)},
+          {"ratio_nominal", {t.ratio_nominal(0), t.ratio_nominal(1)}},
+          {"ratios", {std::string("I") + axis[1] + "/I" + axis[0], std::string("I") + axis[2] + "/I" + axis[0]}},
+          {"flights", t.flights},
+          {"method", t.method}};
+}
+
 json analysis_json(const Analysis& a) {
   json out;
+  if (a.tensor) out["tensor"] = tensor_json(*a.tensor);
   out["baseline"] = {{"rms_da_deg", a.baseline.rms_da_deg}, {"rms_rel_err", a.baseline.rms_rel_err}};
   json where;
   where["onset_s"] = a.where.onset_s ? json(*a.where.onset_s) : json(nullptr);
@@ -199,6 +212,7 @@ std::string params_text(Effect effect, const EffectParameters& p) {
 
 std::string analysis_summary(const Analysis& a) {
   std::ostringstream out;
+  if (a.tensor) out << "  " << tensor_summary(*a.tensor);
   out << fmt("  baseline (nominal model): RMS DA %.3f deg, RMS relative error %.4f", a.baseline.rms_da_deg,
              a.baseline.rms_rel_err)
       << fmt(", %.2f x the noise floor", a.where.gap_over_noise) << "\n";
@@ -230,6 +244,7 @@ std::string analysis_summary(const Analysis& a) {
     out << fmt(": the held-out gap (RMS DA %.3f deg) is what the noise explains", v.heldout_rms_da_before_deg) << "\n";
   }
   for (const std::string& s : v.could_not_judge) out << "  could not judge: " << s << "\n";
+  for (const std::string& s : a.notes) out << "  note: " << s << "\n";
   return out.str();
 }
 
@@ -294,7 +309,7 @@ json flight_report(const FlightDiagnosis& d) {
 
 json session_report(const SessionDiagnosis& s) {
   json out = analysis_json(s.pooled);
-  out["heldout"] = "leave_one_flight_out";
+  out["heldout"] = s.single_flight ? "within_the_flight" : "leave_one_flight_out";
   json flights = json::array();
   for (const FlightDiagnosis& d : s.flights) flights.push_back(flight_report(d));
   out["flights"] = flights;
@@ -321,7 +336,9 @@ std::string flight_summary(const FlightDiagnosis& d) {
 
 std::string session_summary(const SessionDiagnosis& s) {
   std::ostringstream out;
-  out << "session of " << s.flights.size() << " flights (pooled, held out: leave one flight out)\n"
+  out << "session of " << s.flights.size()
+      << (s.single_flight ? " flight(s), one judged (its own verdict, held out within the flight)\n"
+                          : " flights (pooled, held out: leave one flight out)\n")
       << analysis_summary(s.pooled);
   if (s.flip_period) {
     out << fmt("  flip period from the first sample, %.0f flights: mean error %.1f %% nominal", s.flip_period->flights,

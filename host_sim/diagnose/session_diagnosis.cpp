@@ -7,31 +7,19 @@
 // by a fit that saw it.
 #include <algorithm>
 #include <cctype>
-#include <atomic>
 #include <cmath>
-#include <thread>
+#include <optional>
 
+#include "common/parallel_for.hpp"
 #include "diagnose/candidate_ranking.hpp"
 #include "diagnose/diagnosis.hpp"
 #include "diagnose/held_out.hpp"
+#include "diagnose/plausibility.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-
-// Runs body(i) for i in [0, count) on up to `threads` threads.
-template <typename Body>
-void parallel_for(std::size_t count, int threads, Body body) {
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i = next++; i < count; i = next++) body(i);
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads && static_cast<std::size_t>(t) < count; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-}
 
 struct PooledData {
   std::vector<const Flight*> flights;
@@ -39,7 +27,158 @@ struct PooledData {
   std::vector<FlightData> all;                  // every sample of every flight
   std::vector<std::array<FlightData, 2>> train;  // fold training masks per flight
   std::vector<Folds> folds;
+  std::vector<const Analysis*> own;              // each flight's own analysis
 };
+
+const Candidate* candidate_of(const Analysis& a, Effect effect) {
+  for (const Candidate& c : a.candidates) {
+    if (c.effect == effect && c.evaluated) return &c;
+  }
+  return nullptr;
+}
+
+// The nominal fits of the flights' own analyses as one fit of the pooled flights.
+EffectFit per_flight_nominal_fit(const PooledData& pool) {
+  EffectFit fit;
+  fit.effect = Effect::none;
+  for (const Analysis* a : pool.own) {
+    const EffectFit& own = candidate_of(*a, Effect::none)->fit;
+    fit.flights.push_back(own.flights.front());
+    fit.cost += own.cost;
+    fit.residual_count += own.residual_count;
+  }
+  return fit;
+}
+
+void fill_heldout_figures(Candidate& c, const std::vector<GapSums>& sums) {
+  GapSums total;
+  for (const GapSums& s : sums) {
+    total.chi_square += s.chi_square;
+    total.residuals += s.residuals;
+    total.da_sq += s.da_sq;
+    total.rel_sq += s.rel_sq;
+    total.samples += s.samples;
+  }
+  c.heldout_chi_square = total.chi_square;
+  c.heldout_residuals = total.residuals;
+  c.heldout_rms_da_deg = total.rms_da_deg();
+  c.heldout_rms_rel_err = total.rms_rel_err();
+}
+
+// The nominal model pooled: each flight's own nominal fit and its own held-out
+// predictions (nothing is shared, so leaving a flight out changes nothing), so the pooled
+// baseline is the flights' baselines put together.
+Candidate nominal_candidate(const PooledData& pool, const EffectFit& none_all) {
+  Candidate c;
+  c.effect = Effect::none;
+  c.fit = none_all;
+  std::vector<GapSums> sums(pool.flights.size());
+  for (std::size_t j = 0; j < pool.flights.size(); ++j) {
+    const Flight& flight = *pool.flights[j];
+    const std::vector<Vec3>& heldout = candidate_of(*pool.own[j], Effect::none)->heldout_readings.front();
+    for (std::size_t k = 0; k < flight.size(); ++k) {
+      if (flight.usable[k]) sums[j].add(heldout[k], flight.omega[k], pool.inverse_sigma[j]);
+    }
+    c.heldout_readings.push_back(heldout);
+    c.heldout_theta.push_back(Eigen::VectorXd());
+  }
+  fill_heldout_figures(c, sums);
+  return c;
+}
+
+// The median over flights of each parameter of the flights' own fits of `effect`.
+std::optional<Eigen::VectorXd> median_of_flights(Effect effect, const PooledData& pool) {
+  std::vector<Eigen::VectorXd> thetas;
+  for (const Analysis* a : pool.own) {
+    const Candidate* c = candidate_of(*a, effect);
+    if (c != nullptr && c->fit.theta.allFinite()) thetas.push_back(c->fit.theta);
+  }
+  if (thetas.empty()) return std::nullopt;
+  Eigen::VectorXd median(thetas.front().size());
+  for (Eigen::Index i = 0; i < median.size(); ++i) {
+    std::vector<double> values;
+    for (const Eigen::VectorXd& t : thetas) values.push_back(t(i));
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
+    median(i) = values[values.size() / 2];
+  }
+  return median;
+}
+
+// The shared effect fitted to every flight, started from nominal and from the median of
+// the flights' own estimates: a pool of flights that each find the effect must not lose it
+// because a start from nominal fell into another basin. The lower cost wins.
+EffectFit fit_pooled(Effect effect, const NominalInertia& nominal, const PooledData& pool,
+                     const EffectFit& none_all) {
+  EffectFit best = fit_effect(effect, nominal, pool.all, &none_all);
+  const std::optional<Eigen::VectorXd> median = median_of_flights(effect, pool);
+  if (median && !median->isZero()) {
+    EffectFit seeded = fit_effect(effect, nominal, pool.all, &none_all, &*median);
+    if (seeded.cost < best.cost) best = std::move(seeded);
+  }
+  return best;
+}
+
+// Leave one flight out: the effect from every flight but j, then flight j's initial rate
+// on one fold of its samples, judged on the other.
+void judge_leaving_flights_out(Candidate& c, const NominalInertia& nominal, const PooledData& pool,
+                               const EffectFit& none_all, int threads) {
+  const std::size_t count = pool.flights.size();
+  c.heldout_readings.assign(count, {});
+  std::vector<GapSums> sums(count);
+  c.heldout_theta = leave_one_flight_out(c.fit, nominal, pool.all);
+  parallel_for(count, static_cast<unsigned>(std::max(threads, 1)), [&](std::size_t j) {
+    EffectFit others = c.fit;
+    others.theta = c.heldout_theta[j];
+    const Flight& flight = *pool.flights[j];
+    std::vector<Vec3> heldout(flight.size(), Vec3::Zero());
+    std::vector<Vec3> readings;
+    EffectFit none_j;
+    none_j.effect = Effect::none;
+    none_j.flights = {none_all.flights[j]};
+    for (std::size_t f = 0; f < 2; ++f) {
+      const EffectFit rates = fit_initial_rates(others, nominal, {pool.train[j][f]}, &none_j);
+      predict(rates, nominal, 0, flight, readings);
+      for (std::size_t k = 0; k < flight.size(); ++k) {
+        if (!pool.folds[j].judge[f][k]) continue;
+        heldout[k] = readings[k];
+        if (flight.usable[k]) sums[j].add(readings[k], flight.omega[k], pool.inverse_sigma[j]);
+      }
+    }
+    c.heldout_readings[j] = std::move(heldout);
+  });
+  fill_heldout_figures(c, sums);
+}
+
+// Where most flights agree on an effect and the pool does not, which flights disagree
+// (and where the pool agrees, which flights name something else).
+void note_disagreeing_flights(Analysis& pooled, const PooledData& pool) {
+  std::vector<Effect> named;
+  for (const Analysis* a : pool.own) named.push_back(a->verdict.effect);
+  Effect majority = Effect::none;
+  std::size_t most = 0;
+  for (Effect e : named) {
+    const std::size_t votes = static_cast<std::size_t>(std::count(named.begin(), named.end(), e));
+    if (votes > most) {
+      most = votes;
+      majority = e;
+    }
+  }
+  const std::vector<Effect>& same = pooled.verdict.equivalent;
+  const bool pool_agrees = std::find(same.begin(), same.end(), majority) != same.end();
+  std::string names;
+  for (std::size_t j = 0; j < pool.flights.size(); ++j) {
+    const Effect own = pool.own[j]->verdict.effect;
+    if (std::find(same.begin(), same.end(), own) != same.end()) continue;
+    names += (names.empty() ? "" : ", ") + pool.flights[j]->name + " (" + effect_name(own) + ")";
+  }
+  if (names.empty()) return;
+  if (!pool_agrees && 2 * most > named.size()) {
+    pooled.notes.push_back(std::to_string(most) + " of " + std::to_string(named.size()) + " flights name " +
+                           effect_name(majority) + " but the pool does not; flights that disagree with the pool: " + names);
+  } else {
+    pooled.notes.push_back("flights whose own verdict differs from the pool's: " + names);
+  }
+}
 
 bool mentions_intermediate(const std::string& comment) {
   std::string lower = comment;
@@ -89,7 +228,8 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
                                   int threads) {
   SessionDiagnosis session;
   session.flights.resize(flights.size());
-  parallel_for(flights.size(), threads,
+  const unsigned workers = static_cast<unsigned>(std::max(threads, 1));
+  parallel_for(flights.size(), workers,
                [&](std::size_t i) { session.flights[i] = diagnose_flight(flights[i], nominal); });
 
   // Only flights that could be judged on their own take part in the pooled analysis.
@@ -105,6 +245,7 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
     }
     const Vec3 inv = d.noise.sigma.cwiseInverse();
     pool.flights.push_back(&flights[i]);
+    pool.own.push_back(&d.analysis);
     pool.inverse_sigma.push_back(inv);
     pool.all.push_back(FlightData{&flights[i], all_samples(flights[i].size()), inv});
     pool.folds.push_back(interleaved_folds(flights[i].size()));
@@ -113,6 +254,17 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
   }
   Analysis& analysis = session.pooled;
   const std::size_t count = pool.flights.size();
+  if (count == 1) {
+    // One flight: nothing to pool, so the top level is that flight's own analysis (held
+    // out within the flight), said so.
+    std::vector<std::string> notes = std::move(analysis.notes);
+    analysis = *pool.own.front();
+    notes.push_back("one judged flight (" + pool.flights.front()->name +
+                    "): the top level is that flight's own verdict, held out within the flight");
+    analysis.notes.insert(analysis.notes.end(), notes.begin(), notes.end());
+    session.single_flight = true;
+    return session;
+  }
   if (count < 2) {
     analysis.verdict.confident = false;
     analysis.verdict.could_not_judge.push_back(
@@ -120,7 +272,8 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
     return session;
   }
 
-  const EffectFit none_all = fit_effect(Effect::none, nominal, pool.all, nullptr);
+  // One gap, one definition: the pooled nominal model is every flight's own nominal fit.
+  const EffectFit none_all = per_flight_nominal_fit(pool);
   // Baseline and where, pooled over every flight's nominal fit.
   {
     GapSums sums;
@@ -167,54 +320,22 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
       analysis.candidates.push_back(std::move(c));
       continue;
     }
-    c.fit = effect == Effect::none ? none_all : fit_effect(effect, nominal, pool.all, &none_all);
-    EffectModel model{effect, nominal, 0.0};
-    c.params = effect_parameters(model, c.fit.theta);
-    c.heldout_readings.assign(count, {});
-    std::vector<GapSums> sums(count);
-    const std::vector<Eigen::VectorXd> left_out =
-        effect == Effect::none ? std::vector<Eigen::VectorXd>(count, c.fit.theta)
-                               : leave_one_flight_out(c.fit, nominal, pool.all);
-    c.heldout_theta = left_out;
-    parallel_for(count, threads, [&](std::size_t j) {
-      // The effect from every flight but j, then flight j's initial rate on one fold of
-      // its samples, judged on the other.
-      EffectFit others = c.fit;
-      others.theta = left_out[j];
-      const Flight& flight = *pool.flights[j];
-      std::vector<Vec3> heldout(flight.size(), Vec3::Zero());
-      std::vector<Vec3> readings;
-      for (int f = 0; f < 2; ++f) {
-        EffectFit none_j;
-        none_j.effect = Effect::none;
-        none_j.theta = Eigen::VectorXd();
-        none_j.flights = {none_all.flights[j]};
-        const EffectFit rates = fit_initial_rates(others, nominal, {pool.train[j][static_cast<std::size_t>(f)]}, &none_j);
-        predict(rates, nominal, 0, flight, readings);
-        for (std::size_t k = 0; k < flight.size(); ++k) {
-          if (!pool.folds[j].judge[static_cast<std::size_t>(f)][k]) continue;
-          heldout[k] = readings[k];
-          if (flight.usable[k]) sums[j].add(readings[k], flight.omega[k], pool.inverse_sigma[j]);
-        }
-      }
-      c.heldout_readings[j] = std::move(heldout);
-    });
-    GapSums total;
-    for (const GapSums& s : sums) {
-      total.chi_square += s.chi_square;
-      total.residuals += s.residuals;
-      total.da_sq += s.da_sq;
-      total.rel_sq += s.rel_sq;
-      total.samples += s.samples;
+    if (effect == Effect::none) {
+      c = nominal_candidate(pool, none_all);
+    } else {
+      c.fit = fit_pooled(effect, nominal, pool, none_all);
+      c.params = effect_parameters(EffectModel{effect, nominal, 0.0}, c.fit.theta);
+      judge_leaving_flights_out(c, nominal, pool, none_all, threads);
     }
-    c.heldout_chi_square = total.chi_square;
-    c.heldout_residuals = total.residuals;
-    c.heldout_rms_da_deg = total.rms_da_deg();
-    c.heldout_rms_rel_err = total.rms_rel_err();
     analysis.candidates.push_back(std::move(c));
   }
+  rule_out_senseless(analysis.candidates);
   rank_candidates(analysis, pool.flights.front()->gyro_input, pool.flights, pool.inverse_sigma,
                   mean_speed, total_duration);
+  TensorReport tensor;
+  if (pooled_tensor_report(analysis, pool.flights, nominal, tensor)) analysis.tensor = tensor;
+  temper_confidence(analysis);
+  note_disagreeing_flights(analysis, pool);
   add_flip_periods(session, pool.flights, flights, nominal);
   // Onset of a session: the median of the flights' onsets, relative to each flight's start.
   std::vector<double> onsets;

@@ -11,10 +11,10 @@ namespace aloft::host {
 BodyRates body_rates_from_poses(const PoseTrial& poses) {
   BodyRates rates;
   const std::size_t n = std::min(poses.time_s.size(), poses.orientation.size());
-  const double gap_step = kGapStepFactor * median_time_step(poses.time_s);
+  const std::vector<char> gap_after = steps_followed_by_gap(poses.time_s);
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const double dt = poses.time_s[k + 1] - poses.time_s[k];
-    if (dt > gap_step) {
+    if (gap_after[k]) {
       ++rates.pairs_skipped_at_gaps;
       continue;
     }

@@ -2,9 +2,9 @@
 // consecutive poses, log(q_k^-1 q_{k+1}) / dt (aloft::omega_body_from_orientations),
 // stamped at the midpoint of the pair.
 //
-// Pairs that straddle a gap are skipped: a step longer than 1.5 times the trial's median
-// step means frames are missing between the two poses (fit_poses leaves unposed frames
-// out), and a rate over it would average across the gap.
+// Pairs that straddle a gap (readers/time_stamps.hpp's rule) are skipped: frames are
+// missing between the two poses (fit_poses leaves unposed frames out), and a rate over
+// the gap would average across it.
 #pragma once
 
 #include <cstddef>
@@ -25,8 +25,5 @@ struct BodyRates {
 // Throws aloft::host::Error (naming the trial's file and time) if a pose is not a unit
 // quaternion or time does not increase.
 BodyRates body_rates_from_poses(const PoseTrial& poses);
-
-// The step above which a pair counts as straddling a gap, for a given median step.
-constexpr double kGapStepFactor = 1.5;
 
 }  // namespace aloft::host

@@ -1,15 +1,17 @@
 #include "readers/c3d_reader.hpp"
 
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <limits>
 
 #include "common/commands.hpp"
+#include "common/file_error.hpp"
 #include "readers/c3d_numbers.hpp"
 #include "readers/c3d_parameters.hpp"
-#include "readers/trc_reader.hpp"
+#include "readers/length_units.hpp"
 
 namespace aloft::host {
 
@@ -21,25 +23,41 @@ using c3d::Processor;
 
 constexpr std::size_t kBlockBytes = 512;
 
+// The whole file, once its first block has shown the C3D key: a large file of anything
+// else is refused after 512 bytes rather than read into memory.
 std::vector<std::uint8_t> read_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open file");
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                                  std::istreambuf_iterator<char>());
+  std::vector<std::uint8_t> bytes(kBlockBytes);
+  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
   if (bytes.empty()) throw Error(path + ": file is empty");
+  if (bytes.size() < kBlockBytes) throw Error(path + ": too short for a C3D header (512 bytes)");
+  if (bytes[1] != 0x50) throw Error(path + ": not a C3D file (no 0x50 key in its header)");
+  bytes.insert(bytes.end(), std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   return bytes;
 }
 
-// A parameter stored as int16 that means an unsigned count (frame numbers, DATA_START).
+// A parameter that means an unsigned count or block number (frame numbers, DATA_START),
+// checked before it is converted: int16 words are read as unsigned 16-bit (writers use
+// the sign bit for counts over 32767); a float (float-processor files) must be a whole
+// number from 0 to 65535. nullopt otherwise, so a value like 1e30 is never converted.
 std::optional<std::size_t> unsigned_word(const ParameterSection& params, const char* group,
                                          const char* name, std::size_t index = 0) {
+  constexpr double kMostWord = 65535.0;
   const c3d::Parameter* p = params.find(group, name);
   const auto value = params.number(group, name, index);
   if (!p || !value) return std::nullopt;
   if (p->type == 2) return static_cast<std::size_t>(static_cast<std::uint16_t>(std::int16_t(*value)));
-  if (*value < 0 || !std::isfinite(*value)) return std::nullopt;
+  if (!(*value >= 0.0 && *value <= kMostWord) || *value != std::floor(*value)) return std::nullopt;
   return static_cast<std::size_t>(*value);
 }
+
+// The highest sample rate any motion-capture or force-plate system records at; a rate
+// above it is a damaged field, not a measurement.
+constexpr double kMostRateHz = 1e6;
+
+bool plausible_rate(double rate) { return std::isfinite(rate) && rate > 0.0 && rate <= kMostRateHz; }
 
 std::vector<std::string> point_labels(const ParameterSection& params, std::size_t points) {
   std::vector<std::string> labels = params.strings("POINT", "LABELS");
@@ -58,12 +76,10 @@ std::vector<std::string> point_labels(const ParameterSection& params, std::size_
 
 }  // namespace
 
-MarkerTrial read_c3d(const std::string& path, C3dDetails* details) {
+static MarkerTrial read_c3d_unguarded(const std::string& path, C3dDetails* details) {
   const std::vector<std::uint8_t> bytes = read_bytes(path);
   const ByteView file(bytes);
-  const std::uint8_t* header = file.at(0, kBlockBytes);
-  if (!header) throw Error(path + ": too short for a C3D header (512 bytes)");
-  if (header[1] != 0x50) throw Error(path + ": not a C3D file (no 0x50 key in its header)");
+  const std::uint8_t* header = file.at(0, kBlockBytes);  // read_bytes checked it is there
 
   const ParameterSection params = parse_parameter_section(file, header[0], path);
   const Processor format = params.processor;
@@ -97,21 +113,28 @@ MarkerTrial read_c3d(const std::string& path, C3dDetails* details) {
                 std::to_string(first_frame));
   }
   if (data_start < 2) throw Error(path + ": data section start block " + std::to_string(data_start) + " is invalid");
+  // Every term below is at most 32 bits wide (16-bit words, a 65535·65536 frame number),
+  // so the sizes cannot overflow; the frame count is then held to what the file holds
+  // before anything is allocated for it.
   const std::size_t frames = last_frame - first_frame + 1;
   const bool float_data = scale < 0.0;
   const std::size_t width = float_data ? 4 : 2;
   const std::size_t frame_bytes = (4 * points + analog_per_frame) * width;
   const std::size_t data_offset = (data_start - 1) * kBlockBytes;
-  const std::size_t available =
-      data_offset < file.size() ? (file.size() - data_offset) / frame_bytes : 0;
+  if (data_offset >= file.size()) {
+    throw Error(path + ": data section starts at block " + std::to_string(data_start) +
+                ", beyond the file's " + std::to_string((file.size() + kBlockBytes - 1) / kBlockBytes) +
+                " blocks");
+  }
+  const std::size_t available = (file.size() - data_offset) / frame_bytes;
   if (available < frames) {
-    throw Error(path + ": data section holds " + std::to_string(available) + " of " +
-                std::to_string(frames) + " frames (truncated file?)");
+    throw Error(path + ": claims " + std::to_string(frames) + " frames, its data section holds " +
+                std::to_string(available) + " (truncated file?)");
   }
 
   double rate = params.number("POINT", "RATE").value_or(0.0);
-  if (!(rate > 0.0) || !std::isfinite(rate)) rate = c3d::decode_f32(header + 20, format);
-  if (!(rate > 0.0) || !std::isfinite(rate)) throw Error(path + ": no valid POINT:RATE");
+  if (!plausible_rate(rate)) rate = c3d::decode_f32(header + 20, format);
+  if (!plausible_rate(rate)) throw Error(path + ": no valid POINT:RATE (a rate above 0 and up to 1 MHz)");
 
   const std::vector<std::string> units = params.strings("POINT", "UNITS");
   const std::string unit = units.empty() || units[0].empty() ? "mm" : units[0];
@@ -161,12 +184,16 @@ MarkerTrial read_c3d(const std::string& path, C3dDetails* details) {
     details->processor = c3d::processor_name(format);
     details->float_data = float_data;
     details->point_scale = scale;
-    details->first_frame = static_cast<int>(first_frame);
+    details->first_frame = static_cast<long>(first_frame);
     details->analog_samples_per_frame = static_cast<int>(analog_per_frame);
     details->parameter_damage = params.damage;
     details->parameter_repairs = params.repairs;
   }
   return trial;
+}
+
+MarkerTrial read_c3d(const std::string& path, C3dDetails* details) {
+  return with_file_context(path, [&] { return read_c3d_unguarded(path, details); });
 }
 
 }  // namespace aloft::host

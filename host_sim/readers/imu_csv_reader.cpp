@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "common/commands.hpp"
+#include "common/file_error.hpp"
 #include "readers/text_cells.hpp"
 #include "readers/time_stamps.hpp"
 
@@ -56,16 +57,9 @@ std::optional<ImuColumns> recognise_phyphox(const std::vector<std::string>& head
   return c;
 }
 
-}  // namespace
-
-ImuLog read_imu_csv(const std::string& path) {
-  const TextFile file = read_text_file(path);
-  std::size_t header_index = 0;
-  while (is_blank(file.lines[header_index])) ++header_index;
-  const std::size_t header_line = header_index + 1;
-  const std::vector<std::string> header =
-      split_csv_line(file.lines[header_index], path, header_line);
-
+// The layout a header row names; throws "FILE:LINE: ..." for any other header.
+ImuColumns recognise_header(const std::vector<std::string>& header, const std::string& path,
+                            std::size_t header_line) {
   std::optional<ImuColumns> columns = recognise_plain(header);
   if (!columns) columns = recognise_phyphox(header);
   if (!columns) {
@@ -78,7 +72,22 @@ ImuLog read_imu_csv(const std::string& path) {
   if (accel_found != 0 && accel_found != 3) {
     throw Error(at_line(path, header_line, "accelerometer needs all three columns or none"));
   }
-  const bool has_accel = accel_found == 3;
+  return *columns;
+}
+
+}  // namespace
+
+static ImuLog read_imu_csv_unguarded(const std::string& path) {
+  const TextFile file = read_text_file(path, [&](const std::string& line, std::size_t number) {
+    recognise_header(split_csv_line(line, path, number), path, number);
+  });
+  std::size_t header_index = 0;
+  while (is_blank(file.lines[header_index])) ++header_index;
+  const std::size_t header_line = header_index + 1;
+  const std::vector<std::string> header =
+      split_csv_line(file.lines[header_index], path, header_line);
+  const std::optional<ImuColumns> columns = recognise_header(header, path, header_line);
+  const bool has_accel = columns->accel[0] >= 0;
 
   ImuLog log;
   log.path = path;
@@ -113,6 +122,10 @@ ImuLog read_imu_csv(const std::string& path) {
   if (log.time_s.empty()) throw Error(path + ": no samples after the header");
   check_time_stamps(log.time_s, path, line_numbers);
   return log;
+}
+
+ImuLog read_imu_csv(const std::string& path) {
+  return with_file_context(path, [&] { return read_imu_csv_unguarded(path); });
 }
 
 }  // namespace aloft::host

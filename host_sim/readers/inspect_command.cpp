@@ -14,6 +14,7 @@
 #include "readers/c3d_reader.hpp"
 #include "readers/imu_csv_reader.hpp"
 #include "readers/marker_pose_fit.hpp"
+#include "readers/pose_naming_options.hpp"
 #include "readers/pose_reader.hpp"
 #include "readers/segments.hpp"
 #include "readers/time_stamps.hpp"
@@ -78,8 +79,8 @@ Json summarise_markers(const std::string& path, const TrialFormat& format, const
   return out;
 }
 
-Json summarise_poses(const std::string& path, const TrialFormat& format) {
-  const PoseTrial trial = format.name == "pose_csv" ? read_pose_csv(path) : read_mot(path);
+Json summarise_poses(const std::string& path, const PoseNaming& naming) {
+  const PoseTrial trial = read_pose_file(path, naming);
   Json out;
   out["format"] = trial.format;
   out["frames"] = trial.time_s.size();
@@ -123,9 +124,11 @@ void add_inspect_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("inspect", "summarise a trial file (markers, poses, IMU log, segments) as JSON");
   auto file = std::make_shared<std::string>();
   auto body = std::make_shared<std::string>();
+  auto naming = std::make_shared<PoseNaming>();
   cmd->add_option("file", *file, "trial file: .trc, .c3d, .mot, .sto, pose/IMU/segments CSV")->required();
   cmd->add_option("--body", *body, "body file: also fit its marker set to each frame of a marker file");
-  cmd->callback([file, body] {
+  add_pose_naming_options(*cmd, *naming);
+  cmd->callback([file, body, naming] {
     const TrialFormat format = detect_trial_format(*file);
     if (!body->empty() && format.kind != TrialKind::markers) {
       throw Error(*file + ": --body applies to marker files only");
@@ -133,7 +136,7 @@ void add_inspect_command(CLI::App& app) {
     Json summary;
     switch (format.kind) {
       case TrialKind::markers: summary = summarise_markers(*file, format, *body); break;
-      case TrialKind::poses: summary = summarise_poses(*file, format); break;
+      case TrialKind::poses: summary = summarise_poses(*file, *naming); break;
       case TrialKind::imu: summary = summarise_imu(*file); break;
       case TrialKind::segments: summary = summarise_segments(*file); break;
     }

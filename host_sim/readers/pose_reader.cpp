@@ -6,6 +6,8 @@
 #include <optional>
 
 #include "common/commands.hpp"
+#include "common/file_error.hpp"
+#include "readers/free_joint.hpp"
 #include "readers/text_cells.hpp"
 #include "readers/time_stamps.hpp"
 
@@ -15,87 +17,62 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// The column names for a message, the first dozen.
+std::string column_list(const std::vector<std::string>& names) {
+  constexpr std::size_t kShown = 12;
+  std::string list;
+  for (std::size_t i = 0; i < names.size() && i < kShown; ++i) list += (i ? " " : "") + names[i];
+  if (names.size() > kShown) list += " ... (" + std::to_string(names.size()) + " columns)";
+  return list;
+}
+
 void make_hemispheres_continuous(std::vector<Eigen::Quaterniond>& q) {
   for (std::size_t i = 1; i < q.size(); ++i) {
     if (q[i].dot(q[i - 1]) < 0.0) q[i].coeffs() = -q[i].coeffs();
   }
 }
 
-// Free-joint slot of a .mot column: 0..2 rotations about x, y, z; 3..5 translations
-// along x, y, z; nullopt when the name says neither.
-std::optional<int> free_joint_slot(const std::string& column) {
-  const std::string name = to_lower(column);
-  const std::string coord = "coord_";
-  const std::size_t at = name.rfind(coord);
-  if (at != std::string::npos && at + coord.size() + 1 == name.size()) {
-    const char digit = name.back();
-    if (digit >= '0' && digit <= '5') return digit - '0';
-  }
-  const std::size_t underscore = name.rfind('_');
-  const std::string suffix = underscore == std::string::npos ? name : name.substr(underscore + 1);
-  const char* axes = "xyz";
-  for (int a = 0; a < 3; ++a) {
-    const std::string x(1, axes[a]);
-    if (suffix == "r" + x || suffix == "rot" + x || suffix == "rotation" + x) return a;
-    if (suffix == "t" + x || suffix == "trans" + x || suffix == "translation" + x) return 3 + a;
-  }
-  return std::nullopt;
-}
-
-// Column index per free-joint slot (-1: absent), or throws.
-std::array<int, 6> free_joint_columns(const std::vector<std::string>& names, int time_column,
-                                      const std::string& path, std::size_t line) {
-  std::array<int, 6> slot_column;
-  slot_column.fill(-1);
-  bool any_recognised = false;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (static_cast<int>(i) == time_column) continue;
-    const auto slot = free_joint_slot(names[i]);
-    if (!slot) continue;
-    any_recognised = true;
-    if (slot_column[*slot] >= 0) {
-      throw Error(at_line(path, line, "columns " + names[slot_column[*slot]] + " and " + names[i] +
-                                          " name the same free-joint coordinate"));
-    }
-    slot_column[*slot] = static_cast<int>(i);
-  }
-  const std::size_t others = names.size() - 1;
-  if (!any_recognised && (others == 3 || others == 6)) {
-    int slot = 0;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      if (static_cast<int>(i) != time_column) slot_column[slot++] = static_cast<int>(i);
-    }
-    return slot_column;
-  }
-  if (slot_column[0] < 0 || slot_column[1] < 0 || slot_column[2] < 0) {
-    throw Error(at_line(path, line,
-                        "cannot find the three free-joint rotation columns (names ending in "
-                        "rx/ry/rz, rotx/roty/rotz or _coord_0.._coord_2)"));
-  }
-  const int translations = (slot_column[3] >= 0) + (slot_column[4] >= 0) + (slot_column[5] >= 0);
-  if (translations != 0 && translations != 3) {
-    throw Error(at_line(path, line, "free-joint translations need all three columns or none"));
-  }
-  return slot_column;
-}
-
-Eigen::Quaterniond cardan_xyz(double a, double b, double c) {
-  return Eigen::Quaterniond(Eigen::AngleAxisd(a, Eigen::Vector3d::UnitX())) *
-         Eigen::Quaterniond(Eigen::AngleAxisd(b, Eigen::Vector3d::UnitY())) *
-         Eigen::Quaterniond(Eigen::AngleAxisd(c, Eigen::Vector3d::UnitZ()));
-}
-
+// A count from the header, checked before it is converted: more rows or columns than a
+// billion is no count a file can hold.
 std::optional<std::size_t> header_count(const std::string& value) {
+  constexpr double kMostCount = 1e9;
   double v = 0.0;
-  if (!try_parse_number(trim(value), v) || v < 0 || v != std::floor(v)) return std::nullopt;
+  if (!try_parse_number(trim(value), v) || !(v >= 0.0 && v <= kMostCount) || v != std::floor(v)) {
+    return std::nullopt;
+  }
   return static_cast<std::size_t>(v);
+}
+
+// Column index of each rotation and translation of the joint; throws naming the missing.
+struct JointColumnIndices {
+  std::array<int, 3> rotation{{-1, -1, -1}};
+  std::array<int, 3> translation{{-1, -1, -1}};
+};
+
+JointColumnIndices find_joint_columns(const FreeJointColumns& joint, const std::vector<std::string>& names,
+                                      const std::string& path, std::size_t line) {
+  JointColumnIndices out;
+  auto locate = [&](const JointAxis& axis) {
+    if (axis.coordinate.empty()) return -1;
+    const int column = coordinate_column(names, axis.coordinate);
+    if (column < 0) {
+      throw Error(at_line(path, line, "no column " + axis.coordinate + " (" + joint.source +
+                                          "); columns: " + column_list(names)));
+    }
+    return column;
+  };
+  for (std::size_t i = 0; i < 3; ++i) out.rotation[i] = locate(joint.rotations[i]);
+  for (std::size_t i = 0; i < joint.translations.size() && i < 3; ++i) out.translation[i] = locate(joint.translations[i]);
+  return out;
 }
 
 }  // namespace
 
-PoseTrial read_mot(const std::string& path) {
+static PoseTrial read_mot_unguarded(const std::string& path, const PoseNaming& naming) {
+  const std::optional<FreeJointColumns> named = free_joint_from_naming(naming);
   const TextFile file = read_text_file(path);
   std::optional<bool> in_degrees;
+  std::size_t in_degrees_line = 0;
   std::optional<std::size_t> declared_rows;
   std::optional<std::size_t> declared_columns;
   std::size_t i = 0;
@@ -113,16 +90,14 @@ PoseTrial read_mot(const std::string& path) {
       in_degrees = value == "yes";
     } else if (key == "nrows" || key == "datarows") {
       declared_rows = header_count(value);
-      if (!declared_rows) throw Error(at_line(path, i + 1, "nRows is not a whole number"));
+      if (!declared_rows) throw Error(at_line(path, i + 1, "nRows '" + value + "' is not a whole number up to 1e9"));
     } else if (key == "ncolumns" || key == "datacolumns") {
       declared_columns = header_count(value);
-      if (!declared_columns) throw Error(at_line(path, i + 1, "nColumns is not a whole number"));
+      if (!declared_columns) throw Error(at_line(path, i + 1, "nColumns '" + value + "' is not a whole number up to 1e9"));
     }
   }
   if (i == file.lines.size()) throw Error(path + ": no endheader line (not an OpenSim .mot/.sto)");
-  if (!in_degrees) {
-    throw Error(at_line(path, i + 1, "header lacks inDegrees=yes|no, so angle units are unknown"));
-  }
+  in_degrees_line = i + 1;
   ++i;
   while (i < file.lines.size() && is_blank(file.lines[i])) ++i;
   if (i == file.lines.size()) throw Error(path + ": no column names after endheader");
@@ -138,8 +113,19 @@ PoseTrial read_mot(const std::string& path) {
                                               " column names where nColumns is " +
                                               std::to_string(*declared_columns)));
   }
-  const std::array<int, 6> slot = free_joint_columns(names, time_column, path, names_line);
-  const bool has_position = slot[3] >= 0;
+  // The pose first: a file that holds none is refused for that, whatever else it lacks.
+  std::vector<std::string> data_names = names;
+  data_names.erase(data_names.begin() + time_column);
+  const std::optional<FreeJointColumns> joint = named ? named : recognise_free_joint(data_names, path, names_line);
+  if (!joint) {
+    throw Error(at_line(path, names_line, "no free-joint pose among the columns (" + column_list(names) +
+                                              "); " + how_to_name_the_pose()));
+  }
+  const JointColumnIndices columns = find_joint_columns(*joint, names, path, names_line);
+  if (!in_degrees) {
+    throw Error(at_line(path, in_degrees_line, "header lacks inDegrees=yes|no, so angle units are unknown"));
+  }
+  const bool has_position = !joint->translations.empty();
   const double angle_scale = *in_degrees ? kPi / 180.0 : 1.0;
 
   PoseTrial trial;
@@ -157,17 +143,23 @@ PoseTrial read_mot(const std::string& path) {
                                           " columns (truncated or malformed row)"));
     }
     auto value = [&](int column) {
-      const double v = parse_number(cells[column], path, line, names[column]);
+      if (column < 0) return 0.0;  // a constant axis: its value is not read
+      const auto c = static_cast<std::size_t>(column);
+      const double v = parse_number(cells[c], path, line, names[c]);
       if (!std::isfinite(v)) {
-        throw Error(at_line(path, line, "column " + names[column] + " is not finite"));
+        throw Error(at_line(path, line, "column " + names[c] + " is not finite"));
       }
       return v;
     };
     trial.time_s.push_back(value(time_column));
-    trial.orientation.push_back(cardan_xyz(value(slot[0]) * angle_scale,
-                                           value(slot[1]) * angle_scale,
-                                           value(slot[2]) * angle_scale));
-    if (has_position) trial.position_m.emplace_back(value(slot[3]), value(slot[4]), value(slot[5]));
+    std::array<double, 3> angles{}, distances{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      angles[k] = value(columns.rotation[k]) * angle_scale;
+      distances[k] = value(columns.translation[k]);
+    }
+    const Eigen::Isometry3d pose = free_joint_pose(*joint, angles, distances);
+    trial.orientation.emplace_back(Eigen::Matrix3d(pose.linear()));  // a rotation by construction
+    if (has_position) trial.position_m.push_back(pose.translation());
     line_numbers.push_back(line);
   }
   if (trial.time_s.empty()) throw Error(path + ": no rows after the column names");
@@ -181,28 +173,55 @@ PoseTrial read_mot(const std::string& path) {
   return trial;
 }
 
-PoseTrial read_pose_csv(const std::string& path) {
-  const TextFile file = read_text_file(path);
-  std::size_t i = 0;
-  while (is_blank(file.lines[i])) ++i;
-  const std::size_t header_line = i + 1;
-  const std::vector<std::string> header = split_csv_line(file.lines[i], path, header_line);
+namespace {
+
+// Columns of a pose CSV header: t, qw..qz, and x, y, z (-1 when absent).
+struct PoseCsvColumns {
+  int t = -1;
+  int q[4] = {-1, -1, -1, -1};
+  int p[3] = {-1, -1, -1};
+  bool has_position() const { return p[0] >= 0; }
+};
+
+PoseCsvColumns pose_csv_columns(const std::vector<std::string>& header, const std::string& path,
+                                std::size_t header_line) {
   auto find = [&](const char* name) {
     for (std::size_t k = 0; k < header.size(); ++k) {
       if (to_lower(trim(header[k])) == name) return static_cast<int>(k);
     }
     return -1;
   };
-  const int t = find("t");
-  const int q[4] = {find("qw"), find("qx"), find("qy"), find("qz")};
-  const int p[3] = {find("x"), find("y"), find("z")};
-  if (t < 0 || q[0] < 0 || q[1] < 0 || q[2] < 0 || q[3] < 0) {
+  PoseCsvColumns c;
+  c.t = find("t");
+  const char* quaternion[4] = {"qw", "qx", "qy", "qz"};
+  const char* position[3] = {"x", "y", "z"};
+  for (int k = 0; k < 4; ++k) c.q[k] = find(quaternion[k]);
+  for (int k = 0; k < 3; ++k) c.p[k] = find(position[k]);
+  if (c.t < 0 || c.q[0] < 0 || c.q[1] < 0 || c.q[2] < 0 || c.q[3] < 0) {
     throw Error(at_line(path, header_line, "header must hold t,qw,qx,qy,qz[,x,y,z]"));
   }
-  const int positions = (p[0] >= 0) + (p[1] >= 0) + (p[2] >= 0);
+  const int positions = (c.p[0] >= 0) + (c.p[1] >= 0) + (c.p[2] >= 0);
   if (positions != 0 && positions != 3) {
     throw Error(at_line(path, header_line, "position needs all of x, y, z or none"));
   }
+  return c;
+}
+
+}  // namespace
+
+static PoseTrial read_pose_csv_unguarded(const std::string& path) {
+  const TextFile file = read_text_file(path, [&](const std::string& line, std::size_t number) {
+    pose_csv_columns(split_csv_line(line, path, number), path, number);
+  });
+  std::size_t i = 0;
+  while (is_blank(file.lines[i])) ++i;
+  const std::size_t header_line = i + 1;
+  const std::vector<std::string> header = split_csv_line(file.lines[i], path, header_line);
+  const PoseCsvColumns columns = pose_csv_columns(header, path, header_line);
+  const int t = columns.t;
+  const int* q = columns.q;
+  const int* p = columns.p;
+  const int positions = columns.has_position() ? 3 : 0;
 
   PoseTrial trial;
   trial.path = path;
@@ -239,6 +258,14 @@ PoseTrial read_pose_csv(const std::string& path) {
   check_time_stamps(trial.time_s, path, line_numbers);
   make_hemispheres_continuous(trial.orientation);
   return trial;
+}
+
+PoseTrial read_mot(const std::string& path, const PoseNaming& naming) {
+  return with_file_context(path, [&] { return read_mot_unguarded(path, naming); });
+}
+
+PoseTrial read_pose_csv(const std::string& path) {
+  return with_file_context(path, [&] { return read_pose_csv_unguarded(path); });
 }
 
 }  // namespace aloft::host

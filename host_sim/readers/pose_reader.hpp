@@ -3,13 +3,11 @@
 //
 // OpenSim .mot / .sto: a header of key=value lines up to "endheader" (inDegrees=yes|no
 // is required; nRows and nColumns, when given, are checked), then a row of column names
-// and rows of numbers separated by tabs or spaces. The free joint is read from three
-// rotation columns, a body-fixed X-Y-Z Cardan sequence (R = Rx(a)·Ry(b)·Rz(c)), and
-// three translation columns. Columns are recognised by name — suffixes rx/ry/rz,
-// rotx/roty/rotz, tx/ty/tz, or OpenSim's default free-joint names ..._coord_0 to
-// ..._coord_5 — and, when none is recognised and the file has exactly three or six
-// columns besides time, by position (rotations first). Without translation columns the
-// trial has no positions.
+// and rows of numbers separated by tabs or spaces. The pose is a free joint whose
+// columns are found by name only — OpenSim's names for a free joint, or the user's
+// naming (--pose-columns, --osim/--joint): see free_joint.hpp. A file whose columns
+// name no free joint is refused, listing its columns and how to name the pose; it is
+// never read by column position. Without translation columns the trial has no positions.
 //
 // Pose CSV: header t,qw,qx,qy,qz with optional x,y,z (metres); other columns (for
 // example the wx,wy,wz of `aloft simulate` and `aloft study` output) are ignored.
@@ -23,10 +21,11 @@
 #include <string>
 
 #include "common/trial.hpp"
+#include "readers/free_joint.hpp"
 
 namespace aloft::host {
 
-PoseTrial read_mot(const std::string& path);  // .mot and .sto
+PoseTrial read_mot(const std::string& path, const PoseNaming& naming = {});  // .mot and .sto
 PoseTrial read_pose_csv(const std::string& path);
 
 }  // namespace aloft::host

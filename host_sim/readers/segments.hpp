@@ -1,7 +1,8 @@
 // The segments file of SPEC §3: CSV `segment,start,end[,keep,comment]`, one flight per
 // row inside a longer IMU log (times in seconds, as phyphox sessions are annotated).
 // Cells may carry spaces. A row whose keep cell is false (also "no", "0") is not a
-// flight and is skipped; an empty keep cell means keep. A comment with unquoted commas
+// flight and is skipped before its other cells are read (real exports leave its start
+// and end blank); an empty keep cell means keep. A comment with unquoted commas
 // is kept whole.
 #pragma once
 

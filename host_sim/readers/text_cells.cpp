@@ -5,19 +5,61 @@
 #include <charconv>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include "common/commands.hpp"
 
 namespace aloft::host {
 
-TextFile read_text_file(const std::string& path) {
+namespace {
+
+// No header is this long: a first line still without its end after this many bytes is
+// judged as it stands (and refused), rather than read on to the end of a large file.
+constexpr std::size_t kLongestHeader = 1u << 20;
+
+// The first non-blank complete line of `content` and its 1-based number, if any.
+bool first_complete_line(const std::string& content, bool at_end, std::string& line, std::size_t& number) {
+  std::size_t start = 0;
+  number = 1;
+  while (start < content.size()) {
+    std::size_t end = content.find('\n', start);
+    if (end == std::string::npos) {
+      if (!at_end && content.size() - start < kLongestHeader) return false;
+      end = content.size();
+    }
+    line = content.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (!is_blank(line)) return true;
+    start = end + 1;
+    ++number;
+  }
+  return false;
+}
+
+}  // namespace
+
+TextFile read_text_file(const std::string& path, const FirstLineCheck& check_first_line) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  const std::string content = buffer.str();
-  if (content.find('\0') != std::string::npos) {
-    throw Error(path + ": holds binary data, not text");
+  constexpr std::size_t kChunk = 1u << 20;  // 1 MiB
+  std::string content;
+  std::string chunk(kChunk, '\0');
+  bool first_line_checked = !check_first_line;
+  while (in) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (std::char_traits<char>::find(chunk.data(), got, '\0') != nullptr) {
+      throw Error(path + ": holds binary data, not text");
+    }
+    content.append(chunk.data(), got);
+    if (!first_line_checked) {
+      std::string line;
+      std::size_t number = 0;
+      if (first_complete_line(content, !in, line, number)) {
+        check_first_line(line, number);
+        first_line_checked = true;
+      }
+    }
   }
   TextFile file;
   file.path = path;

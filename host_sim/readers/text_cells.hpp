@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,9 +22,16 @@ struct TextFile {
   std::vector<std::string> lines;
 };
 
-// Reads the whole file. Throws aloft::host::Error if it cannot be opened, is empty
-// (no non-blank line), or holds NUL bytes (a binary file given to a text reader).
-TextFile read_text_file(const std::string& path);
+// Sees the first non-blank line of a file (1-based line number) and throws
+// aloft::host::Error when it is not the header the reader expects.
+using FirstLineCheck = std::function<void(const std::string& line, std::size_t line_number)>;
+
+// Reads the whole file, in chunks. Throws aloft::host::Error if it cannot be opened, is
+// empty (no non-blank line), or holds NUL bytes (a binary file given to a text reader).
+// Both checks that can be made early are made early — a NUL byte as soon as its chunk is
+// read, `check_first_line` as soon as the first line is complete — so that a large file
+// of something else is refused without being read whole.
+TextFile read_text_file(const std::string& path, const FirstLineCheck& check_first_line = {});
 
 // "PATH:LINE: problem" (LINE is 1-based), for aloft::host::Error.
 std::string at_line(const std::string& path, std::size_t line_number, const std::string& problem);

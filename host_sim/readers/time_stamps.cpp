@@ -51,4 +51,13 @@ double estimated_rate_hz(const std::vector<double>& time_s) {
   return step > 0.0 ? 1.0 / step : 0.0;
 }
 
+std::vector<char> steps_followed_by_gap(const std::vector<double>& time_s) {
+  std::vector<char> gap_after(time_s.size(), 0);
+  const double usual = median_time_step(time_s);
+  for (std::size_t k = 0; k + 1 < time_s.size(); ++k) {
+    if (time_s[k + 1] - time_s[k] > kGapFactor * usual) gap_after[k] = 1;
+  }
+  return gap_after;
+}
+
 }  // namespace aloft::host

@@ -20,4 +20,12 @@ double median_time_step(const std::vector<double>& time_s);
 // 1 / median_time_step, or 0 when it cannot be told.
 double estimated_rate_hz(const std::vector<double>& time_s);
 
+// The one rule of every command for lost samples: a step longer than kGapFactor times the
+// median step is a gap. Jitter of a phone's sampling stays well inside it; one dropped
+// sample already doubles the step.
+constexpr double kGapFactor = 1.5;
+
+// gap_after[k] != 0 when the step from sample k to k + 1 is a gap (size n, the last 0).
+std::vector<char> steps_followed_by_gap(const std::vector<double>& time_s);
+
 }  // namespace aloft::host

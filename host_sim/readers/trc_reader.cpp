@@ -5,30 +5,35 @@
 #include <map>
 
 #include "common/commands.hpp"
+#include "common/file_error.hpp"
+#include "common/warning.hpp"
+#include "readers/length_units.hpp"
 #include "readers/text_cells.hpp"
 #include "readers/time_stamps.hpp"
 
 namespace aloft::host {
 
-double metres_per_unit(const std::string& unit) {
-  const std::string u = to_lower(trim(unit));
-  if (u == "mm") return 1e-3;
-  if (u == "cm") return 1e-2;
-  if (u == "m") return 1.0;
-  return 0.0;
-}
-
 namespace {
 
 constexpr std::size_t kFirstHeaderLines = 5;
 
+// The cells of a header line without the empty ones: some writers (OpenSim's Rajagopal
+// pipeline) separate header cells with two tabs, and OpenSim's own reader drops the
+// empty cells that leaves.
+std::vector<std::string> nonempty_tab_cells(const std::string& line) {
+  std::vector<std::string> cells;
+  for (std::string& cell : split_tab_line(line)) {
+    if (!cell.empty()) cells.push_back(std::move(cell));
+  }
+  return cells;
+}
+
 // Keys of line 2 with the values of line 3.
 std::map<std::string, std::string> header_values(const TextFile& file) {
-  const std::vector<std::string> keys = split_tab_line(file.lines[1]);
-  const std::vector<std::string> values = split_tab_line(file.lines[2]);
+  const std::vector<std::string> keys = nonempty_tab_cells(file.lines[1]);
+  const std::vector<std::string> values = nonempty_tab_cells(file.lines[2]);
   std::map<std::string, std::string> out;
   for (std::size_t i = 0; i < keys.size(); ++i) {
-    if (keys[i].empty()) continue;
     out[to_lower(keys[i])] = i < values.size() ? values[i] : std::string();
   }
   return out;
@@ -57,11 +62,13 @@ std::size_t header_count(const std::map<std::string, std::string>& header, const
 
 }  // namespace
 
-MarkerTrial read_trc(const std::string& path) {
-  const TextFile file = read_text_file(path);
-  if (to_lower(file.lines[0]).rfind("pathfiletype", 0) != 0) {
-    throw Error(at_line(path, 1, "not a TRC file: first line must start with PathFileType"));
-  }
+static MarkerTrial read_trc_unguarded(const std::string& path) {
+  const auto check_first_line = [&](const std::string& line, std::size_t number) {
+    if (number != 1 || to_lower(line).rfind("pathfiletype", 0) != 0) {
+      throw Error(at_line(path, 1, "not a TRC file: first line must start with PathFileType"));
+    }
+  };
+  const TextFile file = read_text_file(path, check_first_line);
   if (file.lines.size() < kFirstHeaderLines) {
     throw Error(path + ": header ends early (a TRC header has five lines)");
   }
@@ -142,12 +149,18 @@ MarkerTrial read_trc(const std::string& path) {
   }
   if (trial.time_s.empty()) throw Error(path + ": no frames after the header");
   if (trial.time_s.size() != declared_frames) {
-    throw Error(path + ": holds " + std::to_string(trial.time_s.size()) +
-                " frames where NumFrames is " + std::to_string(declared_frames) +
-                (trial.time_s.size() < declared_frames ? " (truncated file?)" : ""));
+    // OpenSim reads the rows present whatever NumFrames claims, and so do we; every row
+    // read is whole (a row cut short is refused above), so only the count is off.
+    warn(path + ": holds " + std::to_string(trial.time_s.size()) + " frames where NumFrames is " +
+         std::to_string(declared_frames) + "; reading the " + std::to_string(trial.time_s.size()) +
+         " present");
   }
   check_time_stamps(trial.time_s, path, line_numbers);
   return trial;
+}
+
+MarkerTrial read_trc(const std::string& path) {
+  return with_file_context(path, [&] { return read_trc_unguarded(path); });
 }
 
 }  // namespace aloft::host

@@ -7,8 +7,9 @@
 //   then one row per frame (blank lines skipped): frame number, time, coordinates.
 // Units mm, cm or m are converted to metres. A triplet left empty (or NaN) is an
 // occluded marker and becomes NaN; a triplet with only some coordinates is an error.
-// The row count must equal NumFrames, so a truncated file is caught. Errors are
-// aloft::host::Error "FILE:LINE: problem".
+// Empty header cells (repeated tabs) are dropped, as OpenSim's reader does. The rows
+// present are read when NumFrames claims another count, with a warning giving both; a
+// row cut short is an error. Errors are aloft::host::Error "FILE:LINE: problem".
 #pragma once
 
 #include <string>
@@ -18,9 +19,5 @@
 namespace aloft::host {
 
 MarkerTrial read_trc(const std::string& path);
-
-// Metres per unit for a unit name as marker files state it ("mm", "cm", "m",
-// case-insensitive); 0 for an unknown unit.
-double metres_per_unit(const std::string& unit);
 
 }  // namespace aloft::host

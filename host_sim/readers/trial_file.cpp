@@ -5,6 +5,7 @@
 #include <set>
 
 #include "common/commands.hpp"
+#include "common/file_error.hpp"
 #include "readers/c3d_reader.hpp"
 #include "readers/pose_reader.hpp"
 #include "readers/text_cells.hpp"
@@ -40,7 +41,7 @@ const char* kind_name(TrialKind kind) {
 
 }  // namespace
 
-TrialFormat detect_trial_format(const std::string& path) {
+static TrialFormat detect_trial_format_unguarded(const std::string& path) {
   const std::string extension = to_lower(std::filesystem::path(path).extension().string());
   if (extension == ".trc") return {TrialKind::markers, "trc"};
   if (extension == ".c3d") return {TrialKind::markers, "c3d"};
@@ -87,11 +88,18 @@ MarkerTrial read_marker_file(const std::string& path) {
   throw Error(path + ": holds " + kind_name(format.kind) + ", not marker trajectories (.trc, .c3d)");
 }
 
-PoseTrial read_pose_file(const std::string& path) {
+PoseTrial read_pose_file(const std::string& path, const PoseNaming& naming) {
   const TrialFormat format = detect_trial_format(path);
-  if (format.name == "mot" || format.name == "sto") return read_mot(path);
-  if (format.name == "pose_csv") return read_pose_csv(path);
+  if (format.name == "mot" || format.name == "sto") return read_mot(path, naming);
+  if (format.name == "pose_csv") {
+    if (!naming.empty()) throw Error(path + ": a pose CSV names its own columns; --pose-columns, --osim and --joint are for .mot/.sto");
+    return read_pose_csv(path);
+  }
   throw Error(path + ": holds " + kind_name(format.kind) + ", not poses (.mot, .sto, pose CSV)");
+}
+
+TrialFormat detect_trial_format(const std::string& path) {
+  return with_file_context(path, [&] { return detect_trial_format_unguarded(path); });
 }
 
 }  // namespace aloft::host

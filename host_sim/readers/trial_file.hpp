@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/trial.hpp"
+#include "readers/free_joint.hpp"
 
 namespace aloft::host {
 
@@ -26,6 +27,7 @@ TrialFormat detect_trial_format(const std::string& path);
 MarkerTrial read_marker_file(const std::string& path);
 
 // A pose file (.mot, .sto or pose CSV); throws if the file holds another kind of trial.
-PoseTrial read_pose_file(const std::string& path);
+// `naming` names the pose of a .mot/.sto (free_joint.hpp); a pose CSV takes none.
+PoseTrial read_pose_file(const std::string& path, const PoseNaming& naming = {});
 
 }  // namespace aloft::host

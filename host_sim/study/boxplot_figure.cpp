@@ -36,8 +36,14 @@ struct Panel {
   std::vector<Box> boxes;
 };
 
-// Grid step of a DA axis: 1, 2 or 5 degrees, about 5 to 10 gridlines.
-double tick_step(double v) { return v > 20.0 ? 5.0 : (v > 8.0 ? 2.0 : 1.0); }
+// Grid step of a DA axis reaching v degrees: the smallest of 1, 2, 5, 10, 20, 50 that
+// needs no more than 9 gridlines.
+double tick_step(double v) {
+  for (double step : {1.0, 2.0, 5.0, 10.0, 20.0}) {
+    if (v / step <= 9.0) return step;
+  }
+  return 50.0;
+}
 
 // The top of a DA axis (which starts at 0): 10 % above v, on a whole number of steps of
 // the axis' own grid, so that the axis ends on a labelled tick.
@@ -159,8 +165,8 @@ std::vector<Panel> build_panels(const StudyResult& result, DaFrame frame, double
     const char* title;
     const char* x_label;
   } families[] = {{PerturbationFamily::moments, "B1", "bound on principal moments (\u00b1%)"},
-                  {PerturbationFamily::axes, "B2", "bound on principal axes (\u00b1deg)"},
-                  {PerturbationFamily::both, "B3", "bound on moments (\u00b1%) and axes (\u00b1deg)"}};
+                  {PerturbationFamily::axes, "B2", "bound on principal axes (\u00b1\u00b0)"},
+                  {PerturbationFamily::both, "B3", "bound on moments (\u00b1%) and axes (\u00b1\u00b0)"}};
   for (const auto& fam : families) {
     Panel p;
     p.title = fam.title;

@@ -19,4 +19,7 @@ struct BuiltInTrial {
 
 BuiltInTrial make_built_in_trial(const SyntheticThrowSettings& settings = {});
 
+// The paper's compound pendulum tensor: its principal moments along the CCS axes.
+InertiaTensor<double> compound_pendulum_inertia();
+
 }  // namespace aloft::host

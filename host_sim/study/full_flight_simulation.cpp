@@ -1,5 +1,6 @@
 #include "study/full_flight_simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -8,7 +9,9 @@
 #include "aloft/deviation.hpp"
 #include "aloft/euler_equations.hpp"
 #include "aloft/rk4_integrator.hpp"
+#include "aloft/xsimd_lanes.hpp"
 #include "common/commands.hpp"
+#include "study/full_flight_wide_lanes.hpp"
 
 namespace aloft::host {
 namespace {
@@ -87,6 +90,67 @@ Eigen::Vector3d world_rotation_axis_between(const Eigen::Quaterniond& a,
                                             const Eigen::Quaterniond& b) {
   const Eigen::Quaterniond d = b * a.conjugate();
   return d.w() < 0.0 ? Eigen::Vector3d(-d.vec()) : Eigen::Vector3d(d.vec());
+}
+
+namespace {
+
+void append(std::vector<double>& out, const Eigen::Vector3d& v) {
+  out.insert(out.end(), {v.x(), v.y(), v.z()});
+}
+
+// This build's own SIMD width (SSE2 on any x86-64: 2 doubles).
+void run_lanes_baseline(const FlightArrays<double>& f, const FlightSimulation<double>* sims,
+                        SquaredDeviations<double>* out) {
+  BatchFlight<xsimd::batch<double>>::run(f, sims, out);
+}
+
+}  // namespace
+
+LaneFlight::LaneFlight(const StudyFlight& flight) {
+  time_ = flight.time_s;
+  for (const Eigen::Quaterniond& q : flight.orientation) {
+    orientation_.insert(orientation_.end(), {q.w(), q.x(), q.y(), q.z()});
+  }
+  for (const Eigen::Vector3d& w : flight.state_omega_body) append(state_omega_, w);
+  for (const Eigen::Vector3d& w : flight.measured_omega_body) append(measured_body_, w);
+  for (const Eigen::Vector3d& w : flight.measured_omega_world) append(measured_world_, w);
+  arrays_.samples = time_.size();
+  arrays_.time_s = time_.data();
+  arrays_.orientation_wxyz = orientation_.empty() ? nullptr : orientation_.data();
+  arrays_.state_omega_body = state_omega_.data();
+  arrays_.measured_body = measured_body_.data();
+  arrays_.measured_world = measured_world_.empty() ? nullptr : measured_world_.data();
+}
+
+std::size_t simulation_lanes() {
+  if (full_flight_lanes_avx512_supported()) return kFullFlightLanesAvx512;
+  if (full_flight_lanes_avx2_supported()) return kFullFlightLanesAvx2;
+  return std::size_t(LaneTraits<xsimd::batch<double>>::count);
+}
+
+void full_flight_rms_da_deg_lanes(const LaneFlight& flight, const FlightSimulation<double>* sims,
+                                  std::size_t count, RmsDaByFrame* out) {
+  constexpr std::size_t kMaxLanes = kFullFlightLanesAvx512;
+  const std::size_t lanes = simulation_lanes();
+  if (count == 0 || count > lanes) throw Error("full_flight_rms_da_deg_lanes: bad count (internal error)");
+  // Lanes past `count` repeat the last simulation; their results are dropped.
+  FlightSimulation<double> padded[kMaxLanes];
+  for (std::size_t l = 0; l < lanes; ++l) padded[l] = sims[std::min(l, count - 1)];
+  SquaredDeviations<double> sums[kMaxLanes];
+  if (lanes == kFullFlightLanesAvx512) {
+    run_full_flight_lanes_avx512(flight.arrays(), padded, sums);
+  } else if (lanes == kFullFlightLanesAvx2) {
+    run_full_flight_lanes_avx2(flight.arrays(), padded, sums);
+  } else {
+    run_lanes_baseline(flight.arrays(), padded, sums);
+  }
+  const bool pose = flight.arrays().orientation_wxyz != nullptr;
+  for (std::size_t l = 0; l < count; ++l) {
+    const double comparisons = static_cast<double>(sums[l].comparisons);
+    out[l] = {std::sqrt(sums[l].body / comparisons) * kDegreesPerRadian,
+              pose ? std::sqrt(sums[l].world / comparisons) * kDegreesPerRadian
+                   : std::numeric_limits<double>::quiet_NaN()};
+  }
 }
 
 RmsDaByFrame full_flight_rms_da_deg(const StudyFlight& flight, const InertiaTensor<double>& inertia,

@@ -4,17 +4,22 @@
 // How a draw is made (uniform within the bound, as the paper says):
 //  - moments, bound b %: each nominal principal moment I_i becomes I_i (1 + u_i b/100)
 //    with u_1, u_2, u_3 independent and uniform in [-1, 1];
-//  - axes, bound b degrees: the principal axes are rotated from their nominal directions
-//    by R = exp(r), with the rotation vector r drawn uniformly in the ball |r| <= b
-//    (uniform in volume: rejection sampling from the cube). A rotation by angle |r|
-//    moves no axis by more than |r| and moves the axes perpendicular to r by exactly
-//    |r|, so the ball is exactly the set of rotations that keep every principal axis
-//    within b of its nominal (CCS) axis, the paper's "within ±b from the respective CCS
-//    axes". Unlike three Cardan angles each in ±b, it favours no axis and no sequence,
-//    and it never exceeds the bound (three Cardan angles of 10° reach a 17° rotation);
+//  - axes, bound b degrees, by one of two samplers (the paper names neither):
+//    - ball (the default): the principal axes are rotated from their nominal
+//      directions by R = exp(r), with the rotation vector r drawn uniformly in the ball
+//      |r| <= b (uniform in volume: rejection sampling from the cube). A rotation by
+//      angle |r| moves no axis by more than |r|, so every draw keeps each principal
+//      axis within b of its nominal (CCS) axis, the paper's "within ±b from the
+//      respective CCS axes", and it favours no axis and no sequence. The ball is only
+//      part of the rotations that do so, though: a rotation of 12.26° about
+//      (1,1,1)/√3 moves each axis by exactly 10° and lies outside the 10° ball (a test
+//      checks this);
+//    - cardan: R = Rx(a) Ry(b) Rz(c), three independent angles uniform in ±b, as
+//      OpenSim's Cardan coordinates would give. Each angle keeps within the bound, but
+//      the rotation reaches 17° at ±10° and an axis may leave its 10° cone;
 //  - both: moments and axes drawn independently, each as above, with the same bound.
 // Common random numbers: a draw always takes the same numbers from its stream (three
-// uniforms for the moments, then the ball point), whatever the family and bound, and the
+// uniforms for the moments, then the rotation's), whatever the family and bound, and the
 // study gives simulation i of every Monte Carlo analysis the same stream. Each analysis
 // is still uniform within its own bound; across analyses the draws are paired (the same
 // seed sample and the same unit perturbation, scaled by the bound), so differences
@@ -31,13 +36,16 @@
 namespace aloft::host {
 
 enum class PerturbationFamily { moments, axes, both };
+enum class AxesSampler { ball, cardan };
 
 const char* family_name(PerturbationFamily family);  // "moments", "axes", "both"
 const char* family_unit(PerturbationFamily family);  // "%" or "deg"
+const char* axes_sampler_name(AxesSampler sampler);  // "ball", "cardan"
 
 struct InertiaPerturbation {
   PerturbationFamily family = PerturbationFamily::moments;
   double bound = 0.0;  // percent for moments; degrees for axes; both: the same number
+  AxesSampler sampler = AxesSampler::ball;
 };
 
 // The nominal tensor perturbed by one random draw within `perturbation`. The nominal's

@@ -1,30 +1,19 @@
 #include "study/recorded_flights.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 
 #include "common/commands.hpp"
-#include "readers/c3d_reader.hpp"
 #include "readers/imu_csv_reader.hpp"
 #include "readers/marker_pose_fit.hpp"
-#include "readers/pose_reader.hpp"
 #include "readers/segments.hpp"
 #include "readers/time_stamps.hpp"
-#include "readers/trc_reader.hpp"
+#include "readers/trial_file.hpp"
 #include "study/paper_cylinder.hpp"
 #include "study/tangent_spline_resampler.hpp"
 
 namespace aloft::host {
 namespace {
-
-std::string extension_of(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 std::string stem_of(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
@@ -51,9 +40,10 @@ nlohmann::json time_gaps(const std::vector<double>& time_s) {
   nlohmann::json gaps = nlohmann::json::array();
   const double step = median_time_step(time_s);
   if (!(step > 0.0)) return gaps;
+  const std::vector<char> gap_after = steps_followed_by_gap(time_s);
   for (std::size_t i = 1; i < time_s.size(); ++i) {
-    const double dt = time_s[i] - time_s[i - 1];
-    if (dt > 1.5 * step) {
+    if (gap_after[i - 1]) {
+      const double dt = time_s[i] - time_s[i - 1];
       gaps.push_back({{"start_s", time_s[i - 1]},
                       {"end_s", time_s[i]},
                       {"missing_samples", std::lround(dt / step) - 1}});
@@ -69,16 +59,8 @@ RecordedTrial load_recorded_trial(const RecordingInput& in) {
   d["body"] = in.body_path;
 
   if (!in.markers_path.empty()) {
-    const std::string ext = extension_of(in.markers_path);
-    MarkerTrial markers;
-    if (ext == ".trc") {
-      markers = read_trc(in.markers_path);
-    } else if (ext == ".c3d") {
-      markers = read_c3d(in.markers_path);
-    } else {
-      throw Error(in.markers_path + ": unknown marker file type '" + ext +
-                  "' (expected .trc or .c3d)");
-    }
+    // The readers' one dispatch on the file type (readers/trial_file.hpp).
+    const MarkerTrial markers = read_marker_file(in.markers_path);
     if (out.body.markers_m.size() < 3) {
       throw Error(in.body_path + ": the body needs at least 3 \"markers\" to fit " +
                   in.markers_path);
@@ -98,16 +80,7 @@ RecordedTrial load_recorded_trial(const RecordingInput& in) {
     d["max_fit_residual_m"] = report.max_rms_residual_m;
     out.flights.push_back(pose_flight_from(poses, in.markers_path, d));
   } else if (!in.poses_path.empty()) {
-    const std::string ext = extension_of(in.poses_path);
-    PoseTrial poses;
-    if (ext == ".mot" || ext == ".sto") {
-      poses = read_mot(in.poses_path);
-    } else if (ext == ".csv") {
-      poses = read_pose_csv(in.poses_path);
-    } else {
-      throw Error(in.poses_path + ": unknown pose file type '" + ext +
-                  "' (expected .mot, .sto or .csv)");
-    }
+    const PoseTrial poses = read_pose_file(in.poses_path);
     d["kind"] = "poses";
     d["poses_file"] = in.poses_path;
     out.flights.push_back(pose_flight_from(poses, in.poses_path, d));

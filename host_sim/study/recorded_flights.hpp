@@ -36,7 +36,7 @@ struct RecordedTrial {
 
 RecordedTrial load_recorded_trial(const RecordingInput& input);
 
-// Intervals where consecutive samples are more than 1.5 median steps apart.
+// The time gaps (readers/time_stamps.hpp's rule) as JSON intervals.
 nlohmann::json time_gaps(const std::vector<double>& time_s);
 
 }  // namespace aloft::host

@@ -3,14 +3,11 @@
 #include <boost/random/uniform_int_distribution.hpp>
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cstdio>
-#include <exception>
-#include <mutex>
-#include <thread>
 
+#include "common/parallel_for.hpp"
 #include "study/full_flight_simulation.hpp"
+#include "study/full_flight_wide_lanes.hpp"
 #include "study/paper_cylinder.hpp"
 
 namespace aloft::host {
@@ -38,12 +35,12 @@ Analysis monte_carlo_analysis(const InertiaPerturbation& perturbation, std::size
   return a;
 }
 
-std::vector<Analysis> paper_monte_carlo_analyses(std::size_t simulations) {
+std::vector<Analysis> paper_monte_carlo_analyses(std::size_t simulations, AxesSampler sampler) {
   std::vector<Analysis> out;
   for (PerturbationFamily family :
        {PerturbationFamily::moments, PerturbationFamily::axes, PerturbationFamily::both}) {
     for (double bound : paper::kBounds) {
-      out.push_back(monte_carlo_analysis({family, bound}, simulations));
+      out.push_back(monte_carlo_analysis({family, bound, sampler}, simulations));
     }
   }
   return out;
@@ -57,7 +54,7 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
   std::vector<std::size_t> first(analyses.size() + 1, 0);
   for (std::size_t a = 0; a < analyses.size(); ++a) {
     Analysis& an = analyses[a];
-    if (!an.monte_carlo) an.simulations = n;
+    if (!an.monte_carlo) an.simulations = (n + an.seed_stride - 1) / an.seed_stride;
     for (std::vector<double>& v : an.rms_da_deg) v.assign(an.simulations, 0.0);
     first[a + 1] = first[a] + an.simulations;
   }
@@ -66,60 +63,58 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
   const auto store = [](Analysis& an, std::size_t i, const RmsDaByFrame& rms) {
     for (std::size_t f = 0; f < kDaFrames; ++f) an.rms_da_deg[f][i] = rms[f];
   };
-  const auto run_one = [&](std::size_t flat) {
+  // Simulation `flat`: its analysis, index in it, seed sample and tensor.
+  struct Simulation {
+    Analysis* analysis;
+    std::size_t index;
+    std::size_t seed_sample;
+    InertiaTensor<double> inertia;
+  };
+  const auto simulation = [&](std::size_t flat) {
     const std::size_t a = static_cast<std::size_t>(
         std::upper_bound(first.begin(), first.end(), flat) - first.begin() - 1);
     Analysis& an = analyses[a];
     const std::size_t i = flat - first[a];
-    if (!an.monte_carlo) {
-      store(an, i, full_flight_rms_da_deg(flight, an.inertia, i));
-      return;
-    }
+    if (!an.monte_carlo) return Simulation{&an, i, i * an.seed_stride, an.inertia};
     SimulationRandom random(settings.seed, settings.stream_base, i);  // paired across analyses
     boost::random::uniform_int_distribution<std::size_t> sample(0, n - 1);
     const std::size_t k = sample(random);
-    const InertiaTensor<double> inertia = draw_perturbed_inertia(nominal, an.perturbation, random);
-    store(an, i, full_flight_rms_da_deg(flight, inertia, k));
+    return Simulation{&an, i, k, draw_perturbed_inertia(nominal, an.perturbation, random)};
   };
-
-  constexpr std::size_t kChunk = 64;
-  std::atomic<std::size_t> next{0};
-  std::atomic<std::size_t> done{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  const auto worker = [&] {
-    try {
-      for (;;) {
-        const std::size_t begin = next.fetch_add(kChunk);
-        if (begin >= total) return;
-        const std::size_t end = std::min(total, begin + kChunk);
-        for (std::size_t f = begin; f < end; ++f) run_one(f);
-        done.fetch_add(end - begin);
+  const LaneFlight lane_flight(flight);
+  const std::size_t lanes = settings.simd_lanes ? simulation_lanes() : 1;
+  // Simulations [begin, end), `lanes` at a time.
+  const auto run_range = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t group = begin; group < end; group += lanes) {
+      const std::size_t count = std::min(lanes, end - group);
+      Simulation sims[kFullFlightLanesAvx512];
+      FlightSimulation<double> lane_sims[kFullFlightLanesAvx512];
+      RmsDaByFrame rms[kFullFlightLanesAvx512];
+      for (std::size_t l = 0; l < count; ++l) {
+        sims[l] = simulation(group + l);
+        lane_sims[l] = flight_simulation(sims[l].inertia, sims[l].seed_sample);
       }
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-      next.store(total);
+      if (settings.simd_lanes) {
+        full_flight_rms_da_deg_lanes(lane_flight, lane_sims, count, rms);
+      } else {
+        rms[0] = full_flight_rms_da_deg(flight, sims[0].inertia, sims[0].seed_sample);
+      }
+      for (std::size_t l = 0; l < count; ++l) store(*sims[l].analysis, sims[l].index, rms[l]);
     }
   };
 
-  const unsigned threads = std::max(1u, settings.threads);
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+  // Chunks of simulations keep the hand-out cheap next to the work (~100 us each).
+  constexpr std::size_t kChunk = 64;
+  const std::size_t chunks = (total + kChunk - 1) / kChunk;
+  ParallelProgress progress;
   if (settings.progress) {
-    // The calling thread reports progress while the workers run, then joins the work.
-    std::thread last(worker);
-    while (done.load() < total && next.load() < total) {
-      settings.progress(done.load(), total);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-    last.join();
-  } else {
-    worker();
+    progress.report = [&](std::size_t done, std::size_t) {
+      settings.progress(std::min(total, done * kChunk), total);
+    };
   }
-  for (std::thread& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
-  if (settings.progress) settings.progress(total, total);
+  parallel_for(
+      chunks, std::max(1u, settings.threads),
+      [&](std::size_t c) { run_range(c * kChunk, std::min(total, (c + 1) * kChunk)); }, progress);
 }
 
 }  // namespace aloft::host

@@ -29,7 +29,10 @@ struct Analysis {
   bool monte_carlo = false;
   InertiaTensor<double> inertia;       // model analyses
   InertiaPerturbation perturbation;    // Monte Carlo analyses
-  std::size_t simulations = 0;         // Monte Carlo; a model runs one per sample
+  std::size_t simulations = 0;         // Monte Carlo; a model runs one per seed sample
+  // Models: seeded at every seed_stride-th sample (1, the paper's: every sample; the
+  // calibration search thins them out for speed).
+  std::size_t seed_stride = 1;
   // Filled by run_analyses: one RMS DA per simulation, in each frame (study/da_frame.hpp;
   // the world frame holds NaN for a rate flight).
   std::array<std::vector<double>, kDaFrames> rms_da_deg;
@@ -41,13 +44,17 @@ Analysis model_analysis(const std::string& name, const InertiaTensor<double>& in
 Analysis monte_carlo_analysis(const InertiaPerturbation& perturbation, std::size_t simulations);
 
 // The 12 Monte Carlo analyses of the seed study: moments, axes and both, each at
-// ±2.5, 5, 7.5 and 10 (% or degrees), `simulations` each.
-std::vector<Analysis> paper_monte_carlo_analyses(std::size_t simulations);
+// ±2.5, 5, 7.5 and 10 (% or degrees), `simulations` each, axes drawn by `sampler`.
+std::vector<Analysis> paper_monte_carlo_analyses(std::size_t simulations,
+                                                 AxesSampler sampler = AxesSampler::ball);
 
 struct RunSettings {
   std::uint64_t seed = 1;
   std::uint64_t stream_base = 0;  // separates the streams of several flights
   unsigned threads = 1;
+  // Simulations several at once in SIMD lanes (study/full_flight_simulation.hpp); false:
+  // one at a time, the scalar path kept for comparison (same numbers within 1e-9 deg).
+  bool simd_lanes = true;
   // Called now and then from the calling thread with (done, total) simulations.
   std::function<void(std::size_t, std::size_t)> progress;
 };

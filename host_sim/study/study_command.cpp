@@ -17,9 +17,11 @@
 #include "common/option_checks.hpp"
 #include "study/boxplot_figure.hpp"
 #include "study/built_in_study.hpp"
+#include "study/paper_calibration_report.hpp"
 #include "study/paper_cylinder.hpp"
 #include "study/recorded_flights.hpp"
 #include "study/study_outputs.hpp"
+#include "study/throw_options.hpp"
 
 namespace aloft::host {
 namespace {
@@ -31,7 +33,15 @@ struct StudyOptions {
   unsigned threads = 0;  // 0: every core
   std::string frame = "both";  // body, world or both (study/da_frame.hpp)
   RecordingInput recording;
+  ThrowOptions throw_options;
+  bool calibrate_to_paper = false;
 };
+
+// What the nominal figure of a recording measures, beside `aloft diagnose`'s baseline for
+// the same data (README, "Study and diagnose on the same data"): different questions.
+constexpr const char* kNominalMeasures =
+    "one simulation seeded from each measured sample, run over the whole flight (the paper's "
+    "measure); aloft diagnose fits the start to the whole flight instead, the model's best case";
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) {
@@ -54,6 +64,16 @@ void check_options(const StudyOptions& o) {
   if (o.frame != "body" && o.frame != "world" && o.frame != "both") {
     throw Error("study: --frame must be body, world or both, not '" + o.frame + "'");
   }
+  if (!r.body_path.empty() && o.throw_options.throw_given()) {
+    throw Error("study: --throw, --spin-*, --duration and --marker-* shape the built-in "
+                "throw; they do not apply to a recording");
+  }
+  if (o.calibrate_to_paper && (!r.body_path.empty() || o.throw_options.searched_given())) {
+    throw Error("study: --calibrate-to-paper searches the built-in throw's spin and marker "
+                "noise; it takes no recording, --throw, --spin-* or --marker-noise");
+  }
+  resolve_throw(o.throw_options);  // refuses bad values before any work
+  resolve_axes_sampler(o.throw_options);
   if (o.frame == "world" && !r.imu_path.empty()) {
     throw Error("study: --frame world needs orientations; an IMU recording has only body rates");
   }
@@ -89,22 +109,19 @@ StudyResult run_study(const StudyOptions& o) {
   InertiaTensor<double> nominal;
   std::vector<Analysis> models;
   if (o.recording.body_path.empty()) {
-    BuiltInTrial trial = make_built_in_trial();
+    BuiltInTrial trial = make_built_in_trial(resolve_throw(o.throw_options));
+    trial.description["preset"] = o.throw_options.preset;
     result.built_in = true;
     result.input = "built-in throw of the paper's cylinder";
     result.trial = trial.description;
     nominal = trial.body.inertia;
-    InertiaTensor<double> cp;
-    const Eigen::Vector3d cp_moments(paper::kCompoundPendulumKgM2[0],
-                                     paper::kCompoundPendulumKgM2[1],
-                                     paper::kCompoundPendulumKgM2[2]);
-    InertiaTensor<double>::make_from_principal(cp_moments, Eigen::Quaterniond::Identity(), cp);
-    models = {model_analysis("GF", nominal), model_analysis("CP", cp)};
+    models = {model_analysis("GF", nominal), model_analysis("CP", compound_pendulum_inertia())};
     result.flights.push_back({std::move(trial.flight), {}});
   } else {
     RecordedTrial trial = load_recorded_trial(o.recording);
     result.input = trial.body.name.empty() ? o.recording.body_path : trial.body.name;
     result.trial = trial.description;
+    result.trial["nominal_measures"] = kNominalMeasures;
     nominal = trial.body.inertia;
     models = {model_analysis("nominal", nominal)};
     for (StudyFlight& f : trial.flights) result.flights.push_back({std::move(f), {}});
@@ -112,11 +129,13 @@ StudyResult run_study(const StudyOptions& o) {
   result.phase_time_s.emplace_back("trial", seconds_since(start));
 
   // The simulations: every flight, models then the 12 Monte Carlo analyses.
+  const AxesSampler sampler = resolve_axes_sampler(o.throw_options);
+  result.axes_sampler = sampler;
   const Clock::time_point simulations_start = Clock::now();
   for (std::size_t i = 0; i < result.flights.size(); ++i) {
     FlightStudy& fs = result.flights[i];
     fs.analyses = models;
-    for (Analysis& a : paper_monte_carlo_analyses(o.mc_samples)) fs.analyses.push_back(a);
+    for (Analysis& a : paper_monte_carlo_analyses(o.mc_samples, sampler)) fs.analyses.push_back(a);
     RunSettings run;
     run.seed = o.seed;
     run.stream_base = 64 * i;
@@ -136,8 +155,10 @@ void write_outputs(const std::string& dir, const std::vector<std::pair<std::stri
   }
   std::vector<std::string> written;
   try {
-    for (const auto& [name, content] : files) {
-      const std::string path = (std::filesystem::path(dir) / name).string();
+    for (const auto& file : files) {
+      // Not a structured binding: a lambda capturing one is C++20, and clang refuses it.
+      const std::string& content = file.second;
+      const std::string path = (std::filesystem::path(dir) / file.first).string();
       write_file_atomically(path, [&](std::ostream& out) { out << content; });
       written.push_back(path);
     }
@@ -148,8 +169,38 @@ void write_outputs(const std::string& dir, const std::vector<std::pair<std::stri
   }
 }
 
+// "study: calibrate: grid 120 / 1120" now and then on stderr: the search takes minutes.
+std::function<void(const std::string&, std::size_t, std::size_t)> calibration_progress() {
+  const bool terminal = ::isatty(STDERR_FILENO);
+  return [terminal](const std::string& phase, std::size_t done, std::size_t total) {
+    if (terminal) {
+      std::fprintf(stderr, "\rstudy: calibrate: %s %zu / %zu\033[K", phase.c_str(), done, total);
+    } else if (done == total || done % 100 == 0) {
+      std::fprintf(stderr, "study: calibrate: %s %zu / %zu\n", phase.c_str(), done, total);
+    }
+    std::fflush(stderr);
+  };
+}
+
+void calibrate(const StudyOptions& o) {
+  CalibrationSettings s;
+  s.base = resolve_throw(o.throw_options);
+  s.sampler = resolve_axes_sampler(o.throw_options);
+  s.mc_samples = o.mc_samples;
+  s.seed = o.seed;
+  s.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  s.progress = calibration_progress();
+  const CalibrationResult result = calibrate_to_paper(s, frames_to_report(o));
+  if (::isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
+  write_outputs(o.out_dir, {{"calibration.json", calibration_json(result, s).dump(2) + "\n"}});
+  std::fputs(calibration_table(result).c_str(), stdout);
+  std::printf("wall time %.1f s on %u thread%s; wrote %s/calibration.json\n", result.wall_time_s,
+              s.threads, s.threads == 1 ? "" : "s", o.out_dir.c_str());
+}
+
 void study(const StudyOptions& o) {
   check_options(o);
+  if (o.calibrate_to_paper) return calibrate(o);
   const Clock::time_point start = Clock::now();
   StudyResult result = run_study(o);
 
@@ -173,6 +224,7 @@ void study(const StudyOptions& o) {
               static_cast<unsigned long long>(result.seed), result.threads,
               result.threads == 1 ? "" : "s");
   std::fputs(table.c_str(), stdout);
+  if (!result.built_in) std::printf("nominal: %s\n", kNominalMeasures);
   std::printf("wall time %.2f s (", result.wall_time_s);
   for (std::size_t i = 0; i < result.phase_time_s.size(); ++i) {
     std::printf("%s%s %.2f s", i ? ", " : "", result.phase_time_s[i].first.c_str(),
@@ -194,7 +246,7 @@ void add_study_command(CLI::App& app) {
   cmd->add_option("--seed", options->seed, "seed of the Monte Carlo draws (default 1)")
       ->check(whole_number());
   cmd->add_option("--mc-samples", options->mc_samples,
-                  "simulations per Monte Carlo analysis (default 5000)")
+                  "simulations per Monte Carlo analysis and flight (default 5000)")
       ->check(whole_number());
   cmd->add_option("--threads", options->threads, "worker threads (default: every core)")
       ->check(whole_number());
@@ -206,6 +258,11 @@ void add_study_command(CLI::App& app) {
   cmd->add_option("--poses", options->recording.poses_path, "poses (.mot, .sto, pose .csv)");
   cmd->add_option("--imu", options->recording.imu_path, "IMU log (plain or phyphox .csv)");
   cmd->add_option("--segments", options->recording.segments_path, "flights within the IMU log");
+  add_throw_options(*cmd, options->throw_options);
+  cmd->add_flag("--calibrate-to-paper", options->calibrate_to_paper,
+                "search the throw (spin rate, axis, marker noise) that matches the paper's GF "
+                "and CP rows, per frame, and predict its Monte Carlo rows (README); writes "
+                "calibration.json");
   cmd->callback([options] { study(*options); });
 }
 

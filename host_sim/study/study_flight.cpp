@@ -18,9 +18,11 @@ StudyFlight make_pose_flight(const std::string& name, const ResampledPoses& pose
   const std::size_t n = f.time_s.size();
   f.measured_omega_body.resize(n > 0 ? n - 1 : 0, Eigen::Vector3d::Zero());
   for (std::size_t j = 0; j + 1 < n; ++j) {
-    // A failed status (bad dt or quaternion) leaves zero, which validation rejects.
-    omega_body_from_orientations(f.orientation[j], f.orientation[j + 1],
-                                 f.time_s[j + 1] - f.time_s[j], f.measured_omega_body[j]);
+    // A failed status (bad dt or quaternion) leaves the rate zero, which validation rejects.
+    const Status s = omega_body_from_orientations(f.orientation[j], f.orientation[j + 1],
+                                                  f.time_s[j + 1] - f.time_s[j],
+                                                  f.measured_omega_body[j]);
+    if (s != Status::ok) f.measured_omega_body[j].setZero();
   }
   f.measured_omega_world.resize(f.measured_omega_body.size());
   for (std::size_t j = 0; j < f.measured_omega_body.size(); ++j) {

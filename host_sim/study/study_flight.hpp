@@ -5,7 +5,8 @@
 // Two kinds:
 //  - pose flights (motion capture, pose files, the built-in throw): an orientation at
 //    every sample; measured omega_j = log(q_j^-1 q_{j+1}) / (t_{j+1} - t_j) for j < n-1,
-//    the seed study's "each pair of consecutive rotation matrices"; a simulation is
+//    from "each pair of consecutive rotation matrices" as the seed study puts it (it
+//    does not say in which axes; the world-axes omega is q_j omega_j); a simulation is
 //    compared the same way, from its own consecutive orientations;
 //  - rate flights (IMU): no orientation; measured omega_j is the gyro in body axes at
 //    every sample, and a simulation integrates the body rate alone (torque-free body

@@ -149,6 +149,7 @@ json results_json(const StudyResult& result) {
   out["seed"] = result.seed;
   out["threads"] = result.threads;
   out["mc_samples"] = result.mc_samples;
+  out["axes_sampler"] = axes_sampler_name(result.axes_sampler);
   out["percentile_definition"] =
       "linear interpolation between order statistics at rank p(n-1) (Hyndman-Fan type 7)";
   out["frame_definitions"] = frame_definitions();

@@ -28,6 +28,7 @@ struct StudyResult {
   std::uint64_t seed = 0;
   unsigned threads = 1;
   std::size_t mc_samples = 0;
+  AxesSampler axes_sampler = AxesSampler::ball;
   // The frames reported (--frame), the first one also under SPEC §5's top-level keys.
   std::vector<DaFrame> frames = {DaFrame::body, DaFrame::world};
   std::vector<std::pair<std::string, double>> phase_time_s;  // where the time went

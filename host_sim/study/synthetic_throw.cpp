@@ -11,7 +11,11 @@
 
 namespace aloft::host {
 
-Body paper_cylinder_body() {
+const char* marker_layout_name(MarkerLayout layout) {
+  return layout == MarkerLayout::side ? "side" : "side-and-end";
+}
+
+Body paper_cylinder_body(MarkerLayout layout) {
   Body body;
   body.name = "paper steel cylinder (GF)";
   body.mass_kg = paper::kMassKg;
@@ -27,6 +31,13 @@ Body paper_cylinder_body() {
     const double a = azimuth_deg * M_PI / 180.0;
     return Eigen::Vector3d((radius + proud) * std::cos(a), (radius + proud) * std::sin(a), z);
   };
+  if (layout == MarkerLayout::side) {
+    body.markers_m["M1"] = on_side(15.0, 0.035);
+    body.markers_m["M2"] = on_side(110.0, -0.030);
+    body.markers_m["M3"] = on_side(200.0, 0.015);
+    body.markers_m["M4"] = on_side(285.0, -0.010);
+    return body;
+  }
   body.markers_m["M1"] = on_side(20.0, 0.030);
   body.markers_m["M2"] = on_side(140.0, -0.025);
   body.markers_m["M3"] = on_side(250.0, 0.010);
@@ -36,7 +47,7 @@ Body paper_cylinder_body() {
 
 SyntheticThrow make_synthetic_throw(const SyntheticThrowSettings& settings) {
   SyntheticThrow out;
-  out.body = paper_cylinder_body();
+  out.body = paper_cylinder_body(settings.marker_layout);
 
   const double frame_dt = 1.0 / settings.camera_rate_hz;
   const auto frames =
@@ -46,7 +57,7 @@ SyntheticThrow make_synthetic_throw(const SyntheticThrowSettings& settings) {
   constexpr int kSubsteps = 16;
   const Rk4Integrator<double> integrator(out.body.inertia);
   RigidBodyState<double> state{settings.initial_orientation.normalized(),
-                               settings.initial_omega_body_rad_s};
+                               settings.initial_omega_body_rad_s()};
 
   MarkerTrial& m = out.markers;
   m.path = "built-in throw";
@@ -60,14 +71,18 @@ SyntheticThrow make_synthetic_throw(const SyntheticThrowSettings& settings) {
   SimulationRandom random(settings.noise_seed, 0, 0);
   boost::random::normal_distribution<double> noise(0.0, settings.marker_noise_m);
   const Eigen::Vector3d gravity(0.0, 0.0, -9.81);
+  const Eigen::Vector3d launch_velocity(settings.launch_horizontal_velocity_m_s.x(),
+                                        settings.launch_horizontal_velocity_m_s.y(),
+                                        -gravity.z() * settings.flight_time_s / 2.0);
   for (std::size_t i = 0; i < frames; ++i) {
     if (i > 0) {
       for (int s = 0; s < kSubsteps; ++s) {
-        integrator.step(state, frame_dt / kSubsteps, TimeDirection::forward);
+        const Status stepped = integrator.step(state, frame_dt / kSubsteps, TimeDirection::forward);
+        if (stepped != Status::ok) throw std::logic_error(std::string("built-in throw: ") + describe(stepped));
       }
     }
     const double t = static_cast<double>(i) * frame_dt;
-    const Eigen::Vector3d centre = settings.launch_position_m + settings.launch_velocity_m_s * t +
+    const Eigen::Vector3d centre = settings.launch_position_m + launch_velocity * t +
                                    0.5 * gravity * t * t;
     const Eigen::Matrix3d r = state.orientation.toRotationMatrix();
     std::vector<Eigen::Vector3d> seen;

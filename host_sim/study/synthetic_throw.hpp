@@ -19,7 +19,11 @@
 //    four markers 65-80 mm from the centre it makes about 1 mrad of orientation noise.
 //    The study's result depends on this number in proportion (see the README).
 //  - Markers 6 mm proud of the surface (a 12 mm marker's centre), spread over the side
-//    and one end so that no three are close to collinear, unevenly, as stuck on by hand.
+//    and one end so that no three are close to collinear, unevenly, as stuck on by hand
+//    (the paper says only "four ... markers adhered to the cylinder's surface"; the
+//    `side` layout puts all four on the curved side).
+// Every one of these is an option of `aloft study` (--spin-rate, --spin-tilt,
+// --spin-azimuth, --duration, --marker-noise, --marker-layout); these are the defaults.
 //  - The centre of mass follows a ballistic arc (g = 9.81 m/s²) that lands at launch
 //    height after the flight time; translation does not affect the rotation but the
 //    markers move as in a real throw.
@@ -43,16 +47,33 @@ inline Eigen::Vector3d rate_about_axis(double rad_s, double polar_deg, double az
                                  std::sin(polar) * std::sin(azimuth), std::cos(polar));
 }
 
+// Where the four markers sit on the cylinder.
+enum class MarkerLayout {
+  side_and_end,  // three on the side at uneven heights and azimuths, one on the top face
+  side,          // all four on the curved side, uneven heights, about 90° apart
+};
+const char* marker_layout_name(MarkerLayout layout);  // "side-and-end", "side"
+
 struct SyntheticThrowSettings {
+  // The spin: 1.5 rev/s about an axis 50° from body z (tilt), its projection 30° round
+  // from body x (azimuth).
+  double spin_rate_rev_s = 1.5;
+  double spin_tilt_deg = 50.0;
+  double spin_azimuth_deg = 30.0;
   double flight_time_s = 0.872;
   double camera_rate_hz = 250.0;
-  // 1.5 rev/s about an axis 50° from body z, its projection 30° round from body x.
-  Eigen::Vector3d initial_omega_body_rad_s = rate_about_axis(3.0 * M_PI, 50.0, 30.0);
   Eigen::Quaterniond initial_orientation = Eigen::Quaterniond(0.9, 0.3, -0.2, 0.25).normalized();
   Eigen::Vector3d launch_position_m = {0.0, 0.0, 1.0};
-  Eigen::Vector3d launch_velocity_m_s = {1.5, 0.2, 4.2772};  // back to 1 m after 0.872 s
+  // Horizontal launch velocity; the vertical one brings the centre back to launch height
+  // after flight_time_s.
+  Eigen::Vector2d launch_horizontal_velocity_m_s = {1.5, 0.2};
   double marker_noise_m = 0.1e-3;
+  MarkerLayout marker_layout = MarkerLayout::side_and_end;
   std::uint64_t noise_seed = 20160101;
+
+  Eigen::Vector3d initial_omega_body_rad_s() const {
+    return rate_about_axis(2.0 * M_PI * spin_rate_rev_s, spin_tilt_deg, spin_azimuth_deg);
+  }
 };
 
 struct SyntheticThrow {
@@ -62,8 +83,8 @@ struct SyntheticThrow {
   std::vector<Eigen::Vector3d> true_omega_body;  // true body rate at each camera frame
 };
 
-// The paper's cylinder by geometric formulae, with the built-in trial's four markers.
-Body paper_cylinder_body();
+// The paper's cylinder by geometric formulae, with four markers in `layout`.
+Body paper_cylinder_body(MarkerLayout layout = MarkerLayout::side_and_end);
 
 SyntheticThrow make_synthetic_throw(const SyntheticThrowSettings& settings = {});
 

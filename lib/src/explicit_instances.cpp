@@ -14,6 +14,8 @@ template void principal_rk4_step<double>(const EulerCoefficients<double>&,
                                          PrincipalState<double>&, const double&);
 template float lane_deviation_angle<float>(const LaneVec3<float>&, const LaneVec3<float>&);
 template double lane_deviation_angle<double>(const LaneVec3<double>&, const LaneVec3<double>&);
+template class BatchFlight<float>;
+template class BatchFlight<double>;
 template class Rk4Integrator<float>;
 template class Rk4Integrator<double>;
 template class SplittingIntegrator<float>;

@@ -5,9 +5,12 @@
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <cstdlib>
 #include <boost/numeric/odeint.hpp>
 
 #include "aloft/aloft.hpp"
+#include "aloft/xsimd_lanes.hpp"
+#include "lanes_flight.hpp"
 
 namespace {
 
@@ -15,9 +18,10 @@ template <typename S>
 aloft::InertiaTensor<S> gf_cylinder_tilted() {
   // The study's cylinder with its principal axes a little off the body axes (full tensor).
   aloft::InertiaTensor<S> inertia;
-  aloft::InertiaTensor<S>::make_from_principal(
+  const aloft::Status made = aloft::InertiaTensor<S>::make_from_principal(
       aloft::Vec3<S>(S(0.0183892), S(0.0183892), S(0.0210806)),
       aloft::quat_wxyz(S(0.999), S(0.03), S(-0.02), S(0.01)).normalized(), inertia);
+  if (made != aloft::Status::ok) std::abort();
   return inertia;
 }
 
@@ -34,7 +38,7 @@ void BM_Step(benchmark::State& bench) {
   const Integrator<S> integrator(gf_cylinder_tilted<S>());
   aloft::RigidBodyState<S> state = thrown_state<S>();
   for (auto _ : bench) {
-    integrator.step(state, S(1e-3));
+    benchmark::DoNotOptimize(integrator.step(state, S(1e-3)));
     benchmark::DoNotOptimize(state);
   }
 }
@@ -54,16 +58,18 @@ void BM_OnboardCheckUpdateK8(benchmark::State& bench) {
   std::array<aloft::Vec3<S>, 1000> gyro;
   aloft::RigidBodyState<S> state = thrown_state<S>();
   for (auto& g : gyro) {
-    integrator.step(state, S(1e-3));
+    if (integrator.step(state, S(1e-3)) != aloft::Status::ok) std::abort();
     g = state.omega_body;
   }
   aloft::OnboardCheckSettings<S> settings;
   settings.seed_every = 10;
   aloft::OnboardCheck<S, 8> check(inertia, settings);
-  for (int k = 0; k < 100; ++k) check.update(gyro[std::size_t(k)], S(1e-3));
+  for (int k = 0; k < 100; ++k) {
+    if (check.update(gyro[std::size_t(k)], S(1e-3)) != aloft::Status::ok) std::abort();
+  }
   std::size_t k = 0;
   for (auto _ : bench) {
-    check.update(gyro[k], S(1e-3));
+    benchmark::DoNotOptimize(check.update(gyro[k], S(1e-3)));
     k = (k + 1) % gyro.size();
     benchmark::DoNotOptimize(check);
   }
@@ -72,7 +78,7 @@ void BM_OnboardCheckUpdateK8(benchmark::State& bench) {
 BENCHMARK_TEMPLATE(BM_OnboardCheckUpdateK8, double);
 BENCHMARK_TEMPLATE(BM_OnboardCheckUpdateK8, float);
 
-constexpr int kFlightSteps = 872;  // 0.872 s at 1 kHz: 873 samples
+using aloft_bench::kFlightSteps;
 
 // aloft as a hot loop uses it: into the principal frame once, 872 steps there, and
 // back into body axes at the end (where Odeint also ends with its state).
@@ -86,6 +92,26 @@ void BM_FullFlight_aloft(benchmark::State& bench) {
   }
 }
 BENCHMARK(BM_FullFlight_aloft);
+
+// The same flight for as many simulations as one SIMD register holds, each its own
+// tensor: time per flight (lanes_flight.hpp). This build's register (xsimd::batch<double>:
+// SSE2, 2 doubles), and AVX2 with FMA (4 doubles) where the CPU has them.
+void BM_FullFlight_aloft_lanes(benchmark::State& bench) {
+  const aloft::Rk4Integrator<double> integrator(gf_cylinder_tilted<double>());
+  aloft_bench::full_flight_lanes<xsimd::batch<double>>(
+      bench, integrator.frame().coefficients(), integrator.frame().to_principal(thrown_state<double>()));
+}
+void BM_FullFlight_aloft_lanes_avx2(benchmark::State& bench) {
+  if (!aloft_bench::avx2_fma_supported()) {
+    bench.SkipWithError("this CPU has no AVX2 and FMA");
+    return;
+  }
+  const aloft::Rk4Integrator<double> integrator(gf_cylinder_tilted<double>());
+  aloft_bench::full_flight_lanes_avx2(bench, integrator.frame().coefficients(),
+                                      integrator.frame().to_principal(thrown_state<double>()));
+}
+BENCHMARK(BM_FullFlight_aloft_lanes_avx2);
+BENCHMARK(BM_FullFlight_aloft_lanes);
 
 // The same flight through the body-state API, Rk4Integrator::step_unchecked, which
 // crosses the principal frame at every step.

@@ -9,6 +9,7 @@
 // (0.71 measured: each simulation lives 80 samples, 0.16 s).
 #include <cstdint>
 
+#include "aloft/euler_equations.hpp"
 #include "aloft/onboard_check.hpp"
 #include "aloft_port/report_writer.hpp"
 

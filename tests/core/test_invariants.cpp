@@ -1,74 +1,16 @@
 // Conservation of energy and angular momentum, and time reversal: forward then
 // backward over the same span returns to the start.
-#include <algorithm>
-
-#include "aloft/rk4_integrator.hpp"
-#include "aloft/splitting_integrator.hpp"
+#include "accuracy_measures.hpp"
 #include "test_api.hpp"
 #include "tolerances.hpp"
 
-namespace {
-
-using aloft::Quat;
 using aloft::Vec3;
+using aloft_test::Drift;
+using aloft_test::invariant_drift;
+using aloft_test::round_trip_error;
+using aloft_test::tumbling_body;
+using aloft_test::tumbling_start;
 using Accuracy = aloft_test::Accuracy<double>;
-
-// An asymmetric body in a tilted frame (full tensor), tumbling near the intermediate axis.
-aloft::InertiaTensor<double> tumbling_body() {
-  aloft::InertiaTensor<double> inertia;
-  const aloft::Status s = aloft::InertiaTensor<double>::make_from_principal(
-      Vec3<double>(0.012, 0.021, 0.030), aloft::quat_wxyz(0.9, 0.3, -0.2, 0.1).normalized(),
-      inertia);
-  ALOFT_REQUIRE(s == aloft::Status::ok);
-  return inertia;
-}
-
-aloft::RigidBodyState<double> tumbling_start(const aloft::InertiaTensor<double>& inertia) {
-  aloft::RigidBodyState<double> state;
-  state.orientation = aloft::quat_wxyz(0.5, 0.5, -0.5, 0.5);
-  // Mostly about the intermediate principal axis, with a small perturbation.
-  const Quat<double> axes = inertia.principal_axes();
-  state.omega_body = axes * Vec3<double>(0.3, 14.0, 0.4);
-  return state;
-}
-
-struct Drift {
-  double energy = 0.0;
-  double momentum = 0.0;
-};
-
-template <typename Integrator>
-Drift invariant_drift(const Integrator& integrator, aloft::RigidBodyState<double> state) {
-  const aloft::InertiaTensor<double>& inertia = integrator.inertia();
-  const double e0 = inertia.kinetic_energy(state.omega_body);
-  const Vec3<double> l0 = state.orientation * inertia.angular_momentum(state.omega_body);
-  Drift worst;
-  for (int k = 0; k < 1000; ++k) {
-    ALOFT_REQUIRE(integrator.step(state, 1e-3) == aloft::Status::ok);
-    const double e = inertia.kinetic_energy(state.omega_body);
-    const double l = inertia.angular_momentum(state.omega_body).norm();
-    worst.energy = std::max(worst.energy, std::abs(e - e0) / e0);
-    worst.momentum = std::max(worst.momentum, std::abs(l - l0.norm()) / l0.norm());
-  }
-  return worst;
-}
-
-template <typename Integrator>
-double round_trip_error(const Integrator& integrator, const aloft::RigidBodyState<double>& start,
-                        double* rate_error) {
-  aloft::RigidBodyState<double> state = start;
-  for (int k = 0; k < 1000; ++k) {
-    ALOFT_REQUIRE(integrator.step(state, 1e-3, aloft::TimeDirection::forward) == aloft::Status::ok);
-  }
-  for (int k = 0; k < 1000; ++k) {
-    ALOFT_REQUIRE(integrator.step(state, 1e-3, aloft::TimeDirection::backward) ==
-                  aloft::Status::ok);
-  }
-  *rate_error = (state.omega_body - start.omega_body).norm() / start.omega_body.norm();
-  return aloft::angle_between(state.orientation, start.orientation);
-}
-
-}  // namespace
 
 ALOFT_TEST_CASE("RK4 keeps energy and |L| over a tumbling second", "[invariants]") {
   const aloft::InertiaTensor<double> inertia = tumbling_body();

@@ -1,7 +1,6 @@
 // aloft's polynomial atan2 (aloft/lane_angle.hpp) and the principal-frame dynamics
 // (aloft/principal_dynamics.hpp) against the C library and the body-axes equations.
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
 
 #include "aloft/deviation.hpp"
@@ -100,9 +99,7 @@ ALOFT_TEST_CASE("deviation angle of nearly parallel and nearly opposite vectors"
 }
 
 ALOFT_TEST_CASE("principal-frame rates follow the body-axes equations", "[dynamics][lanes]") {
-  const double d = worst_frame_difference<double>();
-  const float f = worst_frame_difference<float>();
-  std::printf("frame difference %g %g\n", d, double(f));
-  ALOFT_CHECK(d < 1e-13);
-  ALOFT_CHECK(f < 1e-5f);
+  // Measured 1.7e-15 and 1.1e-6.
+  ALOFT_CHECK(worst_frame_difference<double>() < 1e-14);
+  ALOFT_CHECK(worst_frame_difference<float>() < 5e-6f);
 }

@@ -96,6 +96,19 @@ TEST_CASE("diagnose refuses bad arguments with one line and writes no report", "
     CHECK(one_line(e));
     CHECK(e.find("--window") != std::string::npos);
   }
+  SECTION("a long log without an accelerometer, --segments or --window") {
+    ImuLog long_log;
+    for (int k = 0; k < 700; ++k) {
+      long_log.time_s.push_back(0.01 * k);
+      long_log.gyro_rad_s.push_back(Eigen::Vector3d(0.1, 0.0, 0.0));
+    }
+    write_imu(scratch.file("long.csv"), long_log);
+    const std::string e = run({"--body", body, "--imu", scratch.file("long.csv"), "--json", report});
+    CHECK(one_line(e));
+    CHECK(e.find("--segments") != std::string::npos);
+    CHECK(e.find("--window") != std::string::npos);
+    CHECK_FALSE(fs::exists(report));
+  }
   SECTION("--window backwards") {
     CHECK(one_line(run({"--body", body, "--imu", imu, "--window", "0.8:0.2", "--json", report})));
   }

@@ -24,6 +24,10 @@ struct C3dContent {
   double scale = 0.1;  // file units per integer step (integer data)
   float rate_hz = 100.0f;
   std::string units = "mm";
+  // Long trials (over 65,535 frames): the frame range also goes into
+  // TRIAL:ACTUAL_START_FIELD/ACTUAL_END_FIELD as two 16-bit words, low word first, and the
+  // header's 16-bit last frame is capped at 65535, as Vicon writes them.
+  bool trial_fields = false;
   std::vector<std::string> labels;
   // coordinates[frame][point] in file units; a NaN x marks the point invalid.
   std::vector<std::vector<std::array<double, 3>>> coordinates;
@@ -82,14 +86,14 @@ inline std::vector<std::uint8_t> write_c3d_bytes(const C3dContent& c) {
     records.insert(records.end(), body.begin(), body.end());
   };
   auto parameter = [&](const std::string& name, int type, const std::vector<int>& dims,
-                       const std::vector<std::uint8_t>& data) {
+                       const std::vector<std::uint8_t>& data, int group_id = 1) {
     std::vector<std::uint8_t> body;
     w.u8(body, type);
     w.u8(body, static_cast<int>(dims.size()));
     for (int d : dims) w.u8(body, d);
     body.insert(body.end(), data.begin(), data.end());
     w.u8(body, 0);  // no description
-    record(1, name, body);
+    record(group_id, name, body);
   };
   auto int_data = [&](int v) { std::vector<std::uint8_t> d; w.i16(d, v); return d; };
   auto float_data = [&](float v) { std::vector<std::uint8_t> d; w.f32(d, v); return d; };
@@ -114,6 +118,17 @@ inline std::vector<std::uint8_t> write_c3d_bytes(const C3dContent& c) {
   parameter("LABELS", -1, {static_cast<int>(label_length), static_cast<int>(points)}, labels);
   parameter("UNITS", -1, {static_cast<int>(c.units.size())},
             std::vector<std::uint8_t>(c.units.begin(), c.units.end()));
+  if (c.trial_fields) {
+    auto two_words = [&](std::size_t v) {
+      std::vector<std::uint8_t> d;
+      w.i16(d, static_cast<int>(v & 0xFFFF));
+      w.i16(d, static_cast<int>(v >> 16));
+      return d;
+    };
+    record(-2, "TRIAL", std::vector<std::uint8_t>{0});
+    parameter("ACTUAL_START_FIELD", 2, {2}, two_words(1), 2);
+    parameter("ACTUAL_END_FIELD", 2, {2}, two_words(frames), 2);
+  }
   records.push_back(0);  // end of the chain
   records.push_back(0);
 
@@ -125,7 +140,7 @@ inline std::vector<std::uint8_t> write_c3d_bytes(const C3dContent& c) {
     w.i16(h, static_cast<int>(points));
     w.i16(h, 0);  // analog samples per frame
     w.i16(h, 1);
-    w.i16(h, static_cast<int>(frames));
+    w.i16(h, static_cast<int>(std::min<std::size_t>(frames, 65535)));
     w.i16(h, 0);
     w.f32(h, stored_scale);
     w.i16(h, data_start);

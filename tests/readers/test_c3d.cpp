@@ -236,3 +236,75 @@ TEST_CASE("bad C3D files: one-line errors", "[readers][c3d][bad]") {
     CHECK_ONE_LINE_ERROR(read_c3d(p), p, "beyond the end");
   }
 }
+
+TEST_CASE("C3D POINT:UNITS matched as C3D tools match them", "[readers][c3d][units]") {
+  ScratchDir dir;
+  auto content = two_marker_trial(Processor::intel, true);
+  for (const std::string& metres : {"mete", "meters", " METRES", "m"}) {
+    INFO("units '" << metres << "'");
+    content.units = metres;
+    const auto trial = read_c3d(dir.write("m.c3d", as_text(aloft::test::write_c3d_bytes(content))));
+    CHECK(trial.positions_m[0][0].x() == Approx(100.0));
+  }
+  content.units = "millimeters";
+  const auto mm = read_c3d(dir.write("mm.c3d", as_text(aloft::test::write_c3d_bytes(content))));
+  CHECK(mm.positions_m[0][0].x() == Approx(0.1));
+  content.units = "feet";
+  const auto p = dir.write("ft.c3d", as_text(aloft::test::write_c3d_bytes(content)));
+  CHECK_ONE_LINE_ERROR(read_c3d(p), p, "unknown POINT:UNITS 'feet'");
+}
+
+TEST_CASE("C3D long trial: frame count over 65,535 from TRIAL:ACTUAL_*_FIELD", "[readers][c3d]") {
+  ScratchDir dir;
+  C3dContent c;
+  c.float_data = false;
+  c.scale = 0.1;
+  c.rate_hz = 1000.0f;
+  c.labels = {"M1"};
+  c.trial_fields = true;
+  constexpr std::size_t kFrames = 70000;
+  for (std::size_t f = 0; f < kFrames; ++f) {
+    c.coordinates.push_back({{{static_cast<double>(f % 3000), 1.0, -2.0}}});
+  }
+  C3dDetails details;
+  const auto trial = read_c3d(dir.write("long.c3d", as_text(aloft::test::write_c3d_bytes(c))), &details);
+  REQUIRE(trial.time_s.size() == kFrames);
+  CHECK(details.first_frame == 1);
+  CHECK(trial.time_s.back() == Approx((kFrames - 1) / 1000.0));
+  CHECK(trial.positions_m[69999][0].x() == Approx((69999 % 3000) * 1e-3));
+  CHECK(trial.positions_m[65536][0].x() == Approx((65536 % 3000) * 1e-3));
+  // Without the TRIAL fields the header's 16-bit count says 65,535 frames: read as such.
+  c.trial_fields = false;
+  const auto capped = read_c3d(dir.write("capped.c3d", as_text(aloft::test::write_c3d_bytes(c))));
+  CHECK(capped.time_s.size() == 65535);
+}
+
+TEST_CASE("C3D numbers out of range are refused before they are used", "[readers][c3d][bad]") {
+  ScratchDir dir;
+  auto content = two_marker_trial(Processor::intel, true);
+  SECTION("a rate of 1e30 in both the parameter and the header") {
+    content.rate_hz = 1e30f;
+    const auto p = dir.write("r.c3d", as_text(aloft::test::write_c3d_bytes(content)));
+    CHECK_ONE_LINE_ERROR(read_c3d(p), p, "POINT:RATE");
+  }
+  SECTION("a long trial claiming more frames than the file holds: the claim and the truth") {
+    content.trial_fields = true;
+    auto bytes = aloft::test::write_c3d_bytes(content);
+    // ACTUAL_END_FIELD's high word sits 2 bytes before the end of its record; make it
+    // claim 2^31 frames.
+    const std::string name = "ACTUAL_END_FIELD";
+    const auto at = as_text(bytes).find(name);
+    REQUIRE(at != std::string::npos);
+    const std::size_t high_word = at + name.size() + 2 + 2 + 1 + 2;  // offset, type, dims, dim, low
+    bytes[high_word] = 0x00;
+    bytes[high_word + 1] = 0x80;
+    const auto p = dir.write("c.c3d", as_text(bytes));
+    // 2^31 + 3 frames claimed; one 512-byte data block of 32-byte frames holds 16.
+    CHECK_ONE_LINE_ERROR(read_c3d(p), p, "claims 2147483651 frames", "holds 16");
+  }
+  SECTION("a 100 MB file of something else is refused from its first block") {
+    std::string garbage(100u << 20, 'x');
+    const auto p = dir.write("g.c3d", garbage);
+    CHECK_ONE_LINE_ERROR(read_c3d(p), p, "not a C3D file");
+  }
+}

@@ -45,7 +45,7 @@ TEST_CASE(".mot free joint: body-fixed X-Y-Z Cardan angles in degrees", "[reader
   CHECK(trial.position_m[0].isApprox(Eigen::Vector3d(1, 2, 3)));
 }
 
-TEST_CASE(".mot/.sto columns by name, by OpenSim default names, or by position", "[readers][mot]") {
+TEST_CASE(".mot/.sto columns by name or by OpenSim's free-joint names", "[readers][mot]") {
   ScratchDir dir;
   const Eigen::Quaterniond expected(Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()) *
                                     Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()) *
@@ -64,8 +64,23 @@ TEST_CASE(".mot/.sto columns by name, by OpenSim default names, or by position",
     CHECK(rotation_angle(t.orientation[0], expected) < 1e-12);
     CHECK(t.position_m[0].isApprox(Eigen::Vector3d(1, 2, 3)));
   }
-  SECTION("unrecognised names, six columns: by position") {
-    const auto t = read_mot(dir.write("p.mot", mot("inDegrees=no\n", "time a b c d e f", "0 0.1 0.2 0.3 1 2 3\n")));
+  SECTION("OpenSim's xRotation ... zTranslation spelling") {
+    const auto t = read_mot(dir.write(
+        "x.mot", mot("inDegrees=no\n",
+                     "time blockToGround_xRotation blockToGround_yRotation blockToGround_zRotation "
+                     "blockToGround_xTranslation blockToGround_yTranslation blockToGround_zTranslation",
+                     "0 0.1 0.2 0.3 1 2 3\n")));
+    CHECK(rotation_angle(t.orientation[0], expected) < 1e-12);
+    CHECK(t.position_m[0].isApprox(Eigen::Vector3d(1, 2, 3)));
+  }
+  SECTION("OpenSim 4 state paths: values read, speeds ignored") {
+    const auto t = read_mot(dir.write(
+        "v.sto", mot("inDegrees=no\n",
+                     "time /jointset/free/free_coord_0/value /jointset/free/free_coord_0/speed "
+                     "/jointset/free/free_coord_1/value /jointset/free/free_coord_2/value "
+                     "/jointset/free/free_coord_3/value /jointset/free/free_coord_4/value "
+                     "/jointset/free/free_coord_5/value",
+                     "0 0.1 9 0.2 0.3 1 2 3\n")));
     CHECK(rotation_angle(t.orientation[0], expected) < 1e-12);
     CHECK(t.position_m[0].isApprox(Eigen::Vector3d(1, 2, 3)));
   }
@@ -117,7 +132,11 @@ TEST_CASE("bad pose files: one-line errors", "[readers][mot][pose_csv][bad]") {
   }
   SECTION("rotation columns not found") {
     const auto p = dir.write("a.mot", mot("inDegrees=yes\n", "time a b c d", "0 1 2 3 4\n"));
-    CHECK_ONE_LINE_ERROR(read_mot(p), p + ":5:", "rotation columns");
+    CHECK_ONE_LINE_ERROR(read_mot(p), p + ":5:", "no free-joint pose", "time a b c d", "--pose-columns");
+  }
+  SECTION("nRows beyond any count is refused before it is converted") {
+    const auto p = dir.write("a.mot", mot("nRows=1e300\ninDegrees=yes\n", "time rx ry rz", "0 1 2 3\n"));
+    CHECK_ONE_LINE_ERROR(read_mot(p), p + ":3:", "nRows", "1e300");
   }
   SECTION("no time column") {
     const auto p = dir.write("a.mot", mot("inDegrees=yes\n", "rx ry rz", "1 2 3\n"));

@@ -27,6 +27,22 @@ TEST_CASE("segments: keep=false rows skipped, spaces trimmed, comments kept", "[
   CHECK(segments[2].end_s == 26.25);
 }
 
+TEST_CASE("segments: a keep=false row is skipped before its cells are read", "[readers][segments]") {
+  ScratchDir dir;
+  // phyphox users leave start and end blank on rows they do not keep (SPEC §3).
+  const auto segments = read_segments_csv(dir.write(
+      "s.csv",
+      "segment,start,end,keep,comment\n"
+      "0,,,false,warm-up\n"
+      "1,1.0,2.0,true,\n"
+      "x, later , ?, FALSE, dropped, with a comma\n"
+      "2,3.0,4.0\n"));
+  REQUIRE(segments.size() == 2);
+  CHECK(segments[0].name == "1");
+  CHECK(segments[1].name == "2");
+  CHECK(segments[1].start_s == 3.0);
+}
+
 TEST_CASE("racquet sessions' segments", "[readers][segments][shared]") {
   ALOFT_REQUIRE_SHARED_DATA(data);
   const auto first = read_segments_csv(data + "/real/racquet/2025-01-16_17-10-11/segments.csv");

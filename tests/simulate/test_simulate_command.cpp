@@ -129,7 +129,7 @@ TEST_CASE("simulate refuses bad input with one line and writes nothing", "[simul
       {good, "--w0 1,x,3", "not a number"},
       {good, "--w0 1,2,3 --q0 2,0,0,0", "unit length"},
       {good, "--w0 1,2,nan", "non-finite"},
-      {good, "--w0 1,2,3 --integrator euler", "unknown integrator"},
+      {good, "--w0 1,2,3 --integrator euler", "--integrator: euler not in {rk4,splitting}"},
   };
   for (const Case& c : cases) {
     write_text(dir / "body.json", c.body);

@@ -18,8 +18,9 @@ namespace {
 
 aloft::InertiaTensor<double> compound_pendulum() {
   aloft::InertiaTensor<double> cp;
-  aloft::InertiaTensor<double>::make_from_principal(Eigen::Vector3d(203.3e-4, 155.0e-4, 192.5e-4),
-                                                    Eigen::Quaterniond::Identity(), cp);
+  REQUIRE(aloft::InertiaTensor<double>::make_from_principal(
+              Eigen::Vector3d(203.3e-4, 155.0e-4, 192.5e-4), Eigen::Quaterniond::Identity(), cp) ==
+          aloft::Status::ok);
   return cp;
 }
 

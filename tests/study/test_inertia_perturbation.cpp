@@ -81,3 +81,49 @@ TEST_CASE("draws of every analysis are paired: the same unit perturbation scaled
     CHECK((both10.principal_moments() - m10.principal_moments()).norm() < 1e-15);
   }
 }
+
+TEST_CASE("the ball is only part of the rotations that keep every axis within the bound") {
+  // 12.26° about (1,1,1)/√3 moves each body axis by 10.0°: within a 10° cone for every
+  // axis, yet outside the 10° ball of rotation vectors.
+  const double angle = 12.26 * M_PI / 180.0;
+  const Eigen::Matrix3d r =
+      Eigen::AngleAxisd(angle, Eigen::Vector3d(1.0, 1.0, 1.0).normalized()).toRotationMatrix();
+  for (int i = 0; i < 3; ++i) {
+    const double moved = std::acos(r(i, i)) * 180.0 / M_PI;
+    INFO("axis " << i << " moved by " << moved << " deg");
+    CHECK(moved == Approx(10.0).margin(0.01));
+  }
+  CHECK(angle * 180.0 / M_PI > 10.0);
+}
+
+TEST_CASE("cardan axes draws: three independent angles, each uniform within the bound") {
+  const aloft::InertiaTensor<double> gf = paper_cylinder_body().inertia;
+  double largest = 0.0;
+  int beyond_ball = 0;
+  int within_half[3] = {0, 0, 0};
+  const int n = 4000;
+  const double to_deg = 180.0 / M_PI;
+  for (int i = 0; i < n; ++i) {
+    SimulationRandom random(13, 0, static_cast<std::uint64_t>(i));
+    const auto drawn = draw_perturbed_inertia(
+        gf, {PerturbationFamily::axes, 10.0, AxesSampler::cardan}, random);
+    CHECK((drawn.principal_moments() - gf.principal_moments()).norm() < 1e-15);
+    // Back to the three angles of R = Rx(a) Ry(b) Rz(c).
+    const Eigen::Matrix3d r = drawn.principal_axes().toRotationMatrix();
+    const double angles[3] = {std::atan2(-r(1, 2), r(2, 2)) * to_deg, std::asin(r(0, 2)) * to_deg,
+                              std::atan2(-r(0, 1), r(0, 0)) * to_deg};
+    for (int k = 0; k < 3; ++k) {
+      CHECK(std::abs(angles[k]) <= 10.0 + 1e-9);
+      if (std::abs(angles[k]) <= 5.0) ++within_half[k];
+    }
+    const double angle =
+        aloft::angle_between(Eigen::Quaterniond::Identity(), drawn.principal_axes()) * to_deg;
+    largest = std::max(largest, angle);
+    if (angle > 10.0) ++beyond_ball;
+  }
+  for (int k = 0; k < 3; ++k) CHECK(within_half[k] == Approx(n / 2).margin(n * 0.04));
+  // Three angles of up to 10° reach rotations the ball does not (up to 17.3°).
+  CHECK(largest > 14.0);
+  CHECK(largest <= 17.4);
+  CHECK(beyond_ball > n / 10);
+}

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 
 #include "study_test_support.hpp"
@@ -137,6 +138,53 @@ TEST_CASE("--frame world reports the world frame alone, with the same numbers as
   CHECK(rms.find(",body\n") == std::string::npos);
 }
 
+TEST_CASE("the throw and the axes sampler are options, recorded in results.json") {
+  StudyScratch scratch;
+  const auto r = run_aloft(scratch,
+                           "study --mc-samples 20 --threads 2 --spin-rate 1 --spin-tilt 80 "
+                           "--spin-azimuth 10 --duration 0.5 --marker-noise 0.05 "
+                           "--marker-layout side --axes-sampler cardan --frame body --out '" +
+                               scratch.path("o") + "'");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const json results = json::parse(read_file(scratch.path("o/results.json")));
+  const json& trial = results.at("trial");
+  CHECK(trial.at("spin_rate_rev_s").get<double>() == 1.0);
+  CHECK(trial.at("spin_tilt_deg").get<double>() == 80.0);
+  CHECK(trial.at("spin_azimuth_deg").get<double>() == 10.0);
+  CHECK(trial.at("flight_time_s").get<double>() == 0.5);
+  CHECK(trial.at("marker_noise_m").get<double>() == Approx(0.05e-3));
+  CHECK(trial.at("marker_layout") == "side");
+  CHECK(trial.at("samples").get<int>() == 501);
+  CHECK(results.at("axes_sampler") == "cardan");
+  CHECK(results.at("models").at("GF").at("simulations").get<int>() == 501);
+  const json& w = trial.at("initial_omega_body_rad_s");
+  const double rate = std::sqrt(w[0].get<double>() * w[0].get<double>() +
+                                w[1].get<double>() * w[1].get<double>() +
+                                w[2].get<double>() * w[2].get<double>());
+  CHECK(rate == Approx(2.0 * M_PI));
+  CHECK(w[2].get<double>() == Approx(2.0 * M_PI * std::cos(80.0 * M_PI / 180.0)));
+}
+
+TEST_CASE("the paper-body throw gives GF and CP rows near the paper's, as calibrated") {
+  StudyScratch scratch;
+  const auto r = run_aloft(scratch, "study --throw paper-body --frame body --mc-samples 10 "
+                                    "--threads 2 --out '" + scratch.path("o") + "'");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const json results = json::parse(read_file(scratch.path("o/results.json")));
+  CHECK(results.at("trial").at("preset") == "paper-body");
+  for (const char* model : {"GF", "CP"}) {
+    const json& m = results.at("models").at(model);
+    for (const char* key : {"p10", "median", "p90"}) {
+      INFO(model << " " << key);
+      // The search left an RMS difference of 0.40 deg over the six numbers.
+      CHECK(m.at("rms_da_deg").at(key).get<double>() ==
+            Approx(m.at("paper_rms_da_deg").at(key).get<double>()).margin(1.0));
+    }
+  }
+}
+
 TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing written") {
   StudyScratch scratch;
   const std::string out = scratch.path("out");
@@ -167,6 +215,34 @@ TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing 
     CHECK(r.exit_code != 0);
     CHECK(count_lines(r.err) == 1);
     CHECK(r.err.find("segment 1") != std::string::npos);
+  }
+  SECTION("a throw option out of range") {
+    const auto r = run_aloft(scratch, "study --spin-rate -1 --out '" + out + "'");
+    CHECK(r.exit_code == 2);
+    CHECK(count_lines(r.err) == 1);
+    CHECK(r.err.find("--spin-rate") != std::string::npos);
+  }
+  SECTION("calibration with a searched option") {
+    const auto r = run_aloft(scratch, "study --calibrate-to-paper --spin-rate 2 --out '" + out + "'");
+    CHECK(r.exit_code == 2);
+    CHECK(count_lines(r.err) == 1);
+  }
+  SECTION("an unknown throw preset") {
+    const auto r = run_aloft(scratch, "study --throw paper --out '" + out + "'");
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--throw") != std::string::npos);
+  }
+  SECTION("an unknown axes sampler") {
+    const auto r = run_aloft(scratch, "study --axes-sampler euler --out '" + out + "'");
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--axes-sampler") != std::string::npos);
+  }
+  SECTION("a throw option with a recording") {
+    const std::string imu = scratch.write("imu.csv", "t,gx,gy,gz\n0,1,2,3\n0.01,1,2,3\n0.02,1,2,3\n");
+    const auto r = run_aloft(scratch, "study --body '" + body + "' --imu '" + imu +
+                                          "' --spin-rate 2 --out '" + out + "'");
+    CHECK(r.exit_code == 2);
+    CHECK(count_lines(r.err) == 1);
   }
   SECTION("an unknown frame") {
     const auto r = run_aloft(scratch, "study --frame lab --out '" + out + "'");

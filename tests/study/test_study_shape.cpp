@@ -1,4 +1,7 @@
-// The expected shape of the seed study's result (issue 4), on the built-in throw.
+// The shape of the built-in study's result (issues 4 and 9), in body axes: CP far above
+// GF, medians growing with the bound, axes-only near GF, as in the paper. Unlike the
+// paper, whose "both ±10" median sits 2.0 deg above its "moments ±10 %" one, aloft's
+// "both" is only a few hundredths above "moments" (README, the study): asserted as such.
 #include <catch2/catch.hpp>
 
 #include "study/built_in_study.hpp"
@@ -22,16 +25,16 @@ const Analysis& find(const std::vector<Analysis>& analyses, PerturbationFamily f
 
 }  // namespace
 
-TEST_CASE("the built-in study has the seed paper's shape") {
+TEST_CASE("the built-in study: CP far above GF, medians grow with the bound, both just above moments") {
   // Exactly the default study (seed 1, 5,000 simulations per analysis): about 6 s of
   // CPU. Fewer simulations do not resolve "both" against "moments" (see below).
   const std::uint64_t seed = 1;
   const BuiltInTrial trial = make_built_in_trial();
   aloft::InertiaTensor<double> cp;
-  aloft::InertiaTensor<double>::make_from_principal(
-      Eigen::Vector3d(paper::kCompoundPendulumKgM2[0], paper::kCompoundPendulumKgM2[1],
-                      paper::kCompoundPendulumKgM2[2]),
-      Eigen::Quaterniond::Identity(), cp);
+  REQUIRE(aloft::InertiaTensor<double>::make_from_principal(
+              Eigen::Vector3d(paper::kCompoundPendulumKgM2[0], paper::kCompoundPendulumKgM2[1],
+                              paper::kCompoundPendulumKgM2[2]),
+              Eigen::Quaterniond::Identity(), cp) == aloft::Status::ok);
   std::vector<Analysis> analyses = {model_analysis("GF", trial.body.inertia),
                                     model_analysis("CP", cp)};
   for (Analysis& a : paper_monte_carlo_analyses(paper::kMonteCarloSimulations)) analyses.push_back(a);
@@ -73,6 +76,7 @@ TEST_CASE("the built-in study has the seed paper's shape") {
     INFO("bound " << bound << ": moments " << moments << ", both " << both << ", axes " << axes);
     CHECK(summarise(paired).median > 0.0);
     CHECK(both >= moments - 0.05);
+    CHECK(both <= moments + 0.5);  // not the paper's +2 deg
     CHECK(std::abs(axes - gf) <= 1.0);
   }
 }

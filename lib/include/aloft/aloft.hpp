@@ -2,11 +2,13 @@
 #pragma once
 
 #include "aloft/angular_velocity.hpp"
+#include "aloft/batch_flight.hpp"
 #include "aloft/deviation.hpp"
 #include "aloft/euler_equations.hpp"
 #include "aloft/flight_detector.hpp"
 #include "aloft/inertia_tensor.hpp"
 #include "aloft/lane_angle.hpp"
+#include "aloft/lane_rotation.hpp"
 #include "aloft/lanes.hpp"
 #include "aloft/onboard_check.hpp"
 #include "aloft/principal_dynamics.hpp"

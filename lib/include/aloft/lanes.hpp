@@ -18,6 +18,8 @@ template <typename T>
 struct LaneTraits<T, std::enable_if_t<std::is_floating_point<T>::value>> {
   using Scalar = T;
   static constexpr int count = 1;
+  static T load(const Scalar* p) { return *p; }  // count consecutive scalars
+  static void store(const T& v, Scalar* p) { *p = v; }
 };
 
 template <typename T>

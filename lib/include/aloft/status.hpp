@@ -6,7 +6,8 @@
 
 namespace aloft {
 
-enum class Status : std::uint8_t {
+// [[nodiscard]]: a status dropped on the floor is a check skipped; the compiler says so.
+enum class [[nodiscard]] Status : std::uint8_t {
   ok = 0,
   non_finite_input,          // a NaN or infinite number was given
   non_positive_time_step,    // dt <= 0 (direction is a separate argument)

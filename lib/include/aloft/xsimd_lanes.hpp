@@ -16,6 +16,8 @@ template <typename S, typename A>
 struct LaneTraits<xsimd::batch<S, A>, void> {
   using Scalar = S;
   static constexpr int count = static_cast<int>(xsimd::batch<S, A>::size);
+  static xsimd::batch<S, A> load(const S* p) { return xsimd::batch<S, A>::load_unaligned(p); }
+  static void store(const xsimd::batch<S, A>& v, S* p) { v.store_unaligned(p); }
 };
 
 }  // namespace aloft

@@ -17,8 +17,12 @@ int main(int argc, char** argv) {
   // A 2.3 kg brick, as practice/case00: principal moments in kg m^2 along body axes.
   const double moments[3] = {0.002823489583, 0.009669583333, 0.010873489583};
   aloft::InertiaTensor<double> inertia;
-  aloft::InertiaTensor<double>::make_from_principal(
+  const aloft::Status made = aloft::InertiaTensor<double>::make_from_principal(
       Eigen::Vector3d(moments[0], moments[1], moments[2]), Eigen::Quaterniond::Identity(), inertia);
+  if (made != aloft::Status::ok) {
+    std::cerr << "generate_flight: " << aloft::describe(made) << "\n";
+    return 1;
+  }
 
   const double rate_hz = 1000.0;
   const int samples = 1181;

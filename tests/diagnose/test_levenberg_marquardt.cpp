@@ -1,0 +1,130 @@
+// diagnose/levenberg_marquardt: problems whose minimum is known.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "diagnose/levenberg_marquardt.hpp"
+
+using namespace aloft::host::diagnose;
+
+TEST_CASE("minimise finds Rosenbrock's minimum at (1, 1) from the classic start",
+          "[levenberg_marquardt]") {
+  ArrowProblem rosenbrock;
+  rosenbrock.shared_count = 2;
+  rosenbrock.residuals = [](int, const Eigen::VectorXd& x, const Eigen::VectorXd&,
+                            Eigen::VectorXd& r) {
+    r.resize(2);
+    r << 10.0 * (x(1) - x(0) * x(0)), 1.0 - x(0);
+  };
+  LeastSquaresOptions options;
+  options.max_iterations = 500;
+  options.relative_tolerance = 1e-14;
+  const LeastSquaresResult result =
+      minimise(rosenbrock, Eigen::Vector2d(-1.2, 1.0), {Eigen::VectorXd()}, options);
+  CHECK(result.shared(0) == Approx(1.0).margin(1e-5));
+  CHECK(result.shared(1) == Approx(1.0).margin(1e-5));
+  CHECK(result.cost < 1e-10);
+}
+
+namespace {
+
+// Converged to rounding, so the answers can be compared with the known minimum tightly.
+LeastSquaresOptions tight() {
+  LeastSquaresOptions options;
+  options.max_iterations = 200;
+  options.relative_tolerance = 1e-15;
+  return options;
+}
+
+// y = a exp(b t) + c_j for block j: shared (a, b), one local offset per block.
+ArrowProblem exponential_blocks(const std::vector<std::vector<double>>& data,
+                                const std::vector<double>& t) {
+  ArrowProblem p;
+  p.shared_count = 2;
+  p.local_count = 1;
+  p.block_count = static_cast<int>(data.size());
+  p.residuals = [data, t](int block, const Eigen::VectorXd& s, const Eigen::VectorXd& l,
+                          Eigen::VectorXd& r) {
+    r.resize(static_cast<Eigen::Index>(t.size()));
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      r(static_cast<Eigen::Index>(i)) = s(0) * std::exp(s(1) * t[i]) + l(0) - data[block][i];
+    }
+  };
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("minimise recovers shared and per-block parameters of exact data",
+          "[levenberg_marquardt]") {
+  const double a = 2.0, b = -1.3;
+  const std::vector<double> offsets = {0.5, -0.25, 1.0};
+  std::vector<double> t;
+  for (int i = 0; i < 40; ++i) t.push_back(0.05 * i);
+  std::vector<std::vector<double>> data;
+  for (double c : offsets) {
+    std::vector<double> y;
+    for (double ti : t) y.push_back(a * std::exp(b * ti) + c);
+    data.push_back(y);
+  }
+  const ArrowProblem p = exponential_blocks(data, t);
+  const std::vector<Eigen::VectorXd> local_start(3, Eigen::VectorXd::Zero(1));
+  const LeastSquaresResult result = minimise(p, Eigen::Vector2d(1.0, -0.5), local_start, tight());
+  CHECK(result.shared(0) == Approx(a).margin(1e-6));
+  CHECK(result.shared(1) == Approx(b).margin(1e-6));
+  REQUIRE(result.local.size() == 3);
+  for (std::size_t j = 0; j < 3; ++j) CHECK(result.local[j](0) == Approx(offsets[j]).margin(1e-6));
+  CHECK(result.cost < 1e-12);
+  CHECK(result.normal_matrix.rows() == 2 + 3);
+}
+
+TEST_CASE("leave_one_block_out equals refitting without the block on a linear problem",
+          "[levenberg_marquardt]") {
+  // y = s0 t^2 + s1 t + c_j with noise: linear in every parameter, so one Gauss-Newton
+  // step is the exact refit.
+  std::mt19937 random(7);
+  std::normal_distribution<double> noise(0.0, 0.1);
+  const std::vector<double> offsets = {0.0, 0.7, -0.4, 0.2};
+  std::vector<std::vector<double>> data;
+  for (std::size_t j = 0; j < offsets.size(); ++j) {
+    std::vector<double> y;
+    const double slope = 1.0 + 0.3 * static_cast<double>(j);  // blocks disagree
+    for (int i = 0; i < 25; ++i) {
+      const double t = 0.1 * i;
+      y.push_back(0.5 * t * t + slope * t + offsets[j] + noise(random));
+    }
+    data.push_back(y);
+  }
+  const auto linear = [](const std::vector<std::vector<double>>& d) {
+    ArrowProblem p;
+    p.shared_count = 2;
+    p.local_count = 1;
+    p.block_count = static_cast<int>(d.size());
+    p.residuals = [d](int block, const Eigen::VectorXd& s, const Eigen::VectorXd& l,
+                      Eigen::VectorXd& r) {
+      r.resize(25);
+      for (int i = 0; i < 25; ++i) {
+        const double t = 0.1 * i;
+        r(i) = s(0) * t * t + s(1) * t + l(0) - d[block][i];
+      }
+    };
+    return p;
+  };
+  const std::vector<Eigen::VectorXd> zeros(4, Eigen::VectorXd::Zero(1));
+  const LeastSquaresResult all = minimise(linear(data), Eigen::Vector2d(0.0, 0.0), zeros, tight());
+  const std::vector<Eigen::VectorXd> left_out =
+      leave_one_block_out(linear(data), all.shared, all.local);
+  REQUIRE(left_out.size() == 4);
+  for (std::size_t j = 0; j < 4; ++j) {
+    std::vector<std::vector<double>> rest = data;
+    rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(j));
+    const LeastSquaresResult refit =
+        minimise(linear(rest), Eigen::Vector2d(0.0, 0.0),
+                 std::vector<Eigen::VectorXd>(3, Eigen::VectorXd::Zero(1)), tight());
+    CHECK(left_out[j](0) == Approx(refit.shared(0)).margin(1e-6));
+    CHECK(left_out[j](1) == Approx(refit.shared(1)).margin(1e-6));
+  }
+  // And leaving out the steepest block lowers the slope.
+  CHECK(left_out[3](1) < all.shared(1));
+}
