@@ -19,6 +19,7 @@
 #include "diagnose/report_json.hpp"
 #include "readers/imu_csv_reader.hpp"
 #include "readers/marker_pose_fit.hpp"
+#include "readers/pose_naming_options.hpp"
 #include "readers/segments.hpp"
 #include "readers/trial_file.hpp"
 
@@ -28,6 +29,7 @@ namespace {
 struct DiagnoseOptions {
   std::string body;
   std::string imu, segments, window, markers, poses;
+  PoseNaming pose_naming;  // --pose-columns / --osim --joint for a .mot/.sto
   std::string json, plot;
   int threads = 2;
 };
@@ -115,7 +117,7 @@ void run_diagnose(const DiagnoseOptions& o) {
     flights.push_back(diagnose::flight_from_poses(poses, file_name(o.markers)));
   } else {
     source = o.poses;
-    flights.push_back(diagnose::flight_from_poses(read_pose_file(o.poses), file_name(o.poses)));
+    flights.push_back(diagnose::flight_from_poses(read_pose_file(o.poses, o.pose_naming), file_name(o.poses)));
   }
 
   nlohmann::json report;
@@ -160,6 +162,7 @@ void add_diagnose_command(CLI::App& app) {
   cmd->add_option("--window", options->window, "A:B, the flight inside the IMU log (seconds)");
   cmd->add_option("--markers", options->markers, "marker trajectories (.trc or .c3d)");
   cmd->add_option("--poses", options->poses, "poses (.mot, .sto or pose CSV)");
+  add_pose_naming_options(*cmd, options->pose_naming);
   cmd->add_option("--json", options->json, "write the JSON report here")->check(output_file());
   cmd->add_option("--plot", options->plot, "write DA, relative error and invariant plots (SVG, PNG) here")
       ->check(output_folder());

@@ -27,6 +27,8 @@ RmsDaByFrame full_flight_rms_da_deg(const StudyFlight& flight, const InertiaTens
 class LaneFlight {
  public:
   explicit LaneFlight(const StudyFlight& flight);
+  LaneFlight(const LaneFlight&) = delete;  // arrays_ points into this object's vectors
+  LaneFlight& operator=(const LaneFlight&) = delete;
   const FlightArrays<double>& arrays() const { return arrays_; }
 
  private:

@@ -80,7 +80,7 @@ RecordedTrial load_recorded_trial(const RecordingInput& in) {
     d["max_fit_residual_m"] = report.max_rms_residual_m;
     out.flights.push_back(pose_flight_from(poses, in.markers_path, d));
   } else if (!in.poses_path.empty()) {
-    const PoseTrial poses = read_pose_file(in.poses_path);
+    const PoseTrial poses = read_pose_file(in.poses_path, in.pose_naming);
     d["kind"] = "poses";
     d["poses_file"] = in.poses_path;
     out.flights.push_back(pose_flight_from(poses, in.poses_path, d));

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "common/body_file.hpp"
+#include "readers/free_joint.hpp"
 #include "study/study_flight.hpp"
 
 namespace aloft::host {
@@ -26,6 +27,7 @@ struct RecordingInput {
   std::string poses_path;
   std::string imu_path;
   std::string segments_path;
+  PoseNaming pose_naming;  // --pose-columns / --osim --joint for a .mot/.sto
 };
 
 struct RecordedTrial {

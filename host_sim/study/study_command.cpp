@@ -15,6 +15,7 @@
 #include "common/atomic_file.hpp"
 #include "common/commands.hpp"
 #include "common/option_checks.hpp"
+#include "readers/pose_naming_options.hpp"
 #include "study/boxplot_figure.hpp"
 #include "study/built_in_study.hpp"
 #include "study/paper_calibration_report.hpp"
@@ -256,6 +257,7 @@ void add_study_command(CLI::App& app) {
   cmd->add_option("--body", options->recording.body_path, "body file of a recording (SPEC §2)");
   cmd->add_option("--markers", options->recording.markers_path, "marker trajectories (.trc, .c3d)");
   cmd->add_option("--poses", options->recording.poses_path, "poses (.mot, .sto, pose .csv)");
+  add_pose_naming_options(*cmd, options->recording.pose_naming);
   cmd->add_option("--imu", options->recording.imu_path, "IMU log (plain or phyphox .csv)");
   cmd->add_option("--segments", options->recording.segments_path, "flights within the IMU log");
   add_throw_options(*cmd, options->throw_options);

@@ -116,7 +116,7 @@ TEST_CASE("simulate refuses bad input with one line and writes nothing", "[simul
     std::string expected;
   };
   const Case cases[] = {
-      {"{not json", "--w0 1,2,3", "not valid JSON"},
+      {"{not json", "--w0 1,2,3", "not a valid body file: parse error at line 1"},
       {R"({"inertia":{"tensor":[[1,0.5,0],[0,1,0],[0,0,1]]}})", "--w0 1,2,3", "not symmetric"},
       {R"({"inertia":{"principal":[1,1,3]}})", "--w0 1,2,3", "triangle inequality"},
       {R"({"inertia":{"principal":[1,-1,1]}})", "--w0 1,2,3", "positive definite"},
