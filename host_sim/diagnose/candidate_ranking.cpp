@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "aloft/deviation.hpp"
+#include "diagnose/moment_scale_equivalence.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -73,13 +74,66 @@ void GapSums::add(const Eigen::Vector3d& predicted, const Eigen::Vector3d& measu
 double GapSums::rms_da_deg() const { return samples ? std::sqrt(da_sq / samples) * kDeg : 0.0; }
 double GapSums::rms_rel_err() const { return samples ? std::sqrt(rel_sq / samples) : 0.0; }
 
-void rank_candidates(Analysis& analysis, bool gyro_input, const std::vector<const Flight*>& flights,
-                     const std::vector<Eigen::Vector3d>& inverse_sigma, double mean_speed,
-                     double duration_s) {
-  std::vector<Candidate>& all = analysis.candidates;
-  const auto none_it = std::find_if(all.begin(), all.end(),
-                                    [](const Candidate& c) { return c.effect == Effect::none; });
-  const Candidate none = none_it != all.end() ? *none_it : Candidate{};
+namespace {
+
+// Identifiable: every parameter is pinned to within its effect's tolerance. A rotation
+// about a symmetry axis of the body is no parameter at all (it changes nothing), so for the
+// two rotation effects uninformed directions are skipped; for every other effect an
+// uninformed parameter (e.g. a common scale of the two transverse axes of a symmetric
+// body, which trades against the initial rate) makes the effect not identifiable.
+bool identifiable(const Candidate& c, double mean_speed, double duration_s) {
+  const Eigen::VectorXd& se = c.fit.theta_standard_error;
+  if (se.size() == 0) return false;
+  std::vector<Effect> effects = c.base;
+  effects.push_back(c.effect);
+  Eigen::Index offset = 0;
+  bool informed = false;
+  for (Effect e : effects) {
+    const double tol = tolerance(e, mean_speed, duration_s);
+    const bool gauge = e == Effect::inertia_axes || e == Effect::sensor_misalignment;
+    for (int i = 0; i < effect_parameter_count(e) && offset < se.size(); ++i, ++offset) {
+      if (!std::isfinite(se(offset)) && gauge) continue;
+      informed = informed || std::isfinite(se(offset));
+      if (!(se(offset) <= tol)) return false;
+    }
+  }
+  return informed;
+}
+
+void judge_physics(Candidate& c) {
+  const EffectModel model(c.effect, NominalInertia(), 0.0, c.base);
+  const int drag = theta_offset(model, Effect::aero_torque);
+  if (drag >= 0 && drag < c.fit.theta.size() && drag < c.fit.theta_standard_error.size()) {
+    const double se = c.fit.theta_standard_error(drag);
+    const double k = c.fit.theta(drag);
+    if (k < 0 && k < -3.0 * (std::isfinite(se) ? se : 0.0)) {
+      c.physical = false;
+      c.note = "unphysical: negative drag (energy gain)";
+    }
+  }
+  if (c.effect == Effect::inertia_moments && !triangle_holds(c.params.principal_kg_m2)) {
+    c.physical = false;
+    c.note = "unphysical: fitted moments break the triangle inequality";
+  }
+}
+
+// A gyro scale can stand in for wrong moments, never the reverse (moment_scale_equivalence.hpp):
+// listed with a moments verdict only where the gyro reads the principal axes and a scale
+// reproduces the fitted moments exactly; never listed with a scale verdict.
+bool one_way_equivalence_allows(const Candidate& best, const Candidate& other, const RankingContext& context) {
+  if (best.effect == Effect::gyro_scale && other.effect == Effect::inertia_moments) return false;
+  if (best.effect != Effect::inertia_moments || other.effect != Effect::gyro_scale) return true;
+  if (context.nominal == nullptr || context.flights.empty()) return false;
+  return gyro_along_principal_axes(context.nominal->principal_axes, context.flights.front()->sensor_to_body) &&
+         scale_mimicking_moments(context.nominal->principal_moments, best.params.principal_kg_m2).has_value();
+}
+
+}  // namespace
+
+StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context, double margin) {
+  StepRanking out;
+  const auto ref_it = std::find_if(all.begin(), all.end(), [](const Candidate& c) { return c.reference; });
+  const Candidate reference = ref_it != all.end() ? *ref_it : Candidate{};
   // Overdispersion: when even the best candidate leaves a held-out gap far beyond the
   // noise floor (real data: the models are approximations and the phone's noise is not
   // white), chi-square differences overstate the evidence by that factor. Dividing by the
@@ -91,63 +145,80 @@ void rank_candidates(Analysis& analysis, bool gyro_input, const std::vector<cons
     }
   }
   dispersion = std::max(1.0, dispersion < 1e299 ? dispersion : 1.0);
-  analysis.dispersion = dispersion;
+  out.dispersion = dispersion;
   for (Candidate& c : all) {
     if (!c.evaluated) {
       c.score = 1e300;
       continue;
     }
-    c.score = c.heldout_chi_square / dispersion + kPenaltyPerParameter * effect_penalty_count(c.effect);
-    c.shrink = none.heldout_rms_rel_err > 0 ? 1.0 - c.heldout_rms_rel_err / none.heldout_rms_rel_err : 0.0;
-    c.shrink_da = none.heldout_rms_da_deg > 0 ? 1.0 - c.heldout_rms_da_deg / none.heldout_rms_da_deg : 0.0;
-    // Identifiable: every parameter is pinned to within the tolerance. A rotation about a
-    // symmetry axis of the body is no parameter at all (it changes nothing), so for the
-    // two rotation effects uninformed directions are skipped; for every other effect an
-    // uninformed parameter (e.g. a common scale of the two transverse axes of a symmetric
-    // body, which trades against the initial rate) makes the effect not identifiable.
-    const double tol = tolerance(c.effect, mean_speed, duration_s);
-    const bool gauge = c.effect == Effect::inertia_axes || c.effect == Effect::sensor_misalignment;
-    bool informed = c.fit.theta_standard_error.size() == 0;
-    c.identifiable = true;
-    for (Eigen::Index i = 0; i < c.fit.theta_standard_error.size(); ++i) {
-      const double se = c.fit.theta_standard_error(i);
-      if (!std::isfinite(se) && gauge) continue;
-      informed = informed || std::isfinite(se);
-      if (!(se <= tol)) c.identifiable = false;
-    }
-    if (!informed) c.identifiable = false;
+    int parameters = 0;
+    for (Effect e : c.base) parameters += effect_penalty_count(e);
+    if (!c.reference || c.effect != Effect::none) parameters += effect_penalty_count(c.effect);
+    c.score = c.heldout_chi_square / dispersion + kPenaltyPerParameter * parameters;
+    c.shrink = reference.heldout_rms_rel_err > 0 ? 1.0 - c.heldout_rms_rel_err / reference.heldout_rms_rel_err : 0.0;
+    c.reference_rms_rel_err = reference.heldout_rms_rel_err;
+    c.shrink_da = reference.heldout_rms_da_deg > 0 ? 1.0 - c.heldout_rms_da_deg / reference.heldout_rms_da_deg : 0.0;
+    if (c.reference) continue;
+    c.identifiable = identifiable(c, context.mean_speed, context.duration_s);
     if (!c.identifiable && c.note.empty()) {
       c.note = "not identifiable: this flight (too short, too slow, or a symmetric body) does not "
                "pin its parameters";
     }
-    if (c.effect == Effect::aero_torque && c.fit.theta.size() == 1) {
-      const double se = c.fit.theta_standard_error(0);
-      if (c.fit.theta(0) < -3.0 * (std::isfinite(se) ? se : 0.0) && c.fit.theta(0) < 0) {
-        c.physical = false;
-        c.note = "unphysical: negative drag (energy gain)";
-      }
-    }
-    if (c.effect == Effect::inertia_moments && !triangle_holds(c.params.principal_kg_m2)) {
-      c.physical = false;
-      c.note = "unphysical: fitted moments break the triangle inequality";
-    }
+    judge_physics(c);
   }
   std::stable_sort(all.begin(), all.end(),
                    [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
-
-  Verdict& v = analysis.verdict;
-  const Candidate* none_ptr = nullptr;
-  const Candidate* best = nullptr;
-  for (const Candidate& c : all) {
-    if (c.effect == Effect::none) none_ptr = &c;
-    if (best == nullptr && c.evaluated && c.physical && c.effect != Effect::none) best = &c;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const Candidate& c = all[i];
+    if (c.reference) out.reference = static_cast<int>(i);
+    if (out.best < 0 && c.evaluated && c.physical && !c.reference && c.effect != Effect::none) {
+      out.best = static_cast<int>(i);
+    }
   }
-  const bool beats_noise = none_ptr != nullptr && best != nullptr &&
-                           best->score < none_ptr->score - kVerdictMargin;
-  const Candidate* chosen = beats_noise ? best : none_ptr;
+  if (out.best < 0 || out.reference < 0) return out;
+  const Candidate& best = all[static_cast<std::size_t>(out.best)];
+  out.beats_reference = best.score < all[static_cast<std::size_t>(out.reference)].score - margin;
+  out.equivalent = always_equivalent(best.effect, context.gyro_input);
+  // Effects the data cannot tell apart from the best one here: they explain the gap as
+  // well (score within the margin) with practically the same predictions (< 0.3 sigma).
+  for (const Candidate& c : all) {
+    if (&c == &best || !c.evaluated || c.reference || c.effect == Effect::none) continue;
+    if (c.score < best.score + margin && one_way_equivalence_allows(best, c, context) &&
+        prediction_distance(c, best, context.flights, context.inverse_sigma) < 0.3 * std::sqrt(dispersion)) {
+      if (std::find(out.equivalent.begin(), out.equivalent.end(), c.effect) == out.equivalent.end()) {
+        out.equivalent.push_back(c.effect);
+      }
+    }
+  }
+  if (out.beats_reference) {
+    for (Candidate& c : all) {
+      if (std::find(out.equivalent.begin(), out.equivalent.end(), c.effect) == out.equivalent.end()) continue;
+      for (Effect e : out.equivalent) {
+        if (e != c.effect) c.indistinguishable.push_back(e);
+      }
+    }
+  }
+  return out;
+}
+
+void rank_candidates(Analysis& analysis, bool gyro_input, const std::vector<const Flight*>& flights,
+                     const std::vector<Eigen::Vector3d>& inverse_sigma, double mean_speed,
+                     double duration_s) {
+  rank_candidates(analysis, RankingContext{gyro_input, flights, inverse_sigma, mean_speed, duration_s});
+}
+
+void rank_candidates(Analysis& analysis, const RankingContext& context) {
+  const bool gyro_input = context.gyro_input;
+  std::vector<Candidate>& all = analysis.candidates;
+  for (Candidate& c : all) c.reference = c.effect == Effect::none && c.base.empty();
+  const StepRanking step = rank_step(all, context, kVerdictMargin);
+  analysis.dispersion = step.dispersion;
+  Verdict& v = analysis.verdict;
+  const Candidate* none_ptr = step.reference >= 0 ? &all[static_cast<std::size_t>(step.reference)] : nullptr;
+  const Candidate* chosen = step.beats_reference ? &all[static_cast<std::size_t>(step.best)] : none_ptr;
   v.chosen = chosen != nullptr ? static_cast<int>(chosen - all.data()) : -1;
   v.effect = chosen != nullptr ? chosen->effect : Effect::none;
-  v.equivalent = always_equivalent(v.effect, gyro_input);
+  v.equivalent = step.beats_reference ? step.equivalent : always_equivalent(Effect::none, gyro_input);
   if (none_ptr != nullptr) {
     v.heldout_rms_da_before_deg = none_ptr->heldout_rms_da_deg;
     v.heldout_rms_rel_err_before = none_ptr->heldout_rms_rel_err;
@@ -156,30 +227,10 @@ void rank_candidates(Analysis& analysis, bool gyro_input, const std::vector<cons
     v.heldout_rms_da_after_deg = chosen->heldout_rms_da_deg;
     v.heldout_rms_rel_err_after = chosen->heldout_rms_rel_err;
   }
-  // Effects the data cannot tell apart from the chosen one here: they explain the gap as
-  // well (score within the margin) with practically the same predictions (< 0.3 sigma).
-  if (beats_noise) {
-    for (Candidate& c : all) {
-      if (&c == chosen || !c.evaluated || c.effect == Effect::none) continue;
-      if (c.score < chosen->score + kVerdictMargin &&
-          prediction_distance(c, *chosen, flights, inverse_sigma) < 0.3 * std::sqrt(dispersion)) {
-        if (std::find(v.equivalent.begin(), v.equivalent.end(), c.effect) == v.equivalent.end()) {
-          v.equivalent.push_back(c.effect);
-        }
-      }
-    }
-    for (Candidate& c : all) {
-      if (std::find(v.equivalent.begin(), v.equivalent.end(), c.effect) != v.equivalent.end()) {
-        for (Effect e : v.equivalent) {
-          if (e != c.effect) c.indistinguishable.push_back(e);
-        }
-      }
-    }
-    if (!chosen->identifiable) {
-      v.confident = false;
-      v.could_not_judge.push_back(std::string(effect_name(chosen->effect)) +
-                                  " explains the gap but its parameters are poorly determined");
-    }
+  if (step.beats_reference && !chosen->identifiable) {
+    v.confident = false;
+    v.could_not_judge.push_back(std::string(effect_name(chosen->effect)) +
+                                " explains the gap but its parameters are poorly determined");
   }
 }
 

@@ -20,9 +20,34 @@ struct GapSums {
   double rms_rel_err() const;
 };
 
+// What the ranking needs to know about the data judged.
+struct RankingContext {
+  bool gyro_input = true;
+  std::vector<const Flight*> flights;
+  std::vector<Eigen::Vector3d> inverse_sigma;  // per flight
+  double mean_speed = 0.0;                     // rad/s
+  double duration_s = 0.0;                     // of the data that informs shared parameters
+  const NominalInertia* nominal = nullptr;     // the stepwise selection's parameters need it
+  double resolution = 0.0;                     // rad/s (noise_floor.hpp); 0: unknown
+};
+
+// One step of the ranking: scores every candidate of `all` against the one marked
+// `reference` (the model the step starts from), sorts best first, and picks the best
+// physical candidate if it beats the reference by more than `margin`, with the effects
+// the data cannot tell from it (score within the margin, predictions within 0.3 sigma).
+struct StepRanking {
+  double dispersion = 1.0;
+  int reference = -1;  // indices into the sorted `all`
+  int best = -1;
+  bool beats_reference = false;
+  std::vector<Effect> equivalent;  // of `best`, itself first
+};
+StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context, double margin);
+
 // Fills score, shrink, physical, identifiable and indistinguishable; sorts best first;
 // makes the verdict. `gyro_input` selects the equivalence classes that always hold.
 // `inverse_sigma[f]` weighs flight f (for the indistinguishability test).
+void rank_candidates(Analysis& analysis, const RankingContext& context);
 void rank_candidates(Analysis& analysis, bool gyro_input, const std::vector<const Flight*>& flights,
                      const std::vector<Eigen::Vector3d>& inverse_sigma, double mean_speed,
                      double duration_s);

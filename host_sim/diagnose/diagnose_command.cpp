@@ -16,6 +16,7 @@
 #include "diagnose/diagnosis.hpp"
 #include "diagnose/flight_input.hpp"
 #include "diagnose/gap_plot.hpp"
+#include "diagnose/marker_fit_check.hpp"
 #include "diagnose/report_json.hpp"
 #include "readers/imu_csv_reader.hpp"
 #include "readers/marker_pose_fit.hpp"
@@ -113,7 +114,9 @@ void run_diagnose(const DiagnoseOptions& o) {
     }
   } else if (!o.markers.empty()) {
     source = o.markers;
-    const PoseTrial poses = fit_poses(read_marker_file(o.markers), body);
+    PoseFitReport fit_report;
+    const PoseTrial poses = fit_poses(read_marker_file(o.markers), body, &fit_report);
+    if (const auto misfit = diagnose::marker_misfit(fit_report)) throw Error(o.markers + ": " + *misfit);
     flights.push_back(diagnose::flight_from_poses(poses, file_name(o.markers)));
   } else {
     source = o.poses;

@@ -6,6 +6,7 @@
 #include "diagnose/candidate_ranking.hpp"
 #include "diagnose/held_out.hpp"
 #include "diagnose/plausibility.hpp"
+#include "diagnose/stepwise_selection.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -82,6 +83,12 @@ double mean_speed(const Flight& flight) {
   return count ? sum / count : 0.0;
 }
 
+std::vector<Effect> effects_of_model(const Candidate& c) {
+  std::vector<Effect> out = c.base;
+  if (c.effect != Effect::none) out.push_back(c.effect);
+  return out;
+}
+
 }  // namespace
 
 FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nominal) {
@@ -119,30 +126,27 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
 
   const Folds folds = interleaved_folds(n);
   std::array<FlightData, 2> train;
-  std::array<EffectFit, 2> none_fold;
-  for (int f = 0; f < 2; ++f) {
-    train[f] = FlightData{&flight, folds.train[f], inverse_sigma};
-    none_fold[f] = fit_effect(Effect::none, nominal, {train[f]}, &none_full);
-  }
+  for (int f = 0; f < 2; ++f) train[f] = FlightData{&flight, folds.train[f], inverse_sigma};
 
-  for (Effect effect : candidate_effects(flight.gyro_input)) {
+  // A candidate: `added` fitted with the model of `base` on all the data (its parameters)
+  // and on each fold (judged on the other), each fit starting from the base model's.
+  const CandidateEvaluator evaluate = [&](const Candidate& base, Effect added) {
     Candidate c;
-    c.effect = effect;
-    c.fit = effect == Effect::none ? none_full : fit_effect(effect, nominal, {all}, &none_full);
+    c.effect = added;
+    c.base = effects_of_model(base);
+    c.fit = fit_added_effect(base.fit, added, nominal, {all});
     c.params = effect_parameters(model_of(c.fit, nominal, 0), c.fit.theta);
-    std::vector<Vec3> heldout(n, Vec3::Zero());
+    std::vector<Vec3> heldout(n, Vec3::Zero()), fold_readings;
     GapSums sums;
-    for (int f = 0; f < 2; ++f) {
+    for (std::size_t f = 0; f < 2; ++f) {
       // The fold fit starts from the all-data solution only to save iterations; it then
       // converges on its own training samples.
-      const EffectFit fold = effect == Effect::none
-                                 ? none_fold[f]
-                                 : fit_effect(effect, nominal, {train[f]}, &none_fold[f], &c.fit.theta);
-      predict(fold, nominal, 0, flight, readings);
+      c.fold_fits.push_back(fit_added_effect(base.fold_fits[f], added, nominal, {train[f]}, &c.fit.theta));
+      predict(c.fold_fits.back(), nominal, 0, flight, fold_readings);
       for (std::size_t k = 0; k < n; ++k) {
         if (!folds.judge[f][k]) continue;
-        heldout[k] = readings[k];
-        if (flight.usable[k]) sums.add(readings[k], flight.omega[k], inverse_sigma);
+        heldout[k] = fold_readings[k];
+        if (flight.usable[k]) sums.add(fold_readings[k], flight.omega[k], inverse_sigma);
       }
     }
     c.heldout_chi_square = sums.chi_square;
@@ -150,19 +154,46 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
     c.heldout_rms_da_deg = sums.rms_da_deg();
     c.heldout_rms_rel_err = sums.rms_rel_err();
     c.heldout_readings.push_back(std::move(heldout));
-    analysis.candidates.push_back(std::move(c));
+    return c;
+  };
+
+  // The nominal model: the reference every candidate of the first step is judged against.
+  Candidate nominal_model;
+  nominal_model.fit = none_full;
+  {
+    std::vector<Vec3> heldout(n, Vec3::Zero());
+    GapSums sums;
+    for (std::size_t f = 0; f < 2; ++f) {
+      nominal_model.fold_fits.push_back(fit_effect(Effect::none, nominal, {train[f]}, &none_full));
+      predict(nominal_model.fold_fits.back(), nominal, 0, flight, readings);
+      for (std::size_t k = 0; k < n; ++k) {
+        if (!folds.judge[f][k]) continue;
+        heldout[k] = readings[k];
+        if (flight.usable[k]) sums.add(readings[k], flight.omega[k], inverse_sigma);
+      }
+    }
+    nominal_model.heldout_chi_square = sums.chi_square;
+    nominal_model.heldout_residuals = sums.residuals;
+    nominal_model.heldout_rms_da_deg = sums.rms_da_deg();
+    nominal_model.heldout_rms_rel_err = sums.rms_rel_err();
+    nominal_model.heldout_readings.push_back(std::move(heldout));
+  }
+  for (Effect effect : candidate_effects(flight.gyro_input)) {
+    analysis.candidates.push_back(effect == Effect::none ? nominal_model : evaluate(nominal_model, effect));
   }
 
   rule_out_senseless(analysis.candidates);
-  rank_candidates(analysis, flight.gyro_input, {&flight}, {inverse_sigma}, mean_speed(flight),
-                  d.end_s - d.start_s);
+  const RankingContext context{flight.gyro_input, {&flight}, {inverse_sigma}, mean_speed(flight),
+                               d.end_s - d.start_s, &nominal, d.noise.resolution};
+  rank_candidates(analysis, context);
+  select_stepwise(analysis, context, evaluate);
   attach_flight_tensor_report(analysis, flight, nominal);
 
   // Onset: for an impulse, the fitted time; otherwise when the nominal motion fitted to
   // the first fifth of the flight stops explaining the data. None when the verdict is none.
-  if (analysis.verdict.effect == Effect::impulse) {
-    analysis.where.onset_s =
-        analysis.candidates[static_cast<std::size_t>(analysis.verdict.chosen)].fit.flights[0].impulse_time_s;
+  const EffectModel final_model = model_of(analysis.model.fit, nominal, 0);
+  if (theta_offset(final_model, Effect::impulse) >= 0) {
+    analysis.where.onset_s = final_model.impulse_time_s;
   } else if (analysis.verdict.effect != Effect::none) {
     const FlightData lead{&flight, leading_samples(n, 0.2, kMinimumSamples), inverse_sigma};
     const EffectFit early = fit_effect(Effect::none, nominal, {lead}, &none_full);

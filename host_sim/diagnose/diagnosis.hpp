@@ -54,6 +54,10 @@ struct Where {
 
 struct Candidate {
   Effect effect = Effect::none;
+  // Compound models (stepwise_selection.hpp): the effects fitted with `effect`, and
+  // whether this candidate is the model its step starts from (the one to beat).
+  std::vector<Effect> base;
+  bool reference = false;
   EffectFit fit;  // on all the data
   EffectParameters params;
   double heldout_chi_square = 0.0;
@@ -63,6 +67,7 @@ struct Candidate {
   double score = 0.0;
   double shrink = 0.0;     // 1 - rel_err(with) / rel_err(none), held out
   double shrink_da = 0.0;  // the same for DA
+  double reference_rms_rel_err = 0.0;  // held out, of the model this candidate is ranked against
   bool identifiable = true;
   bool physical = true;
   bool evaluated = true;   // false: not applicable here (reason in note)
@@ -72,6 +77,33 @@ struct Candidate {
   std::vector<Eigen::VectorXd> heldout_theta;
   // Held-out predictions per flight and sample (each from the fold that did not see it).
   std::vector<std::vector<Eigen::Vector3d>> heldout_readings;
+  // Per flight only: the fits of the two folds (the next step starts from them).
+  std::vector<EffectFit> fold_fits;
+};
+
+// One effect of the final model (SPEC §4 verdict.effects).
+struct VerdictEffect {
+  Effect effect = Effect::none;
+  std::vector<Effect> equivalent;
+  EffectParameters params;  // from the final model's fit
+  int step = 0;             // the step it joined at (1: first)
+  double heldout_rms_rel_err_after = 0.0;   // of the model as it stood after that step
+  double heldout_rms_da_after_deg = 0.0;
+  double step_shrink = 0.0;  // 1 - rel_err(after its step) / rel_err(before)
+  double shrink = 0.0;       // 1 - rel_err(final model) / rel_err(final model without it)
+};
+
+// One step of the stepwise selection: the model it starts from, every candidate
+// addition judged held out, and what was added (nothing: the selection stopped).
+struct ModelStep {
+  std::vector<Effect> model;          // effects before the step
+  std::vector<Candidate> candidates;  // best first; the reference is the starting model
+  int added = -1;                     // index into candidates, -1: nothing joined
+  std::vector<Effect> equivalent;     // the added effect's class at this step
+  double dispersion = 1.0;
+  double heldout_rms_rel_err_before = 0.0, heldout_rms_rel_err_after = 0.0;
+  double heldout_rms_da_before_deg = 0.0, heldout_rms_da_after_deg = 0.0;
+  double shrink = 0.0;  // 1 - after / before (relative error)
 };
 
 struct Verdict {
@@ -82,6 +114,8 @@ struct Verdict {
   double heldout_rms_rel_err_before = 0.0, heldout_rms_rel_err_after = 0.0;
   bool confident = true;
   std::vector<std::string> could_not_judge;
+  // The final model, most important first (empty when the verdict is none).
+  std::vector<VerdictEffect> effects;
 };
 
 struct Analysis {
@@ -94,6 +128,10 @@ struct Analysis {
   // gap no candidate explains (scores are divided by it; see candidate_ranking.cpp).
   double dispersion = 1.0;
   std::vector<std::string> notes;
+  // The stepwise selection (steps[0] is the single-effect step, whose candidates are
+  // `candidates` above), and the final model it settled on (effect none: nothing joined).
+  std::vector<ModelStep> steps;
+  Candidate model;
 };
 
 struct FlightDiagnosis {

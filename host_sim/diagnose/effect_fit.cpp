@@ -94,6 +94,10 @@ struct Setup {
   const std::vector<FlightData>* data;
   std::vector<std::size_t> refs;
   double impulse_time_s = 0.0;
+  std::vector<Effect> base;     // compound: effects fitted jointly with `effect`
+  Eigen::VectorXd base_theta;   // their fitted values (impulse scan, starting point)
+
+  EffectModel model() const { return EffectModel{effect, *nominal, impulse_time_s, base}; }
 };
 
 ArrowProblem problem_of(const Setup& setup, int shared_count) {
@@ -104,7 +108,7 @@ ArrowProblem problem_of(const Setup& setup, int shared_count) {
   problem.residuals = [&setup](int block, const Eigen::VectorXd& shared,
                                const Eigen::VectorXd& local, Eigen::VectorXd& r) {
     const FlightData& d = (*setup.data)[static_cast<std::size_t>(block)];
-    EffectModel model{setup.effect, *setup.nominal, setup.impulse_time_s};
+    const EffectModel model = setup.model();
     std::vector<Vec3> readings;
     predict_readings(model, *d.flight, setup.refs[static_cast<std::size_t>(block)],
                      Vec3(local), shared, readings);
@@ -116,6 +120,7 @@ ArrowProblem problem_of(const Setup& setup, int shared_count) {
 EffectFit result_of(const Setup& setup, const LeastSquaresResult& solution, int shared_count) {
   EffectFit fit;
   fit.effect = setup.effect;
+  fit.base = setup.base;
   fit.theta = solution.shared;
   fit.cost = solution.cost;
   fit.residual_count = 0;
@@ -145,11 +150,11 @@ EffectFit result_of(const Setup& setup, const LeastSquaresResult& solution, int 
 std::vector<Eigen::VectorXd> starting_rates(const Setup& setup, const EffectFit* nominal_fit,
                                             const Eigen::VectorXd& theta) {
   const bool rigid = setup.effect == Effect::internal_damping;
-  const EffectModel model{rigid ? Effect::none : setup.effect, *setup.nominal, setup.impulse_time_s};
-  const Eigen::VectorXd held = rigid ? Eigen::VectorXd() : theta;
+  const EffectModel model{rigid ? Effect::none : setup.effect, *setup.nominal, setup.impulse_time_s, setup.base};
+  const Eigen::VectorXd held = rigid ? Eigen::VectorXd(theta.head(model_parameter_count(model))) : theta;
   // At theta = 0 every effect is the nominal model, whose fitted rates are already the
-  // answer: nothing to refine.
-  const bool nominal_model = nominal_fit != nullptr && (rigid || theta.isZero());
+  // answer: nothing to refine (never so for a compound model: its base is fitted).
+  const bool nominal_model = nominal_fit != nullptr && setup.base.empty() && (rigid || theta.isZero());
   std::vector<Eigen::VectorXd> rates;
   for (std::size_t i = 0; i < setup.data->size(); ++i) {
     const Vec3 guess = starting_rate((*setup.data)[i], setup.refs[i], nominal_fit, i, *setup.nominal);
@@ -171,8 +176,9 @@ std::vector<std::size_t> scan_impulse_times(const Setup& setup, const std::vecto
   const Flight& flight = *data.flight;
   const std::size_t n = flight.size();
   const std::size_t ref = setup.refs[0];
-  const EffectModel nominal_model{Effect::none, *setup.nominal, 0.0};
-  const Eigen::VectorXd no_theta;
+  // About the base model with its fitted parameters (the nominal one for a single effect).
+  const EffectModel nominal_model{Effect::none, *setup.nominal, 0.0, setup.base};
+  const Eigen::VectorXd no_theta = setup.base_theta;
   std::vector<Vec3> base, moved;
   predict_readings(nominal_model, flight, ref, Vec3(rates[0]), no_theta, base);
   std::vector<Eigen::Matrix3d> a(n);
@@ -233,14 +239,14 @@ std::vector<std::size_t> scan_impulse_times(const Setup& setup, const std::vecto
     if (far) peaks.push_back(g.second);
     if (peaks.size() == 2) break;
   }
-  std::vector<std::size_t> times = peaks;
-  return times;
-  return times;
+  return peaks;
 }
 
 EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
   const Flight& flight = *(*setup.data)[0].flight;
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(3);
+  const int p = static_cast<int>(setup.base_theta.size()) + 3;
+  Eigen::VectorXd zero = Eigen::VectorXd::Zero(p);
+  zero.head(setup.base_theta.size()) = setup.base_theta;
   const std::vector<Eigen::VectorXd> rates = starting_rates(setup, nominal_fit, zero);
   LeastSquaresOptions quick;
   quick.max_iterations = 10;
@@ -254,8 +260,8 @@ EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
   auto try_time = [&](std::size_t j, bool from_nominal) {
     if (j < 2 || j + 1 >= n) return;
     setup.impulse_time_s = 0.5 * (flight.time_s[j - 1] + flight.time_s[j]);
-    const LeastSquaresResult r = from_nominal ? minimise(problem_of(setup, 3), zero, rates, quick)
-                                              : minimise(problem_of(setup, 3), best_theta, best_rates, quick);
+    const LeastSquaresResult r = from_nominal ? minimise(problem_of(setup, p), zero, rates, quick)
+                                              : minimise(problem_of(setup, p), best_theta, best_rates, quick);
     if (r.cost < best_cost) {
       best_cost = r.cost;
       best = j;
@@ -275,15 +281,15 @@ EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
   for (long off : {-2L, -1L, 1L, 2L}) try_time(static_cast<std::size_t>(std::max(0L, static_cast<long>(centre) + off)), false);
   if (best == 0) best = flight.size() / 2;
   setup.impulse_time_s = 0.5 * (flight.time_s[best - 1] + flight.time_s[best]);
-  const ArrowProblem problem = problem_of(setup, 3);
-  return result_of(setup, minimise(problem, best_theta, best_rates), 3);
+  const ArrowProblem problem = problem_of(setup, p);
+  return result_of(setup, minimise(problem, best_theta, best_rates), p);
 }
 
 }  // namespace
 
 EffectModel model_of(const EffectFit& fit, const NominalInertia& nominal,
                      std::size_t index) {
-  EffectModel model{fit.effect, nominal, 0.0};
+  EffectModel model{fit.effect, nominal, 0.0, fit.base};
   if (index < fit.flights.size()) model.impulse_time_s = fit.flights[index].impulse_time_s;
   return model;
 }
@@ -312,7 +318,7 @@ double weighted_squares(const FlightData& data, const std::vector<Eigen::Vector3
 EffectFit fit_effect(Effect effect, const NominalInertia& nominal,
                      const std::vector<FlightData>& data, const EffectFit* nominal_fit,
                      const Eigen::VectorXd* theta_start) {
-  Setup setup{effect, &nominal, &data, {}, 0.0};
+  Setup setup{effect, &nominal, &data, {}, 0.0, {}, Eigen::VectorXd()};
   for (const FlightData& d : data) setup.refs.push_back(reference_index(effect, *d.flight));
   if (effect == Effect::impulse) {
     if (data.size() != 1) throw std::invalid_argument("an impulse is fitted to one flight only");
@@ -349,9 +355,45 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal,
   return result_of(setup, minimise(problem, theta, rates), p);
 }
 
+EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalInertia& nominal,
+                           const std::vector<FlightData>& data, const Eigen::VectorXd* theta_start) {
+  if (base.effect == Effect::none && base.base.empty()) {
+    return fit_effect(added, nominal, data, &base, theta_start);
+  }
+  Setup setup{added, &nominal, &data, {}, 0.0, base.base, base.theta};
+  if (base.effect != Effect::none) setup.base.push_back(base.effect);
+  const EffectModel model = setup.model();
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    setup.refs.push_back(compound_reference_index(model, *data[i].flight));
+    if (i < base.flights.size() && theta_offset(model, Effect::impulse) >= 0 && added != Effect::impulse) {
+      setup.impulse_time_s = base.flights[i].impulse_time_s;
+    }
+  }
+  if (added == Effect::impulse) {
+    if (data.size() != 1) throw std::invalid_argument("an impulse is fitted to one flight only");
+    return fit_impulse(setup, &base);
+  }
+  const int p = model_parameter_count(model);
+  const ArrowProblem problem = problem_of(setup, p);
+  std::vector<Eigen::VectorXd> rates;
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    const bool same_ref = i < base.flights.size() && base.flights[i].ref == setup.refs[i];
+    rates.emplace_back(same_ref ? Vec3(base.flights[i].omega_ref)
+                                : starting_rate(data[i], setup.refs[i], &base, i, nominal));
+  }
+  Eigen::VectorXd theta = Eigen::VectorXd::Zero(p);
+  theta.head(base.theta.size()) = base.theta;
+  if (theta_start != nullptr && theta_start->size() == p) {
+    theta = *theta_start;
+  } else if (added == Effect::internal_damping) {
+    theta.tail<2>() << std::log(0.1 / 0.9 / (1.0 - 0.1 / 0.9)), std::log(10.0);
+  }
+  return result_of(setup, minimise(problem, theta, rates), p);
+}
+
 std::vector<Eigen::VectorXd> leave_one_flight_out(const EffectFit& fit, const NominalInertia& nominal,
                                                   const std::vector<FlightData>& data) {
-  Setup setup{fit.effect, &nominal, &data, {}, 0.0};
+  Setup setup{fit.effect, &nominal, &data, {}, 0.0, fit.base, Eigen::VectorXd()};
   for (const FlightState& f : fit.flights) setup.refs.push_back(f.ref);
   const ArrowProblem problem = problem_of(setup, static_cast<int>(fit.theta.size()));
   std::vector<Eigen::VectorXd> rates;
@@ -361,8 +403,10 @@ std::vector<Eigen::VectorXd> leave_one_flight_out(const EffectFit& fit, const No
 
 EffectFit fit_initial_rates(const EffectFit& fixed, const NominalInertia& nominal,
                             const std::vector<FlightData>& data, const EffectFit* nominal_fit) {
-  Setup setup{fixed.effect, &nominal, &data, {}, 0.0};
-  for (const FlightData& d : data) setup.refs.push_back(reference_index(fixed.effect, *d.flight));
+  Setup setup{fixed.effect, &nominal, &data, {}, 0.0, fixed.base, Eigen::VectorXd()};
+  for (const FlightData& d : data) {
+    setup.refs.push_back(compound_reference_index(setup.model(), *d.flight));
+  }
   const Eigen::VectorXd theta = fixed.theta;
   ArrowProblem problem = problem_of(setup, 0);
   ArrowProblem held = problem;

@@ -33,6 +33,7 @@ struct FlightState {
 
 struct EffectFit {
   Effect effect = Effect::none;
+  std::vector<Effect> base;  // a compound model: effects fitted with `effect` (flight_model.hpp)
   Eigen::VectorXd theta;  // effect parameters, shared by the flights (see flight_model.hpp)
   std::vector<FlightState> flights;
   double cost = 0.0;      // weighted sum of squared training residuals
@@ -60,6 +61,15 @@ void predict(const EffectFit& fit, const NominalInertia& nominal, std::size_t in
 EffectFit fit_effect(Effect effect, const NominalInertia& nominal,
                      const std::vector<FlightData>& data, const EffectFit* nominal_fit,
                      const Eigen::VectorXd* theta_start = nullptr);
+
+// Fits the effects of `base` (a fit of the same data) with `added` jointly: a compound
+// model, the next step of a stepwise selection (stepwise_selection.hpp). The base
+// parameters start at their fitted values, the added ones at zero (or `theta_start`, the
+// whole compound theta); the rates start at the base fit's. An impulse in the base keeps
+// its fitted time; an added impulse is searched about the base model.
+EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalInertia& nominal,
+                           const std::vector<FlightData>& data,
+                           const Eigen::VectorXd* theta_start = nullptr);
 
 // The effect parameters without each flight in turn (one Gauss-Newton step from `fit`, the
 // all-flights solution; levenberg_marquardt.hpp). Not for impulses.

@@ -21,25 +21,47 @@ constexpr double kMaxRotorRate = 400.0;
 
 double logistic(double a) { return 1.0 / (1.0 + std::exp(-a)); }
 
-Vec3 inertia_moments_of(const EffectModel& model, const Eigen::VectorXd& theta) {
-  const Vec3 n = model.nominal.principal_moments;
-  const Vec3 u(theta(0), theta(1), -theta(0) - theta(1));
+Vec3 inertia_moments_of(const NominalInertia& nominal, const Eigen::VectorXd& u01) {
+  const Vec3 n = nominal.principal_moments;
+  const Vec3 u(u01(0), u01(1), -u01(0) - u01(1));
   Vec3 m = n.cwiseProduct(Vec3(std::exp(u(0)), std::exp(u(1)), std::exp(u(2))));
   return m * (n.sum() / m.sum());
+}
+
+// The slice of theta that belongs to `effect` (empty when it is not in the model).
+Eigen::VectorXd slice_of(const EffectModel& model, const Eigen::VectorXd& theta, Effect effect) {
+  const int offset = theta_offset(model, effect);
+  if (offset < 0) return Eigen::VectorXd();
+  return theta.segment(offset, effect_parameter_count(effect));
 }
 
 // Everything a flight needs from (model, theta), computed once per prediction.
 class FlightDynamics {
  public:
-  FlightDynamics(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta)
-      : effect_(model.effect) {
+  FlightDynamics(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta) {
     inertia_ = model.nominal.tensor;
     const Mat3 sensor_to_body = flight.sensor_to_body.toRotationMatrix();
-    Mat3 sensor_rotation = sensor_to_body;
-    switch (effect_) {
+    sensor_rotation_ = sensor_to_body;
+    const std::vector<Effect> effects = model_effects(model);
+    // Moments first: a rotation of the axes then turns the re-weighted tensor.
+    if (theta_offset(model, Effect::inertia_moments) >= 0) {
+      add(Effect::inertia_moments, model, slice_of(model, theta, Effect::inertia_moments), sensor_to_body);
+    }
+    for (Effect e : effects) {
+      if (e != Effect::inertia_moments) add(e, model, slice_of(model, theta, e), sensor_to_body);
+    }
+    // The shell carries the nominal tensor less the rotor, so that with the rotor locked
+    // the body is the nominal one.
+    shell_ = inertia_ - rotor_ * Mat3::Identity();
+    shell_inverse_ = shell_.inverse();
+    body_to_sensor_ = sensor_rotation_.transpose();
+  }
+
+  void add(Effect effect, const EffectModel& model, const Eigen::VectorXd& theta, const Mat3& sensor_to_body) {
+    switch (effect) {
       case Effect::inertia_moments: {
         const Mat3 r = model.nominal.principal_axes.toRotationMatrix();
-        inertia_ = r * inertia_moments_of(model, theta).asDiagonal() * r.transpose();
+        inertia_ = r * inertia_moments_of(model.nominal, theta).asDiagonal() * r.transpose();
         break;
       }
       case Effect::inertia_axes: {
@@ -64,7 +86,7 @@ class FlightDynamics {
         scale_ += theta.head<3>();
         break;
       case Effect::sensor_misalignment:
-        sensor_rotation = sensor_to_body * quat_exp<double>(theta.head<3>()).toRotationMatrix();
+        sensor_rotation_ = sensor_to_body * quat_exp<double>(theta.head<3>()).toRotationMatrix();
         break;
       case Effect::clock_drift:
         time_factor_ = 1.0 / (1.0 + theta(0));
@@ -72,11 +94,6 @@ class FlightDynamics {
       case Effect::none:
         break;
     }
-    // The shell carries the nominal tensor less the rotor, so that with the rotor locked
-    // the body is the nominal one.
-    shell_ = inertia_ - rotor_ * Mat3::Identity();
-    shell_inverse_ = shell_.inverse();
-    body_to_sensor_ = sensor_rotation.transpose();
   }
 
   bool has_rotor() const { return rotor_ > 0.0; }
@@ -142,8 +159,8 @@ class FlightDynamics {
   }
 
  private:
-  Effect effect_;
   Mat3 inertia_;
+  Mat3 sensor_rotation_;
   Mat3 shell_;
   Mat3 shell_inverse_;
   Mat3 body_to_sensor_;
@@ -210,16 +227,46 @@ Eigen::Vector3d body_rate_of_reading(const Flight& flight, const Eigen::Vector3d
   return flight.sensor_to_body * reading;
 }
 
+std::size_t compound_reference_index(const EffectModel& model, const Flight& flight) {
+  return theta_offset(model, Effect::internal_damping) >= 0 ? reference_index(Effect::internal_damping, flight)
+                                                            : reference_index(Effect::none, flight);
+}
+
+std::vector<Effect> model_effects(const EffectModel& model) {
+  std::vector<Effect> effects;
+  for (Effect e : model.base) {
+    if (e != Effect::none) effects.push_back(e);
+  }
+  if (model.effect != Effect::none) effects.push_back(model.effect);
+  return effects;
+}
+
+int theta_offset(const EffectModel& model, Effect effect) {
+  int offset = 0;
+  for (Effect e : model_effects(model)) {
+    if (e == effect) return offset;
+    offset += effect_parameter_count(e);
+  }
+  return -1;
+}
+
+int model_parameter_count(const EffectModel& model) {
+  int count = 0;
+  for (Effect e : model_effects(model)) count += effect_parameter_count(e);
+  return count;
+}
+
 Eigen::Vector3d body_rate_for_reading(const EffectModel& model, const Flight& flight,
                                       const Eigen::VectorXd& theta, const Eigen::Vector3d& reading) {
-  switch (model.effect) {
-    case Effect::gyro_bias: return flight.sensor_to_body * Vec3(reading - theta.head<3>());
-    case Effect::gyro_scale:
-      return flight.sensor_to_body * Vec3(reading.cwiseQuotient(Vec3::Ones() + theta.head<3>()));
-    case Effect::sensor_misalignment:
-      return flight.sensor_to_body * (quat_exp<double>(theta.head<3>()) * reading);
-    default: return flight.sensor_to_body * reading;
-  }
+  // The sensor model backwards: take the bias off, undo the scale, then the rotation.
+  Vec3 w = reading;
+  const Eigen::VectorXd bias = slice_of(model, theta, Effect::gyro_bias);
+  if (bias.size() == 3) w -= bias.head<3>();
+  const Eigen::VectorXd scale = slice_of(model, theta, Effect::gyro_scale);
+  if (scale.size() == 3) w = w.cwiseQuotient(Vec3::Ones() + scale.head<3>());
+  const Eigen::VectorXd misalignment = slice_of(model, theta, Effect::sensor_misalignment);
+  if (misalignment.size() == 3) w = quat_exp<double>(misalignment.head<3>()) * w;
+  return flight.sensor_to_body * w;
 }
 
 void predict_readings(const EffectModel& model, const Flight& flight, std::size_t ref,
@@ -230,7 +277,7 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   if (n == 0) return;
   FlightDynamics dynamics(model, flight, theta);
   dynamics.set_impulse_scale(model.nominal.tensor);
-  const bool has_jump = model.effect == Effect::impulse;
+  const bool has_jump = theta_offset(model, Effect::impulse) >= 0;
   const double t_ref = flight.time_s[ref];
   // True (simulation) time of a recorded time stamp; differs only under clock drift.
   auto true_time = [&](double t) { return t_ref + (t - t_ref) * dynamics.time_factor(); };
@@ -271,18 +318,66 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   }
 }
 
+std::array<int, 3> nearest_body_axes(const Eigen::Matrix3d& axes) {
+  std::array<int, 3> body{-1, -1, -1};
+  std::array<bool, 3> taken{false, false, false};
+  for (int round = 0; round < 3; ++round) {
+    double best = -1.0;
+    int bi = 0, bj = 0;
+    for (int i = 0; i < 3; ++i) {
+      if (body[static_cast<std::size_t>(i)] >= 0) continue;
+      for (int j = 0; j < 3; ++j) {
+        if (taken[static_cast<std::size_t>(j)]) continue;
+        if (std::abs(axes(j, i)) > best) {
+          best = std::abs(axes(j, i));
+          bi = i;
+          bj = j;
+        }
+      }
+    }
+    body[static_cast<std::size_t>(bi)] = bj;
+    taken[static_cast<std::size_t>(bj)] = true;
+  }
+  return body;
+}
+
+namespace {
+
+// Fills the user-facing inertia fields from principal moments along `axes` (body axes).
+void describe_inertia(EffectParameters& p, const Vec3& moments, const Mat3& axes, const NominalInertia& nominal) {
+  p.tensor_kg_m2 = axes * moments.asDiagonal() * axes.transpose();
+  const std::array<int, 3> body = nearest_body_axes(nominal.principal_axes.toRotationMatrix());
+  for (int i = 0; i < 3; ++i) {
+    p.principal_body_order_kg_m2(body[static_cast<std::size_t>(i)]) = moments(i);
+    p.nominal_body_order_kg_m2(body[static_cast<std::size_t>(i)]) = nominal.principal_moments(i);
+  }
+}
+
+}  // namespace
+
 EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta) {
+  return effect_parameters(model, theta, model.effect);
+}
+
+EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& all_theta, Effect effect) {
   EffectParameters p;
   constexpr double kDeg = 180.0 / 3.14159265358979323846;
-  switch (model.effect) {
+  const Eigen::VectorXd theta = slice_of(model, all_theta, effect);
+  if (theta.size() != effect_parameter_count(effect)) return p;
+  switch (effect) {
     case Effect::inertia_moments:
-      p.principal_kg_m2 = inertia_moments_of(model, theta);
+      p.principal_kg_m2 = inertia_moments_of(model.nominal, theta);
+      describe_inertia(p, p.principal_kg_m2, model.nominal.principal_axes.toRotationMatrix(), model.nominal);
       break;
     case Effect::inertia_axes:
     case Effect::sensor_misalignment:
       p.rotation = canonical_rotation(quat_exp<double>(theta.head<3>()), model.nominal,
-                                      model.effect == Effect::inertia_axes);
+                                      effect == Effect::inertia_axes);
       p.angle_deg = angle_between<double>(Eigen::Quaterniond::Identity(), p.rotation) * kDeg;
+      if (effect == Effect::inertia_axes) {
+        describe_inertia(p, model.nominal.principal_moments,
+                         p.rotation.toRotationMatrix() * model.nominal.principal_axes.toRotationMatrix(), model.nominal);
+      }
       break;
     case Effect::aero_torque:
       p.k_N_m_s2 = theta(0) * model.nominal.tensor.trace() / 3.0;

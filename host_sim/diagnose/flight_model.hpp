@@ -15,11 +15,18 @@
 //   gyro_scale          s (sensor axes)
 //   sensor_misalignment rotation vector m (rad): sensor->body becomes q_imu * exp(m)
 //   clock_drift         eps: a recorded time t maps to true time t_ref + (t - t_ref)/(1+eps)
+//
+// A compound model (stepwise selection, stepwise_selection.hpp) adds `effect` to the
+// effects of `base`: theta holds the base effects' parameters in their order, then
+// those of `effect`. Wrong moments act before rotated axes (the rotation turns the
+// re-weighted tensor); the sensor effects compose as scale(rotate(w)) + bias.
 #pragma once
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "diagnose/nominal_inertia.hpp"
@@ -29,15 +36,32 @@
 namespace aloft::host::diagnose {
 
 struct EffectModel {
+  EffectModel() = default;
+  EffectModel(Effect effect_, const NominalInertia& nominal_, double impulse_time_s_ = 0.0,
+              std::vector<Effect> base_ = {})
+      : effect(effect_), nominal(nominal_), impulse_time_s(impulse_time_s_), base(std::move(base_)) {}
+
   Effect effect = Effect::none;
   NominalInertia nominal;
-  double impulse_time_s = 0.0;  // impulse only
+  double impulse_time_s = 0.0;  // impulse only (in effect or in base)
+  std::vector<Effect> base;     // effects already in the model; their parameters come first
 };
+
+// Every effect of the model, base first, `none` left out.
+std::vector<Effect> model_effects(const EffectModel& model);
+
+// Where an effect's parameters start in theta (-1: not in the model).
+int theta_offset(const EffectModel& model, Effect effect);
+
+// Parameters of the whole model (the sum over its effects).
+int model_parameter_count(const EffectModel& model);
 
 // The sample whose rate is the fitted initial state: the middle of the flight, where a
 // sensitive (intermediate-axis) motion is best conditioned both ways; the first sample
 // for internal damping, whose rotor is taken to co-rotate with the body at release.
 std::size_t reference_index(Effect effect, const Flight& flight);
+// The same for a compound model (the first sample when any of its effects is damping).
+std::size_t compound_reference_index(const EffectModel& model, const Flight& flight);
 
 // Readings predicted at every sample of `flight`, in the frame of flight.omega, for the
 // body rate `omega_ref` (body axes) at sample `ref` and effect parameters `theta`.
@@ -56,7 +80,13 @@ Eigen::Vector3d body_rate_for_reading(const EffectModel& model, const Flight& fl
 
 // Physical parameters of the effect for a theta (SPEC §4 keys are made from these).
 struct EffectParameters {
-  Eigen::Vector3d principal_kg_m2 = Eigen::Vector3d::Zero();  // inertia_moments
+  Eigen::Vector3d principal_kg_m2 = Eigen::Vector3d::Zero();  // inertia_moments (ascending nominal order)
+  // Inertia effects, as a user reads them (SPEC §4): the moments in the body file's axis
+  // order (entry i: the principal axis nearest body axis i), the nominal ones in the same
+  // order, and the whole tensor in body axes.
+  Eigen::Vector3d principal_body_order_kg_m2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d nominal_body_order_kg_m2 = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d tensor_kg_m2 = Eigen::Matrix3d::Zero();
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  // axes / misalignment
   double angle_deg = 0.0;
   double k_N_m_s2 = 0.0;                                       // aero_torque
@@ -65,6 +95,13 @@ struct EffectParameters {
   double time_s = 0.0;                               // impulse
   double rate_error = 0.0;                           // clock_drift
 };
+// Of `model.effect` (its slice of theta).
 EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta);
+// For principal axis i (columns of `axes`, body axes), the body axis it lies nearest:
+// a permutation, chosen greedily by the largest |cosine|.
+std::array<int, 3> nearest_body_axes(const Eigen::Matrix3d& axes);
+
+// Of one effect of a compound model.
+EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta, Effect effect);
 
 }  // namespace aloft::host::diagnose

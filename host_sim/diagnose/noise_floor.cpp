@@ -73,7 +73,35 @@ NoiseFloor estimate_noise_floor(const Flight& flight) {
       best.reliable = squares[0].size() >= 20;
     }
   }
+  best.resolution = reading_resolution(flight);
+  const double rounding = best.resolution / std::sqrt(12.0);
+  for (int a = 0; a < 3; ++a) {
+    if (best.sigma(a) < rounding) {
+      best.sigma(a) = rounding;
+      best.method = "resolution";
+    }
+  }
   return best;
+}
+
+double reading_resolution(const Flight& flight) {
+  std::array<double, 3> steps{0.0, 0.0, 0.0};
+  for (int a = 0; a < 3; ++a) {
+    std::vector<double> values;
+    for (std::size_t k = 0; k < flight.size(); ++k) {
+      if (flight.usable[k]) values.push_back(flight.omega[k](a));
+    }
+    std::sort(values.begin(), values.end());
+    double step = 0.0;
+    for (std::size_t k = 1; k < values.size(); ++k) {
+      const double d = values[k] - values[k - 1];
+      // Steps below 1e-12 rad/s are the binary rounding of one decimal value, not a step.
+      if (d > 1e-12 && (step == 0.0 || d < step)) step = d;
+    }
+    steps[static_cast<std::size_t>(a)] = step;
+  }
+  std::sort(steps.begin(), steps.end());
+  return steps[1];
 }
 
 }  // namespace aloft::host::diagnose

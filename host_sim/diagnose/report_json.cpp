@@ -10,6 +10,9 @@ namespace {
 using nlohmann::json;
 
 json vec(const Eigen::Vector3d& v) { return json::array({v(0), v(1), v(2)}); }
+json matrix(const Eigen::Matrix3d& m) {
+  return json::array({vec(m.row(0).transpose()), vec(m.row(1).transpose()), vec(m.row(2).transpose())});
+}
 json quat(const Eigen::Quaterniond& q) { return json::array({q.w(), q.x(), q.y(), q.z()}); }
 
 json names(const std::vector<Effect>& effects) {
@@ -23,6 +26,68 @@ json invariant_json(const InvariantBehaviour& b) {
           {"relative_change", b.relative_change},
           {"relative_oscillation", b.relative_oscillation},
           {"behaviour", b.behaviour}};
+}
+
+// The whole final model's parameters: each effect's keys (SPEC keys never collide
+// between effects that can share a model).
+json model_params_json(const Verdict& v) {
+  json out = json::object();
+  for (const VerdictEffect& e : v.effects) {
+    const json params = params_json(e.effect, e.params);
+    for (auto it = params.begin(); it != params.end(); ++it) {
+      if (!out.contains(it.key())) out[it.key()] = it.value();
+    }
+  }
+  return out;
+}
+
+json verdict_effects_json(const Verdict& v) {
+  json out = json::array();
+  for (const VerdictEffect& e : v.effects) {
+    out.push_back({{"effect", effect_name(e.effect)},
+                   {"equivalent", names(e.equivalent)},
+                   {"params", params_json(e.effect, e.params)},
+                   {"heldout_rms_rel_err_after", e.heldout_rms_rel_err_after},
+                   {"heldout_rms_da_after_deg", e.heldout_rms_da_after_deg},
+                   {"shrink", e.shrink},
+                   {"step", e.step},
+                   {"step_shrink", e.step_shrink}});
+  }
+  return out;
+}
+
+// Each step of the stepwise selection: the model it started from, what joined (null:
+// nothing did, the selection stopped), the held-out gap before and after, and the
+// candidate additions it weighed.
+json steps_json(const Analysis& a) {
+  json out = json::array();
+  for (std::size_t i = 0; i < a.steps.size(); ++i) {
+    const ModelStep& s = a.steps[i];
+    const std::vector<Candidate>& candidates = i == 0 ? a.candidates : s.candidates;
+    json step = {{"model", names(s.model)},
+                 {"added", s.added >= 0 ? json(effect_name(candidates[static_cast<std::size_t>(s.added)].effect))
+                                        : json(nullptr)},
+                 {"equivalent", names(s.equivalent)},
+                 {"heldout_rms_rel_err_before", s.heldout_rms_rel_err_before},
+                 {"heldout_rms_rel_err_after", s.heldout_rms_rel_err_after},
+                 {"heldout_rms_da_before_deg", s.heldout_rms_da_before_deg},
+                 {"heldout_rms_da_after_deg", s.heldout_rms_da_after_deg},
+                 {"shrink", s.shrink}};
+    if (i > 0) {
+      json tried = json::array();
+      for (const Candidate& c : s.candidates) {
+        if (c.reference || !c.evaluated) continue;
+        tried.push_back({{"effect", effect_name(c.effect)},
+                         {"heldout_rms_rel_err", c.heldout_rms_rel_err},
+                         {"shrink", c.shrink},
+                         {"score", c.score},
+                         {"physical", c.physical}});
+      }
+      step["candidates"] = tried;
+    }
+    out.push_back(step);
+  }
+  return out;
 }
 
 json tensor_json(const TensorReport& t) {
@@ -90,15 +155,16 @@ json analysis_json(const Analysis& a) {
   json verdict;
   verdict["effect"] = effect_name(v.effect);
   verdict["equivalent"] = names(v.equivalent);
-  verdict["params"] = v.chosen >= 0
-                          ? params_json(v.effect, a.candidates[static_cast<std::size_t>(v.chosen)].params)
-                          : json::object();
+  verdict["params"] = model_params_json(v);
   verdict["heldout_rms_da_before_deg"] = v.heldout_rms_da_before_deg;
   verdict["heldout_rms_da_after_deg"] = v.heldout_rms_da_after_deg;
   verdict["heldout_rms_rel_err_before"] = v.heldout_rms_rel_err_before;
   verdict["heldout_rms_rel_err_after"] = v.heldout_rms_rel_err_after;
   verdict["confident"] = v.confident;
   verdict["could_not_judge"] = v.could_not_judge;
+  verdict["effects"] = verdict_effects_json(v);
+  verdict["shrink"] = v.heldout_rms_rel_err_before > 0 ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before : 0.0;
+  verdict["steps"] = steps_json(a);
   out["verdict"] = verdict;
   out["unexplained_dispersion"] = a.dispersion;
   if (!a.notes.empty()) out["notes"] = a.notes;
@@ -111,11 +177,22 @@ std::string fmt(const char* format, double a, double b = 0, double c = 0, double
   return buffer;
 }
 
+// "moments about body x, y, z: ... kg m^2 (x +12.0 %, y -3.1 %, z -4.9 %); most changed: x".
+std::string moments_text(const EffectParameters& p) {
+  const Eigen::Vector3d m = p.principal_body_order_kg_m2, n = p.nominal_body_order_kg_m2;
+  Eigen::Vector3d change = Eigen::Vector3d::Zero();
+  for (int i = 0; i < 3; ++i) change(i) = n(i) > 0 ? 100.0 * (m(i) / n(i) - 1.0) : 0.0;
+  Eigen::Index most = 0;
+  change.cwiseAbs().maxCoeff(&most);
+  const char* axis[] = {"x", "y", "z"};
+  return fmt("principal moments about body x, y, z %.4g, %.4g, %.4g kg m^2", m(0), m(1), m(2)) +
+         fmt(" (x %+.1f %%, y %+.1f %%, z %+.1f %% from nominal); most changed: ", change(0), change(1), change(2)) +
+         axis[most] + fmt(" (%+.1f %%)", change(most));
+}
+
 std::string params_text(Effect effect, const EffectParameters& p) {
   switch (effect) {
-    case Effect::inertia_moments:
-      return fmt("principal moments %.4g, %.4g, %.4g kg m^2", p.principal_kg_m2(0),
-                 p.principal_kg_m2(1), p.principal_kg_m2(2));
+    case Effect::inertia_moments: return moments_text(p);
     case Effect::inertia_axes:
     case Effect::sensor_misalignment: return fmt("rotated by %.2f deg", p.angle_deg);
     case Effect::aero_torque: return fmt("k = %.3g N m s^2", p.k_N_m_s2);
@@ -153,12 +230,16 @@ std::string analysis_summary(const Analysis& a) {
     for (std::size_t i = 1; i < v.equivalent.size(); ++i) out << " " << effect_name(v.equivalent[i]);
     out << ")";
   }
-  if (v.chosen >= 0 && v.effect != Effect::none) {
-    const Candidate& c = a.candidates[static_cast<std::size_t>(v.chosen)];
-    out << ": " << params_text(v.effect, c.params) << "\n";
+  if (!v.effects.empty()) {
+    out << ": " << params_text(v.effects.front().effect, v.effects.front().params) << "\n";
+    for (std::size_t i = 1; i < v.effects.size(); ++i) {
+      out << "  and " << effect_name(v.effects[i].effect) << ": " << params_text(v.effects[i].effect, v.effects[i].params)
+          << fmt(" (the model without it: held-out error %.0f %% larger)", 100.0 * (1.0 / std::max(1e-9, 1.0 - v.effects[i].shrink) - 1.0))
+          << "\n";
+    }
     out << fmt("  held out: RMS DA %.3f -> %.3f deg, relative error %.4f -> %.4f", v.heldout_rms_da_before_deg,
                v.heldout_rms_da_after_deg, v.heldout_rms_rel_err_before, v.heldout_rms_rel_err_after)
-        << fmt(" (shrink %.0f %%)", 100.0 * c.shrink) << "\n";
+        << fmt(" (shrink %.0f %%)", 100.0 * (v.heldout_rms_rel_err_before > 0 ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before : 0.0)) << "\n";
   } else {
     out << fmt(": the held-out gap (RMS DA %.3f deg) is what the noise explains", v.heldout_rms_da_before_deg) << "\n";
   }
@@ -172,8 +253,14 @@ std::string analysis_summary(const Analysis& a) {
 json params_json(Effect effect, const EffectParameters& p) {
   switch (effect) {
     case Effect::none: return json::object();
-    case Effect::inertia_moments: return {{"principal_kg_m2", vec(p.principal_kg_m2)}};
+    case Effect::inertia_moments:
+      return {{"principal_kg_m2", vec(p.principal_body_order_kg_m2)},
+              {"nominal_principal_kg_m2", vec(p.nominal_body_order_kg_m2)},
+              {"principal_axes_order", "body file axes x, y, z (each principal axis by the body axis it lies nearest)"},
+              {"principal_ascending_kg_m2", vec(p.principal_kg_m2)},
+              {"tensor_kg_m2", matrix(p.tensor_kg_m2)}};
     case Effect::inertia_axes:
+      return {{"angle_deg", p.angle_deg}, {"rotation", quat(p.rotation)}, {"tensor_kg_m2", matrix(p.tensor_kg_m2)}};
     case Effect::sensor_misalignment:
       return {{"angle_deg", p.angle_deg}, {"rotation", quat(p.rotation)}};
     case Effect::aero_torque: return {{"k_N_m_s2", p.k_N_m_s2}};
@@ -197,6 +284,10 @@ json flight_report(const FlightDiagnosis& d) {
   out["end_s"] = d.end_s;
   out["samples"] = d.samples;
   out["rate_hz"] = d.rate_hz;
+  out["noise_floor"] = {{"sigma_rad_s", vec(d.noise.sigma)},
+                        {"method", d.noise.method},
+                        {"resolution_rad_s", d.noise.resolution},
+                        {"reliable", d.noise.reliable}};
   out["unusable_samples"] = d.unusable_samples;
   if (!d.comment.empty()) out["comment"] = d.comment;
   if (d.flip_period) {

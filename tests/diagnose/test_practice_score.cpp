@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
 #include "common/body_file.hpp"
@@ -15,6 +16,7 @@
 #include "diagnose/flight_input.hpp"
 #include "readers/imu_csv_reader.hpp"
 #include "readers/marker_pose_fit.hpp"
+#include "readers/segments.hpp"
 #include "readers/trial_file.hpp"
 
 namespace fs = std::filesystem;
@@ -64,4 +66,61 @@ TEST_CASE("practice flights: the verdict names the injected effect or its class"
   }
   std::printf("practice: %d of %d right\n", right, judged);
   CHECK(right >= judged * 9 / 10);
+}
+
+// ../shared/data/practice2 (issue 8): compound flights (A, both effects named), phone-like
+// flights (B, the flight's verdict) and sessions (C, the pooled verdict). Development data:
+// the score is printed, and only the compound kind is held to its bar here (the withheld
+// tests are the test of record). Sessions are read through the segments reader, whose
+// keep=false rows with blank cells are another change's; a session it refuses is counted
+// as missed.
+TEST_CASE("practice2 flights: compound, phone-like and sessions", "[practice2]") {
+  const fs::path root = fs::path(ALOFT_SHARED_DIR) / "data" / "practice2";
+  if (!fs::exists(root / "truth.json")) {
+    WARN("skipped: " << root.string() << " is absent (../shared not beside the checkout)");
+    return;
+  }
+  nlohmann::json truth;
+  std::ifstream(root / "truth.json") >> truth;
+  std::map<std::string, std::pair<int, int>> score;  // kind -> right, total
+  for (const auto& [name, answer] : truth.items()) {
+    const fs::path dir = root / name;
+    const std::string kind = answer["kind"].get<std::string>();
+    const Body body = read_body_file((dir / "body.json").string());
+    const NominalInertia nominal = NominalInertia::of(body.inertia);
+    const ImuLog log = read_imu_csv((dir / "imu.csv").string());
+    std::vector<std::string> said;
+    try {
+      if (kind == "compound") {
+        const FlightDiagnosis d = diagnose_flight(flight_from_imu(log, body, -1e300, 1e300, name), nominal);
+        for (const auto& e : d.analysis.verdict.effects) said.push_back(effect_name(e.effect));
+        if (said.empty()) said.push_back("none");
+      } else {
+        const auto flights = flights_from_segments(log, body, read_segments_csv((dir / "segments.csv").string()));
+        if (kind == "phone") {
+          said.push_back(effect_name(diagnose_flight(flights.front(), nominal).analysis.verdict.effect));
+        } else {
+          said.push_back(effect_name(diagnose_session(flights, nominal, 2).pooled.verdict.effect));
+        }
+      }
+    } catch (const std::exception& e) {
+      said.push_back(std::string("refused: ") + e.what());
+    }
+    // Every injected effect named (its class); a single effect (or none) named alone.
+    bool ok = kind == "compound" || said.size() == answer["equivalent"].size();
+    for (const auto& cls : answer["equivalent"]) {
+      bool found = false;
+      for (const auto& s : said) found = found || in_list(cls, s);
+      ok = ok && found;
+    }
+    auto& [right, total] = score[kind];
+    right += ok;
+    ++total;
+    std::string text;
+    for (const auto& s : said) text += " " + s;
+    std::printf("%s %-8s %s ->%s %s\n", name.c_str(), kind.c_str(), answer["effects"].dump().c_str(), text.c_str(),
+                ok ? "ok" : "WRONG");
+  }
+  for (const auto& [kind, s] : score) std::printf("practice2 %s: %d of %d\n", kind.c_str(), s.first, s.second);
+  CHECK(score["compound"].first >= 0.8 * score["compound"].second);
 }

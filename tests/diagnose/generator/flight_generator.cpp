@@ -254,9 +254,13 @@ InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, con
   return e;
 }
 
-std::vector<std::string> equivalent_class(const std::string& effect, DataKind kind) {
+// `scale_mimics_moments`: the gyro's axes are the body's principal axes and the three
+// moments differ, where a non-uniform gyro scale reproduces wrong moments that keep their
+// order exactly (not the reverse; and never on a body of revolution).
+std::vector<std::string> equivalent_class(const std::string& effect, DataKind kind, bool scale_mimics_moments = false) {
   std::vector<std::string> out = {effect};
   if (kind == DataKind::imu) {
+    if (effect == "inertia_moments" && scale_mimics_moments) out.push_back("gyro_scale");
     if (effect == "inertia_axes") out.push_back("sensor_misalignment");
     if (effect == "sensor_misalignment") out.push_back("inertia_axes");
     if (effect == "clock_drift") out.push_back("gyro_scale");
@@ -277,6 +281,41 @@ std::string nominal_body_json(const BodyModel& body, const Throw& thrown, DataKi
     j["markers"] = markers;
   }
   return j.dump(2) + "\n";
+}
+
+// Two effects at once (FlightSpec::second_effect): the second's physics and sensor
+// model are laid over the first's. Only a rotation of the axes acts on a tensor the
+// first effect already changed (moments), and it turns that tensor.
+InjectedEffect combine(InjectedEffect first, const InjectedEffect& second, const std::string& second_name,
+                       const Eigen::Matrix3d& nominal) {
+  if (second_name == "inertia_axes") {
+    const Eigen::Matrix3d r = Eigen::Quaterniond(second.params["rotation"][0].get<double>(),
+                                                 second.params["rotation"][1].get<double>(),
+                                                 second.params["rotation"][2].get<double>(),
+                                                 second.params["rotation"][3].get<double>())
+                                  .toRotationMatrix();
+    first.physics.inertia_kg_m2 = r * first.physics.inertia_kg_m2 * r.transpose();
+  } else if (!second.physics.inertia_kg_m2.isApprox(nominal)) {
+    first.physics.inertia_kg_m2 = second.physics.inertia_kg_m2;
+  }
+  first.physics.aero_k_N_m_s2 += second.physics.aero_k_N_m_s2;
+  if (second.physics.rotor_inertia_kg_m2 > 0.0) {
+    first.physics.rotor_inertia_kg_m2 = second.physics.rotor_inertia_kg_m2;
+    first.physics.rotor_damping_N_m_s = second.physics.rotor_damping_N_m_s;
+  }
+  if (second.physics.has_impulse) {
+    first.physics.has_impulse = true;
+    first.physics.impulse_time_s = second.physics.impulse_time_s;
+    first.physics.impulse_duration_s = second.physics.impulse_duration_s;
+    first.physics.angular_impulse_N_m_s = second.physics.angular_impulse_N_m_s;
+    first.onset_s = second.onset_s;
+  }
+  first.imu_to_body = first.imu_to_body * second.imu_to_body;
+  first.bias += second.bias;
+  first.scale_error += second.scale_error;
+  first.rate_error += second.rate_error;
+  first.full_size = first.full_size && second.full_size;
+  return first;
 }
 
 }  // namespace
@@ -300,7 +339,11 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
   if (std::find(names.begin(), names.end(), spec.effect) == names.end()) {
     throw std::invalid_argument("unknown effect '" + spec.effect + "'");
   }
-  if (spec.data == DataKind::markers && is_sensor_effect(spec.effect)) {
+  if (!spec.second_effect.empty() &&
+      std::find(names.begin(), names.end(), spec.second_effect) == names.end()) {
+    throw std::invalid_argument("unknown effect '" + spec.second_effect + "'");
+  }
+  if (spec.data == DataKind::markers && (is_sensor_effect(spec.effect) || is_sensor_effect(spec.second_effect))) {
     throw std::invalid_argument("sensor effect '" + spec.effect + "' needs IMU data");
   }
   const BodyModel body = body_model(spec.body);
@@ -309,13 +352,24 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
   SeededRandom effect_rng(stream_seed(seed, Stream::effect));
   SeededRandom noise_rng(stream_seed(seed, Stream::noise));
   Throw thrown = draw_throw(body, spec, throw_rng);
-  InjectedEffect effect = draw_effect(spec.effect, body, thrown, spec, effect_rng);
+  auto draw = [&]() {
+    InjectedEffect e = draw_effect(spec.effect, body, thrown, spec, effect_rng);
+    if (spec.second_effect.empty() || spec.second_effect == "none") return e;
+    const InjectedEffect second = draw_effect(spec.second_effect, body, thrown, spec, effect_rng);
+    json both = json::object();
+    both[spec.effect] = e.params;
+    both[spec.second_effect] = second.params;
+    e = combine(e, second, spec.second_effect, body.inertia_kg_m2);
+    e.params = both;
+    return e;
+  };
+  InjectedEffect effect = draw();
   // Internal damping shows only when the body rate turns within the body fast enough;
   // a throw that cannot lose the drawn energy fraction is thrown again (up to 20
   // times: a near-symmetric body may never manage, and then keeps its last throw).
   for (int retry = 0; !effect.full_size && retry < 20; ++retry) {
     thrown = draw_throw(body, spec, throw_rng);
-    effect = draw_effect(spec.effect, body, thrown, spec, effect_rng);
+    effect = draw();
   }
 
   GeneratedFlight f;
@@ -357,12 +411,13 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
     }
   }
   // How big the dissipative effects turned out, from the truth, for reports and tests.
-  if (spec.effect == "aero_torque") {
+  const bool compound = !spec.second_effect.empty() && spec.second_effect != "none";
+  if (spec.effect == "aero_torque" && !compound) {
     effect.params["L_drop_fraction"] =
         1.0 - f.true_samples.back().angular_momentum_world.norm() /
                   f.true_samples.front().angular_momentum_world.norm();
   }
-  if (spec.effect == "internal_damping") {
+  if (spec.effect == "internal_damping" && !compound) {
     effect.params["energy_loss_fraction"] =
         1.0 - f.true_samples.back().kinetic_energy_J / f.true_samples.front().kinetic_energy_J;
   }
@@ -433,7 +488,19 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
 
   FlightTruth& t = f.truth;
   t.effect = spec.effect;
-  t.equivalent = equivalent_class(spec.effect, spec.data);
+  const Principal principal = principal_of(body.inertia_kg_m2);
+  const bool aligned = principal.axes.cwiseAbs().isApprox(Eigen::Matrix3d::Identity(), 1e-9) ||
+                       (principal.axes.cwiseAbs().array() > 1.0 - 1e-9).count() == 3;
+  const bool distinct = symmetry_axis_index(principal.moments, 1e-6) < 0 &&
+                        principal.moments(2) - principal.moments(0) > 1e-6 * principal.moments(2);
+  const bool mimics = aligned && distinct && effect.imu_to_body.angularDistance(Eigen::Quaterniond::Identity()) < 1e-12;
+  t.equivalent = equivalent_class(spec.effect, spec.data, mimics);
+  t.effects = {spec.effect};
+  t.equivalents = {t.equivalent};
+  if (compound) {
+    t.effects.push_back(spec.second_effect);
+    t.equivalents.push_back(equivalent_class(spec.second_effect, spec.data, mimics));
+  }
   t.params = effect.params;
   t.onset_s = effect.onset_s;
   t.omega0_body = thrown.omega0_body;
@@ -449,6 +516,10 @@ json truth_to_json(const FlightTruth& truth) {
             {"effect", truth.effect},         {"params", truth.params},
             {"equivalent", truth.equivalent}};
   if (truth.onset_s) j["onset_s"] = *truth.onset_s;
+  if (truth.effects.size() > 1) {
+    j["effects"] = truth.effects;
+    j["equivalents"] = truth.equivalents;
+  }
   return j;
 }
 

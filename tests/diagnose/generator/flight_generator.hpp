@@ -86,6 +86,11 @@ struct FlightSpec {
   bool occlusions = true;
 
   double impulse_duration_s = 0.003;  // 0: an instantaneous jump of angular momentum
+
+  // A compound flight: a second effect at the same time (empty or "none": one effect).
+  // Its magnitude is drawn as for a flight of its own; truth.params then holds each
+  // effect's params under its name.
+  std::string second_effect;
 };
 
 // What the diagnosis should find. `params` uses the keys of SPEC §4 (plus a few more,
@@ -93,6 +98,9 @@ struct FlightSpec {
 struct FlightTruth {
   std::string effect;
   std::vector<std::string> equivalent;
+  // Every injected effect (one, or two for a compound flight) and each one's class.
+  std::vector<std::string> effects;
+  std::vector<std::vector<std::string>> equivalents;
   nlohmann::json params = nlohmann::json::object();
   std::optional<double> onset_s;                          // impulses only: when the pulse starts
   Eigen::Vector3d omega0_body = Eigen::Vector3d::Zero();  // true w at t = 0, body axes
