@@ -128,20 +128,13 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
   std::array<FlightData, 2> train;
   for (int f = 0; f < 2; ++f) train[f] = FlightData{&flight, folds.train[f], inverse_sigma};
 
-  // A candidate: `added` fitted with the model of `base` on all the data (its parameters)
-  // and on each fold (judged on the other), each fit starting from the base model's.
-  const CandidateEvaluator evaluate = [&](const Candidate& base, Effect added) {
-    Candidate c;
-    c.effect = added;
-    c.base = effects_of_model(base);
-    c.fit = fit_added_effect(base.fit, added, nominal, {all});
-    c.params = effect_parameters(model_of(c.fit, nominal, 0), c.fit.theta);
+  // Fits `c` on each fold with fit_fold(f), judges it on the other fold, and records the
+  // held-out gap: the one held-out rule of every model of this flight.
+  const auto judge_held_out = [&](Candidate& c, const auto& fit_fold) {
     std::vector<Vec3> heldout(n, Vec3::Zero()), fold_readings;
     GapSums sums;
     for (std::size_t f = 0; f < 2; ++f) {
-      // The fold fit starts from the all-data solution only to save iterations; it then
-      // converges on its own training samples.
-      c.fold_fits.push_back(fit_added_effect(base.fold_fits[f], added, nominal, {train[f]}, &c.fit.theta));
+      c.fold_fits.push_back(fit_fold(f));
       predict(c.fold_fits.back(), nominal, 0, flight, fold_readings);
       for (std::size_t k = 0; k < n; ++k) {
         if (!folds.judge[f][k]) continue;
@@ -154,30 +147,30 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
     c.heldout_rms_da_deg = sums.rms_da_deg();
     c.heldout_rms_rel_err = sums.rms_rel_err();
     c.heldout_readings.push_back(std::move(heldout));
+  };
+
+  // A candidate: `added` fitted with the model of `base` on all the data (its parameters)
+  // and on each fold (judged on the other), each fit starting from the base model's.
+  const CandidateEvaluator evaluate = [&](const Candidate& base, Effect added) {
+    Candidate c;
+    c.effect = added;
+    c.base = effects_of_model(base);
+    c.fit = fit_added_effect(base.fit, added, nominal, {all});
+    c.params = effect_parameters(model_of(c.fit, nominal, 0), c.fit.theta);
+    // The fold fit starts from the all-data solution only to save iterations; it then
+    // converges on its own training samples.
+    judge_held_out(c, [&](std::size_t f) {
+      return fit_added_effect(base.fold_fits[f], added, nominal, {train[f]}, &c.fit.theta);
+    });
     return c;
   };
 
   // The nominal model: the reference every candidate of the first step is judged against.
   Candidate nominal_model;
   nominal_model.fit = none_full;
-  {
-    std::vector<Vec3> heldout(n, Vec3::Zero());
-    GapSums sums;
-    for (std::size_t f = 0; f < 2; ++f) {
-      nominal_model.fold_fits.push_back(fit_effect(Effect::none, nominal, {train[f]}, &none_full));
-      predict(nominal_model.fold_fits.back(), nominal, 0, flight, readings);
-      for (std::size_t k = 0; k < n; ++k) {
-        if (!folds.judge[f][k]) continue;
-        heldout[k] = readings[k];
-        if (flight.usable[k]) sums.add(readings[k], flight.omega[k], inverse_sigma);
-      }
-    }
-    nominal_model.heldout_chi_square = sums.chi_square;
-    nominal_model.heldout_residuals = sums.residuals;
-    nominal_model.heldout_rms_da_deg = sums.rms_da_deg();
-    nominal_model.heldout_rms_rel_err = sums.rms_rel_err();
-    nominal_model.heldout_readings.push_back(std::move(heldout));
-  }
+  judge_held_out(nominal_model, [&](std::size_t f) {
+    return fit_effect(Effect::none, nominal, {train[f]}, &none_full);
+  });
   for (Effect effect : candidate_effects(flight.gyro_input)) {
     analysis.candidates.push_back(effect == Effect::none ? nominal_model : evaluate(nominal_model, effect));
   }
