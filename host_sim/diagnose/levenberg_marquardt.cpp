@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "common/parallel_for.hpp"
+
 namespace aloft::host::diagnose {
 namespace {
 
@@ -14,17 +16,74 @@ struct Point {
   std::vector<Eigen::VectorXd> local;
 };
 
-double total_cost(const ArrowProblem& problem, const Point& x) {
-  double cost = 0.0;
-  Eigen::VectorXd r;
-  for (int b = 0; b < problem.block_count; ++b) {
-    problem.residuals(b, x.shared, x.local[static_cast<std::size_t>(b)], r);
-    cost += r.squaredNorm();
+// Runs body(b) for every block, on problem.threads threads.
+void for_each_block(const ArrowProblem& problem, const std::function<void(std::size_t)>& body) {
+  const std::size_t count = static_cast<std::size_t>(problem.block_count);
+  if (problem.threads <= 1 || count <= 1) {
+    for (std::size_t b = 0; b < count; ++b) body(b);
+    return;
   }
+  parallel_for(count, problem.threads, body);
+}
+
+double total_cost(const ArrowProblem& problem, const Point& x) {
+  std::vector<double> costs(static_cast<std::size_t>(problem.block_count), 0.0);
+  for_each_block(problem, [&](std::size_t b) {
+    Eigen::VectorXd r;
+    problem.residuals(static_cast<int>(b), x.shared, x.local[b], r);
+    costs[b] = r.squaredNorm();
+  });
+  double cost = 0.0;
+  for (double c : costs) cost += c;
   return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
 }
 
 double step_size(double value) { return 1e-7 * std::max(1.0, std::abs(value)); }
+
+// One block's part of the normal equations: J^T J and J^T r over [shared | its locals],
+// with J by forward differences, and its squared residuals.
+struct BlockNormal {
+  Eigen::MatrixXd jtj;
+  Eigen::VectorXd jtr;
+  double cost = 0.0;
+};
+
+BlockNormal block_normal(const ArrowProblem& problem, int block, const Eigen::VectorXd& shared,
+                         const Eigen::VectorXd& local) {
+  const int p = problem.shared_count;
+  const int m = problem.local_count;
+  Eigen::VectorXd r0, r1;
+  problem.residuals(block, shared, local, r0);
+  Eigen::MatrixXd jac(r0.size(), p + m);
+  for (int i = 0; i < p; ++i) {
+    Eigen::VectorXd s = shared;
+    const double h = step_size(s(i));
+    s(i) += h;
+    problem.residuals(block, s, local, r1);
+    jac.col(i) = (r1 - r0) / h;
+  }
+  for (int i = 0; i < m; ++i) {
+    Eigen::VectorXd l = local;
+    const double h = step_size(l(i));
+    l(i) += h;
+    problem.residuals(block, shared, l, r1);
+    jac.col(p + i) = (r1 - r0) / h;
+  }
+  BlockNormal out;
+  out.jtj = jac.transpose() * jac;
+  out.jtr = jac.transpose() * r0;
+  out.cost = r0.squaredNorm();
+  return out;
+}
+
+std::vector<BlockNormal> block_normals(const ArrowProblem& problem, const Eigen::VectorXd& shared,
+                                       const std::vector<Eigen::VectorXd>& local) {
+  std::vector<BlockNormal> blocks(static_cast<std::size_t>(problem.block_count));
+  for_each_block(problem, [&](std::size_t b) {
+    blocks[b] = block_normal(problem, static_cast<int>(b), shared, local[b]);
+  });
+  return blocks;
+}
 
 // J^T J and J^T r of the whole problem at x, assembled block by block.
 double linearise(const ArrowProblem& problem, const Point& x, Eigen::MatrixXd& normal,
@@ -35,28 +94,12 @@ double linearise(const ArrowProblem& problem, const Point& x, Eigen::MatrixXd& n
   normal.setZero(size, size);
   gradient.setZero(size);
   double cost = 0.0;
-  Eigen::VectorXd r0, r1;
+  const std::vector<BlockNormal> blocks = block_normals(problem, x.shared, x.local);
   for (int b = 0; b < problem.block_count; ++b) {
-    const Eigen::VectorXd& local = x.local[static_cast<std::size_t>(b)];
-    problem.residuals(b, x.shared, local, r0);
-    cost += r0.squaredNorm();
-    Eigen::MatrixXd jac(r0.size(), p + m);
-    for (int i = 0; i < p; ++i) {
-      Eigen::VectorXd s = x.shared;
-      const double h = step_size(s(i));
-      s(i) += h;
-      problem.residuals(b, s, local, r1);
-      jac.col(i) = (r1 - r0) / h;
-    }
-    for (int i = 0; i < m; ++i) {
-      Eigen::VectorXd l = local;
-      const double h = step_size(l(i));
-      l(i) += h;
-      problem.residuals(b, x.shared, l, r1);
-      jac.col(p + i) = (r1 - r0) / h;
-    }
-    const Eigen::MatrixXd jtj = jac.transpose() * jac;
-    const Eigen::VectorXd jtr = jac.transpose() * r0;
+    const BlockNormal& block = blocks[static_cast<std::size_t>(b)];
+    cost += block.cost;
+    const Eigen::MatrixXd& jtj = block.jtj;
+    const Eigen::VectorXd& jtr = block.jtr;
     const int offset = p + m * b;
     normal.topLeftCorner(p, p) += jtj.topLeftCorner(p, p);
     normal.block(0, offset, p, m) += jtj.topRightCorner(p, m);
@@ -146,26 +189,10 @@ std::vector<Eigen::VectorXd> leave_one_block_out(const ArrowProblem& problem,
   std::vector<Eigen::VectorXd> rhs(blocks);
   Eigen::MatrixXd schur_total = Eigen::MatrixXd::Zero(p, p);
   Eigen::VectorXd rhs_total = Eigen::VectorXd::Zero(p);
-  Eigen::VectorXd r0, r1;
+  const std::vector<BlockNormal> normals = block_normals(problem, shared, local);
   for (std::size_t b = 0; b < blocks; ++b) {
-    problem.residuals(static_cast<int>(b), shared, local[b], r0);
-    Eigen::MatrixXd jac(r0.size(), p + m);
-    for (int i = 0; i < p; ++i) {
-      Eigen::VectorXd s = shared;
-      const double h = step_size(s(i));
-      s(i) += h;
-      problem.residuals(static_cast<int>(b), s, local[b], r1);
-      jac.col(i) = (r1 - r0) / h;
-    }
-    for (int i = 0; i < m; ++i) {
-      Eigen::VectorXd l = local[b];
-      const double h = step_size(l(i));
-      l(i) += h;
-      problem.residuals(static_cast<int>(b), shared, l, r1);
-      jac.col(p + i) = (r1 - r0) / h;
-    }
-    const Eigen::MatrixXd jtj = jac.transpose() * jac;
-    const Eigen::VectorXd jtr = jac.transpose() * r0;
+    const Eigen::MatrixXd& jtj = normals[b].jtj;
+    const Eigen::VectorXd& jtr = normals[b].jtr;
     Eigen::MatrixXd hll = jtj.bottomRightCorner(m, m);
     hll.diagonal().array() += 1e-9 * std::max(hll.diagonal().maxCoeff(), 1e-12);
     const Eigen::LDLT<Eigen::MatrixXd> local_solve(hll);
