@@ -26,16 +26,22 @@ void for_each_block(const ArrowProblem& problem, const std::function<void(std::s
   parallel_for(count, problem.threads, body);
 }
 
-double total_cost(const ArrowProblem& problem, const Point& x) {
-  std::vector<double> costs(static_cast<std::size_t>(problem.block_count), 0.0);
-  for_each_block(problem, [&](std::size_t b) {
-    Eigen::VectorXd r;
-    problem.residuals(static_cast<int>(b), x.shared, x.local[b], r);
-    costs[b] = r.squaredNorm();
-  });
+// The residuals of every block at a point, kept so that linearising there (when the
+// point is accepted) does not compute them again.
+struct Evaluation {
+  std::vector<Eigen::VectorXd> residuals;  // per block
   double cost = 0.0;
-  for (double c : costs) cost += c;
-  return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
+};
+
+Evaluation evaluate(const ArrowProblem& problem, const Point& x) {
+  Evaluation e;
+  e.residuals.resize(static_cast<std::size_t>(problem.block_count));
+  for_each_block(problem, [&](std::size_t b) {
+    problem.residuals(static_cast<int>(b), x.shared, x.local[b], e.residuals[b]);
+  });
+  for (const Eigen::VectorXd& r : e.residuals) e.cost += r.squaredNorm();
+  if (!std::isfinite(e.cost)) e.cost = std::numeric_limits<double>::infinity();
+  return e;
 }
 
 double step_size(double value) { return 1e-7 * std::max(1.0, std::abs(value)); }
@@ -48,12 +54,17 @@ struct BlockNormal {
   double cost = 0.0;
 };
 
+// `known`: the block's residuals at (shared, local) when already computed (nullptr: not).
 BlockNormal block_normal(const ArrowProblem& problem, int block, const Eigen::VectorXd& shared,
-                         const Eigen::VectorXd& local) {
+                         const Eigen::VectorXd& local, const Eigen::VectorXd* known) {
   const int p = problem.shared_count;
   const int m = problem.local_count;
   Eigen::VectorXd r0, r1;
-  problem.residuals(block, shared, local, r0);
+  if (known != nullptr) {
+    r0 = *known;
+  } else {
+    problem.residuals(block, shared, local, r0);
+  }
   Eigen::MatrixXd jac(r0.size(), p + m);
   for (int i = 0; i < p; ++i) {
     Eigen::VectorXd s = shared;
@@ -77,24 +88,27 @@ BlockNormal block_normal(const ArrowProblem& problem, int block, const Eigen::Ve
 }
 
 std::vector<BlockNormal> block_normals(const ArrowProblem& problem, const Eigen::VectorXd& shared,
-                                       const std::vector<Eigen::VectorXd>& local) {
+                                       const std::vector<Eigen::VectorXd>& local,
+                                       const Evaluation* known = nullptr) {
   std::vector<BlockNormal> blocks(static_cast<std::size_t>(problem.block_count));
   for_each_block(problem, [&](std::size_t b) {
-    blocks[b] = block_normal(problem, static_cast<int>(b), shared, local[b]);
+    blocks[b] = block_normal(problem, static_cast<int>(b), shared, local[b],
+                             known != nullptr ? &known->residuals[b] : nullptr);
   });
   return blocks;
 }
 
-// J^T J and J^T r of the whole problem at x, assembled block by block.
+// J^T J and J^T r of the whole problem at x, assembled block by block. `known`: the
+// residuals at x, when evaluated already.
 double linearise(const ArrowProblem& problem, const Point& x, Eigen::MatrixXd& normal,
-                 Eigen::VectorXd& gradient) {
+                 Eigen::VectorXd& gradient, const Evaluation* known = nullptr) {
   const int p = problem.shared_count;
   const int m = problem.local_count;
   const int size = p + m * problem.block_count;
   normal.setZero(size, size);
   gradient.setZero(size);
   double cost = 0.0;
-  const std::vector<BlockNormal> blocks = block_normals(problem, x.shared, x.local);
+  const std::vector<BlockNormal> blocks = block_normals(problem, x.shared, x.local, known);
   for (int b = 0; b < problem.block_count; ++b) {
     const BlockNormal& block = blocks[static_cast<std::size_t>(b)];
     cost += block.cost;
@@ -145,14 +159,15 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
     const Eigen::VectorXd delta = damped.ldlt().solve(-gradient);
     if (!delta.allFinite()) break;
     const Point candidate = moved(problem, x, delta);
-    const double new_cost = total_cost(problem, candidate);
+    const Evaluation evaluation = evaluate(problem, candidate);
+    const double new_cost = evaluation.cost;
     // Gain predicted by the linear model: -(2 g.d + d.H.d) for cost = |r|^2.
     const double predicted = -(2.0 * gradient.dot(delta) + delta.dot(normal * delta));
     const double rho = predicted > 0.0 ? (cost - new_cost) / predicted : -1.0;
     if (std::isfinite(new_cost) && new_cost < cost) {
       const double gain = (cost - new_cost) / std::max(cost, 1e-300);
       x = candidate;
-      const double new_linear_cost = linearise(problem, x, normal, gradient);
+      const double new_linear_cost = linearise(problem, x, normal, gradient, &evaluation);
       cost = new_linear_cost;
       lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * std::min(rho, 1.0) - 1.0, 3));
       growth = 2.0;
