@@ -257,6 +257,7 @@ EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
   const std::vector<Eigen::VectorXd> rates = starting_rates(setup, nominal_fit, zero);
   LeastSquaresOptions quick;
   quick.max_iterations = 10;
+  quick.normal_at_solution = false;  // only the costs are compared
   const std::size_t n = flight.size();
   std::size_t best = 0;
   double best_cost = std::numeric_limits<double>::infinity();
@@ -343,6 +344,7 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal,
     // from the rate that suits a damped one).
     LeastSquaresOptions quick;
     quick.max_iterations = 4;
+    quick.normal_at_solution = false;  // only the costs are compared
     double best = std::numeric_limits<double>::infinity();
     std::vector<Eigen::VectorXd> best_rates = rates;
     for (double fraction : {0.03, 0.1, 0.3}) {
@@ -421,8 +423,10 @@ EffectFit fit_initial_rates(const EffectFit& fixed, const NominalInertia& nomina
                                      Eigen::VectorXd& r) {
     problem.residuals(block, theta, local, r);
   };
+  LeastSquaresOptions rates_only;
+  rates_only.normal_at_solution = false;  // no effect parameter to give an error for
   const LeastSquaresResult solution =
-      minimise(held, Eigen::VectorXd(), starting_rates(setup, nominal_fit, theta));
+      minimise(held, Eigen::VectorXd(), starting_rates(setup, nominal_fit, theta), rates_only);
   EffectFit fit = result_of(setup, solution, 0);
   fit.theta = theta;
   fit.theta_standard_error = fixed.theta_standard_error;

@@ -167,15 +167,19 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
     if (std::isfinite(new_cost) && new_cost < cost) {
       const double gain = (cost - new_cost) / std::max(cost, 1e-300);
       x = candidate;
-      const double new_linear_cost = linearise(problem, x, normal, gradient, &evaluation);
-      cost = new_linear_cost;
       lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * std::min(rho, 1.0) - 1.0, 3));
       growth = 2.0;
       // Converged when accepted steps stop paying, with the damping low enough that the
       // step was close to Gauss-Newton's (a heavily damped step may gain little only
       // because it is short).
       small_gains = gain < options.relative_tolerance ? small_gains + 1 : 0;
-      if (small_gains >= 2 && lambda < 1e-2) {
+      const bool converged = small_gains >= 2 && lambda < 1e-2;
+      if ((converged || iteration + 1 >= options.max_iterations) && !options.normal_at_solution) {
+        cost = evaluation.cost;  // the last step: nothing needs the Jacobian here
+      } else {
+        cost = linearise(problem, x, normal, gradient, &evaluation);
+      }
+      if (converged) {
         ++iteration;
         break;
       }

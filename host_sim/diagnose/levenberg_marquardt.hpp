@@ -34,6 +34,9 @@ struct ArrowProblem {
 struct LeastSquaresOptions {
   int max_iterations = 40;
   double relative_tolerance = 1e-7;  // stop when an accepted step gains less than this
+  // false: the caller wants only the solution and its cost, not normal_matrix, so the
+  // last accepted point is not linearised (one Jacobian fewer; the solution is the same).
+  bool normal_at_solution = true;
 };
 
 struct LeastSquaresResult {
