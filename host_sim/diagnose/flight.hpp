@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,11 @@ struct Flight {
   std::vector<double> time_s;            // as recorded, strictly increasing
   std::vector<Eigen::Vector3d> omega;    // measured rate (sensor axes / body axes)
   std::vector<char> usable;              // 0: left out of every fit (e.g. saturated)
+  // The sensor's noise per axis where its log lies still (rest_periods.hpp); unset when
+  // the log has no rest. The noise floor prefers it (noise_floor.hpp).
+  std::optional<Eigen::Vector3d> rest_noise;
+  // Seconds dropped at the start: a release from rest while the gyro's filter settled.
+  double settling_dropped_s = 0.0;
 
   std::size_t size() const { return time_s.size(); }
   double start_s() const { return time_s.empty() ? 0.0 : time_s.front(); }
