@@ -7,23 +7,17 @@
 namespace aloft::host::diagnose {
 namespace {
 
-// A flight released from rest starts with the gyro's low-pass settling from the step of
-// the release (the filter lags; a lag alone the initial-state fit absorbs, the settling
-// it cannot): those samples are dropped.
-double settled_start(const std::vector<RestPeriod>& rest, double from_s) {
-  return released_from_rest(rest, from_s) ? from_s + kFilterSettling_s : from_s;
-}
-
 Flight cut_flight(const ImuLog& log, const Body& body, const std::vector<RestPeriod>& rest, double from_s,
                   double to_s, const std::string& name) {
   Flight flight;
   flight.name = name;
   flight.gyro_input = true;
   flight.sensor_to_body = body.imu_to_body;
-  const double start = settled_start(rest, from_s);
-  flight.settling_dropped_s = start - from_s;
+  // A release from rest: the gyro's filter settles from the spin-up (a lag alone the
+  // initial-state fit absorbs; the settling it cannot).
+  if (released_from_rest(rest, from_s)) flight.settling_until_s = from_s + kFilterSettling_s;
   for (std::size_t k = 0; k < log.time_s.size(); ++k) {
-    if (log.time_s[k] < start || log.time_s[k] > to_s) continue;
+    if (log.time_s[k] < from_s || log.time_s[k] > to_s) continue;
     flight.time_s.push_back(log.time_s[k]);
     flight.omega.push_back(log.gyro_rad_s[k]);
   }

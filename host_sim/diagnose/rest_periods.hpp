@@ -1,7 +1,7 @@
 // Rest periods of a gyro log: stretches where the sensor lies still, so what it reads
 // there is its bias plus its noise as filtered and quantised, with no motion in it. The
 // noise floor is best measured there (noise_floor.hpp: method "rest"); and a flight cut
-// right after rest starts while the gyro's low-pass is still settling from the release.
+// right after rest starts while the gyro's low-pass is still settling from the spin-up.
 #pragma once
 
 #include <Eigen/Core>
@@ -21,8 +21,8 @@ constexpr double kMinimumRest_s = 0.5;
 // Dropped at each end of a still run (s): the low-pass's tail of the motion next to it.
 constexpr double kRestEdge_s = 0.1;
 // A second-order low-pass at 15 Hz (the slowest phone gyros) settles from a step to 1/1000
-// of it in ln(1000) / (2π · 15 Hz / √2) ≈ 0.104 s: the samples a flight right after rest
-// spends settling from the release, whatever the gyro's cutoff above that.
+// of it in ln(1000) / (2π · 15 Hz / √2) ≈ 0.104 s: how long a flight released from rest
+// carries the spin-up in its readings, whatever the gyro's cutoff above that.
 constexpr double kFilterSettling_s = 0.104;
 
 struct RestPeriod {

@@ -75,6 +75,7 @@ TEST_CASE("phone-like flights: right class on >= 90 %, none for noise, confident
     std::printf("%-30s %-10s %3.0f Hz lp %2.0f Hz noise %.3f floor %.4f (%s) -> %s%s\n", c.name.c_str(),
                 c.spec.body.c_str(), p.gyro.rate_hz, p.gyro.cutoff_hz, p.gyro.noise_rad_s, d.noise.sigma.mean(),
                 d.noise.method, score.detail.c_str(), sure ? " confident" : "");
+    if (!score.class_right) std::printf("    window %.3f-%.3f, verdict %s\n", d.start_s, d.end_s, verdict.dump().c_str());
   }
   std::printf("phone-like flights: %d of %d right (%.1f %%); none on %d of %d noise-only; confident %d, right %d; "
               "parameters within the tolerance on %d of %d; floor from rest on %d; %.1f s\n",

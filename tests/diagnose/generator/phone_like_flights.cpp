@@ -41,7 +41,7 @@ PhoneGyroSpec draw_phone(SeededRandom& rng) {
   PhoneGyroSpec g;
   g.rate_hz = rng.uniform(100.0, 500.0);
   g.cutoff_hz = rng.uniform(15.0, 40.0);
-  g.noise_rad_s = rng.uniform(0.005, 0.015);
+  g.noise_rad_s = rng.uniform(0.005, 0.02);
   g.quantum_rad_s = 0.001;
   g.jitter = 0.02;
   return g;
@@ -53,10 +53,24 @@ void rest(std::vector<Vec3>& fine, const Vec3& reading, double seconds) {
   fine.insert(fine.end(), static_cast<std::size_t>(n), reading);
 }
 
-// Appends one flight's clean readings; returns its window on the log's clock.
-host::Segment append_flight(std::vector<Vec3>& fine, const GeneratedFlight& g, const std::string& name) {
+// Appends a straight ramp from the last reading to `to` over `seconds` (the hand
+// spinning the body up, or stopping it); a reading is linear in the rate, so a ramp of
+// the rate is a ramp of the reading whatever the sensor model.
+void ramp(std::vector<Vec3>& fine, const Vec3& to, double seconds) {
+  const Vec3 from = fine.back();
+  const long n = std::lround(seconds / kStep_s);
+  for (long k = 1; k < n; ++k) fine.push_back(from + (to - from) * (static_cast<double>(k) / static_cast<double>(n)));
+}
+
+// Appends one throw: the spin-up in the hand (0.1-0.2 s), the flight's clean readings
+// and the catch (0.03-0.05 s) back to `still`. Returns the flight's window (release to
+// catch) on the log's clock.
+host::Segment append_throw(std::vector<Vec3>& fine, const GeneratedFlight& g, const Vec3& still,
+                           const std::string& name, SeededRandom& rng) {
+  ramp(fine, g.imu.gyro_rad_s.front(), rng.uniform(0.1, 0.2));
   const double start = static_cast<double>(fine.size()) * kStep_s;
   fine.insert(fine.end(), g.imu.gyro_rad_s.begin(), g.imu.gyro_rad_s.end());
+  ramp(fine, still, rng.uniform(0.03, 0.05));
   return {name, start, start + g.imu.time_s.back(), ""};
 }
 
@@ -85,7 +99,7 @@ PhoneLikeFlight generate_phone_like_flight(const FlightSpec& spec, std::uint64_t
   const Vec3 still = resting_reading(g.truth);
   std::vector<Vec3> fine;
   rest(fine, still, phone.uniform(1.0, 2.0));
-  out.window = append_flight(fine, g, "flight");
+  out.window = append_throw(fine, g, still, "flight", phone);
   rest(fine, still, phone.uniform(1.0, 2.0));
   out.flight = std::move(g);
   out.flight.spec = spec;
@@ -108,7 +122,7 @@ PhoneLikeSession generate_phone_like_session(const FlightSpec& spec, int flights
     GeneratedFlight g = clean_fine_flight(one, seed);
     const Vec3 still = resting_reading(g.truth);
     if (i == 0) rest(fine, still, phone.uniform(1.0, 2.0));
-    out.flights.push_back(append_flight(fine, g, "flight" + std::to_string(i + 1)));
+    out.flights.push_back(append_throw(fine, g, still, "flight" + std::to_string(i + 1), phone));
     rest(fine, still, phone.uniform(1.0, 2.0));
     move_onset(g.truth, out.flights.back().start_s);
     out.truths.push_back(g.truth);

@@ -4,12 +4,13 @@
 //
 // The phone (drawn from the seed): gyro at 100-500 Hz with +-2 % timestamp jitter, a
 // causal second-order Butterworth low-pass at 15-40 Hz applied before the noise, white
-// noise 0.005-0.015 rad/s per axis, 1 mrad/s quantisation. The flight's sensor model
+// noise 0.005-0.02 rad/s per axis, 1 mrad/s quantisation. The flight's sensor model
 // (bias, scale, axes, clock) acts before the filter, as inside a real sensor.
 // Rest: 1-2 s before and after each flight, the phone lying still (zero true rate, so
 // the reading is the gyro's bias, if any) with the same filter, noise and quantisation.
-// The true rate jumps at release and at the catch; the filter smooths both steps, so the
-// first tens of milliseconds of a flight still carry the rest before it.
+// The hand spins the body up from rest in 0.1-0.2 s (the rate ramps to the release's)
+// and stops it in 0.03-0.05 s after the catch; the filter carries the spin-up into the
+// first tens of milliseconds of the flight.
 //
 // A session: several flights of one body with one true effect (the effect drawn once
 // from the seed, each flight's throw and noise from its own seed: FlightSpec::throw_seed)
