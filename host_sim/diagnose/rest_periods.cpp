@@ -6,6 +6,25 @@
 namespace aloft::host::diagnose {
 namespace {
 
+// A slow motion (a hand holding the sensor, a body rolling to a stop) spreads the readings
+// far more than it moves them from one sample to the next; noise, even a low-passed
+// one, moves them about as much as it spreads them (white: RMS step = √2 σ). Still means
+// the spread is at most kMotionRatio times the one the steps imply, on every axis.
+constexpr double kMotionRatio = 2.0;
+bool still(const ImuLog& log, std::size_t first, std::size_t last, double from, double to,
+           const Eigen::Vector3d& spread) {
+  Eigen::Vector3d steps = Eigen::Vector3d::Zero();
+  std::size_t count = 0;
+  for (std::size_t k = first; k < last; ++k) {
+    if (log.time_s[k] < from || log.time_s[k + 1] > to) continue;
+    steps += (log.gyro_rad_s[k + 1] - log.gyro_rad_s[k]).cwiseAbs2();
+    ++count;
+  }
+  if (count == 0) return false;
+  const Eigen::Vector3d from_steps = (steps / (2.0 * static_cast<double>(count))).cwiseSqrt();
+  return (spread.array() <= kMotionRatio * from_steps.array()).all();
+}
+
 // The period [from, to) of the log's samples without the run's edges, or nothing when
 // it is too short.
 std::optional<RestPeriod> period_of(const ImuLog& log, std::size_t first, std::size_t last) {
@@ -26,6 +45,7 @@ std::optional<RestPeriod> period_of(const ImuLog& log, std::size_t first, std::s
   if (p.samples < 20) return std::nullopt;
   const Eigen::Vector3d mean = sum / n;
   p.sigma = (squares / n - mean.cwiseAbs2()).cwiseMax(0.0).cwiseSqrt() * std::sqrt(n / (n - 1.0));
+  if (!still(log, first, last, from, to, p.sigma)) return std::nullopt;
   return p;
 }
 

@@ -32,7 +32,9 @@ struct RestPeriod {
   std::size_t samples = 0;
 };
 
-// Every rest period of the log, in time order.
+// Every rest period of the log, in time order: runs of samples below kStillRate_rad_s,
+// without their edges, at least kMinimumRest_s long, whose spread is noise rather than a
+// slow motion (rest_periods.cpp: the spread against the sample-to-sample steps).
 std::vector<RestPeriod> find_rest_periods(const ImuLog& log);
 
 struct RestNoise {
