@@ -25,10 +25,11 @@ ImuLog throw_between_rests(const Eigen::Vector3d& sigma, double rest, unsigned s
   for (int k = 0; k * 0.005 <= end; ++k) {
     const double t = 0.005 * k;
     Eigen::Vector3d w = bias;
-    if (t >= rest && t <= rest + 1.0) w += Eigen::Vector3d(6.0 * std::cos(4.0 * t), 6.0 * std::sin(4.0 * t), 5.0);
+    if (t >= rest && t <= rest + 1.0)
+      w += Eigen::Vector3d(6.0 * std::cos(4.0 * t), 6.0 * std::sin(4.0 * t), 5.0);
     log.time_s.push_back(t);
-    log.gyro_rad_s.push_back(w + Eigen::Vector3d(sigma(0) * unit(random), sigma(1) * unit(random),
-                                                 sigma(2) * unit(random)));
+    log.gyro_rad_s.push_back(
+        w + Eigen::Vector3d(sigma(0) * unit(random), sigma(1) * unit(random), sigma(2) * unit(random)));
   }
   return log;
 }

@@ -25,7 +25,7 @@ struct PhoneGyroSpec {
 // `fine` is the unfiltered reading every `step_s` seconds from t = 0 (step_s well below
 // 1 / cutoff and 1 / rate). Returns the log, read from t = 0 to the last fine sample; the
 // jitter and the noise come from `noise`, in that order per sample.
-host::ImuLog read_phone_gyro(const std::vector<Eigen::Vector3d>& fine, double step_s, const PhoneGyroSpec& spec,
-                             SeededRandom& noise);
+host::ImuLog read_phone_gyro(const std::vector<Eigen::Vector3d>& fine, double step_s,
+                             const PhoneGyroSpec& spec, SeededRandom& noise);
 
 }  // namespace aloft::generator

@@ -10,7 +10,7 @@ std::vector<FlightCase> phone_like_flight_cases() {
   const auto& effects = effect_names();
   std::uint64_t seed = 20261124;
   for (std::size_t e = 0; e < effects.size(); ++e) {
-    const int repeats = effects[e] == "none" ? 6 : 4;
+    const int repeats = effects[e] == "none" ? 8 : 6;
     for (int i = 0; i < repeats; ++i) {
       FlightCase c;
       c.spec.effect = effects[e];
@@ -27,14 +27,15 @@ std::vector<FlightCase> phone_like_flight_cases() {
 }
 
 std::vector<SessionCase> phone_like_session_cases() {
-  const char* effects[] = {"none", "inertia_moments", "gyro_bias", "sensor_misalignment"};
-  const char* bodies[] = {"box", "tilted_box", "disc", "racquet"};
+  const char* effects[] = {"none",      "inertia_moments", "inertia_axes", "gyro_bias",
+                           "gyro_scale", "sensor_misalignment", "clock_drift"};
+  const auto& bodies = body_names();
   std::vector<SessionCase> cases;
   std::uint64_t seed = 20261125;
-  for (std::size_t i = 0; i < 4; ++i) {
+  for (std::size_t i = 0; i < 7; ++i) {
     SessionCase c;
     c.flight.spec.effect = effects[i];
-    c.flight.spec.body = bodies[i];
+    c.flight.spec.body = bodies[i % bodies.size()];
     c.flight.name = std::string("session_") + effects[i];
     c.flight.seed = seed;
     seed += 0x9E3779B1ull;

@@ -2,12 +2,12 @@
 // phone_like_flights.hpp. The lists and their seeds never change; the diagnosis must not
 // look at a case's truth.
 //
-//   phone-like flights: none × 6, each of the nine effects × 4 = 42 flights; bodies
+//   phone-like flights: none × 8, each of the nine effects × 6 = 62 flights; bodies
 //     cycle through body_names() (internal_damping skips the cylinder, as in
 //     withheld_effect_cases.hpp);
-//   sessions: 3 flights each of none, inertia_moments, gyro_bias and
-//     sensor_misalignment (the effects that belong to a body or a sensor and so are
-//     one for a whole session), on four different bodies.
+//   sessions: 3 flights each of none, inertia_moments, inertia_axes, gyro_bias,
+//     gyro_scale, sensor_misalignment and clock_drift (the effects that belong to a body
+//     or a sensor and so are one for a whole session), bodies cycling as above.
 #pragma once
 
 #include <vector>

@@ -59,7 +59,8 @@ void rest(std::vector<Vec3>& fine, const Vec3& reading, double seconds) {
 void ramp(std::vector<Vec3>& fine, const Vec3& to, double seconds) {
   const Vec3 from = fine.back();
   const long n = std::lround(seconds / kStep_s);
-  for (long k = 1; k < n; ++k) fine.push_back(from + (to - from) * (static_cast<double>(k) / static_cast<double>(n)));
+  for (long k = 1; k < n; ++k)
+    fine.push_back(from + (to - from) * (static_cast<double>(k) / static_cast<double>(n)));
 }
 
 // Appends one throw: the spin-up in the hand (0.1-0.2 s), the flight's clean readings
@@ -83,7 +84,8 @@ void move_onset(FlightTruth& truth, double start_s) {
 
 std::string segment_row(const host::Segment& s) {
   char line[200];
-  std::snprintf(line, sizeof line, "%s,%.6f,%.6f,true,%s\n", s.name.c_str(), s.start_s, s.end_s, s.comment.c_str());
+  std::snprintf(line, sizeof line, "%s,%.6f,%.6f,true,%s\n", s.name.c_str(), s.start_s, s.end_s,
+                s.comment.c_str());
   return line;
 }
 
