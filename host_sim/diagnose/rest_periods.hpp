@@ -26,8 +26,8 @@ constexpr double kRestEdge_s = 0.1;
 constexpr double kFilterSettling_s = 0.104;
 
 struct RestPeriod {
-  double from_s = 0.0, to_s = 0.0;  // the still run without its edges
-  double still_until_s = 0.0;       // the run's last still sample (the motion's start)
+  double from_s = 0.0, to_s = 0.0;                  // the still run without its edges
+  double still_until_s = 0.0;                       // the run's last still sample (the motion's start)
   Eigen::Vector3d sigma = Eigen::Vector3d::Zero();  // RMS about the period's mean, per axis
   std::size_t samples = 0;
 };
