@@ -47,11 +47,28 @@ TEST_CASE("racquet sessions: the nominal model's gap, what explains it, flip per
     for (const Candidate& c : d.pooled.candidates) {
       if (c.evaluated) std::printf("   pooled %-20s LOFO shrink %6.3f\n", effect_name(c.effect), c.shrink);
     }
+    for (std::size_t i = 1; i < d.pooled.steps.size(); ++i) {
+      const ModelStep& s = d.pooled.steps[i];
+      for (const Candidate& c : s.candidates) {
+        if (c.evaluated && !c.reference) {
+          std::printf("   step %zu + %-20s LOFO rel err %.4f -> %.4f (shrink %6.3f)\n", i + 1, effect_name(c.effect),
+                      s.heldout_rms_rel_err_before, c.heldout_rms_rel_err, c.shrink);
+        }
+      }
+    }
+    for (const FlightDiagnosis& f : d.flights) {
+      if (f.analysis.tensor) {
+        std::printf("   flight %s own ratios %.4f %.4f [%.4f %.4f]\n", f.name.c_str(), f.analysis.tensor->ratio_best(0),
+                    f.analysis.tensor->ratio_best(1), f.analysis.tensor->ratio_low(0), f.analysis.tensor->ratio_high(0));
+      }
+    }
     for (const FlightDiagnosis& f : d.flights) {
       if (f.flip_period) {
         std::printf("   flight %s (%s): period %.3f s measured, %.3f nominal", f.name.c_str(), f.comment.c_str(),
                     f.flip_period->measured_s, f.flip_period->nominal_s);
         if (f.flip_period->diagnosed_s) std::printf(", %.3f diagnosed", *f.flip_period->diagnosed_s);
+        if (f.flip_period->nominal_fitted_s) std::printf("; fitted start: %.3f nominal", *f.flip_period->nominal_fitted_s);
+        if (f.flip_period->diagnosed_fitted_s) std::printf(", %.3f diagnosed", *f.flip_period->diagnosed_fitted_s);
         std::printf("\n");
       }
     }
