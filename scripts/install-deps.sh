@@ -10,7 +10,7 @@ host_packages=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev libbenchmark-dev
   libcairo2-dev libxsimd-dev libpugixml-dev
-  clang libclang-rt-dev
+  clang libclang-rt-dev clang-format
 )
 target_packages=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib

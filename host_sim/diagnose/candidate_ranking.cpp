@@ -4,38 +4,13 @@
 #include <cmath>
 
 #include "aloft/deviation.hpp"
+#include "diagnose/effect_descriptor.hpp"
 #include "diagnose/moment_scale_equivalence.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
 
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
-
-// The standard error below which a parameter counts as informed by the flight, in the
-// units of theta (flight_model.hpp): what a useful diagnosis must resolve.
-double tolerance(Effect effect, double mean_speed, double duration_s) {
-  switch (effect) {
-    case Effect::inertia_moments: return 0.03;     // 3 % of a moment ratio
-    case Effect::inertia_axes:
-    case Effect::sensor_misalignment: return 1.0 / kDeg;  // 1 degree
-    case Effect::aero_torque:  // a drag that changes |w| by 1 % over the flight
-      return 0.01 / std::max(mean_speed * duration_s, 1e-6);
-    case Effect::internal_damping: return 2.0;     // log scales of rotor size and rate
-    case Effect::impulse: return 0.05;             // rad/s of jump
-    case Effect::gyro_bias: return 0.01;           // rad/s
-    case Effect::gyro_scale: return 0.005;
-    case Effect::clock_drift: return 0.005;
-    case Effect::none: return 1.0;
-  }
-  return 1.0;
-}
-
-// With 3 % slack: a fitted tensor of a flat body sits on the boundary and noise may push it
-// just across; a measured nominal (the racquet) may start 2 % beyond it.
-bool triangle_holds(const Eigen::Vector3d& m) {
-  const double slack = 0.03 * m.sum();
-  return m(0) <= m(1) + m(2) + slack && m(1) <= m(0) + m(2) + slack && m(2) <= m(0) + m(1) + slack;
-}
 
 // Root mean square difference of two candidates' held-out predictions, in noise units.
 double prediction_distance(const Candidate& a, const Candidate& b,
@@ -89,8 +64,8 @@ bool identifiable(const Candidate& c, double mean_speed, double duration_s) {
   Eigen::Index offset = 0;
   bool informed = false;
   for (Effect e : effects) {
-    const double tol = tolerance(e, mean_speed, duration_s);
-    const bool gauge = e == Effect::inertia_axes || e == Effect::sensor_misalignment;
+    const double tol = describe(e).hooks.tolerance(mean_speed, duration_s);
+    const bool gauge = describe(e).rotation_gauge;
     for (int i = 0; i < effect_parameter_count(e) && offset < se.size(); ++i, ++offset) {
       if (!std::isfinite(se(offset)) && gauge) continue;
       informed = informed || std::isfinite(se(offset));
@@ -100,20 +75,27 @@ bool identifiable(const Candidate& c, double mean_speed, double duration_s) {
   return informed;
 }
 
+// The slice of a fitted vector that belongs to an effect at `offset` (empty when the fit
+// holds fewer values).
+Eigen::VectorXd slice(const Eigen::VectorXd& v, int offset, int count) {
+  if (offset < 0 || offset + count > v.size()) return Eigen::VectorXd();
+  return v.segment(offset, count);
+}
+
+// Each effect of the model judges its own fit (descriptor `unphysical`), those the model
+// started from first; the last objection is the note.
 void judge_physics(Candidate& c) {
   const EffectModel model(c.effect, NominalInertia(), 0.0, c.base);
-  const int drag = theta_offset(model, Effect::aero_torque);
-  if (drag >= 0 && drag < c.fit.theta.size() && drag < c.fit.theta_standard_error.size()) {
-    const double se = c.fit.theta_standard_error(drag);
-    const double k = c.fit.theta(drag);
-    if (k < 0 && k < -3.0 * (std::isfinite(se) ? se : 0.0)) {
+  for (Effect e : model_effects(model)) {
+    const int offset = theta_offset(model, e);
+    const int count = effect_parameter_count(e);
+    const FittedSlice fit{slice(c.fit.theta, offset, count), slice(c.fit.theta_standard_error, offset, count),
+                          e == c.effect ? &c.params : nullptr};
+    const std::string why = describe(e).hooks.unphysical(fit);
+    if (!why.empty()) {
       c.physical = false;
-      c.note = "unphysical: negative drag (energy gain)";
+      c.note = why;
     }
-  }
-  if (c.effect == Effect::inertia_moments && !triangle_holds(c.params.principal_kg_m2)) {
-    c.physical = false;
-    c.note = "unphysical: fitted moments break the triangle inequality";
   }
 }
 

@@ -115,8 +115,9 @@ void run_diagnose(const DiagnoseOptions& o) {
   } else if (!o.markers.empty()) {
     source = o.markers;
     PoseFitReport fit_report;
-    const PoseTrial poses = fit_poses(read_marker_file(o.markers), body, &fit_report);
-    if (const auto misfit = diagnose::marker_misfit(fit_report)) throw Error(o.markers + ": " + *misfit);
+    const MarkerTrial trial = read_marker_file(o.markers);
+    const PoseTrial poses = fit_poses(trial, body, &fit_report);
+    if (const auto misfit = diagnose::marker_misfit(trial, body, fit_report)) throw Error(o.markers + ": " + *misfit);
     flights.push_back(diagnose::flight_from_poses(poses, file_name(o.markers)));
   } else {
     source = o.poses;

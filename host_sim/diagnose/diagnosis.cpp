@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "diagnose/baseline_gap.hpp"
 #include "diagnose/candidate_ranking.hpp"
 #include "diagnose/held_out.hpp"
 #include "diagnose/plausibility.hpp"
@@ -33,54 +34,26 @@ std::optional<double> cusum_onset(const Flight& flight, const std::vector<Vec3>&
   return std::nullopt;
 }
 
-const char* axis_name(int i) { return i == 0 ? "x" : (i == 1 ? "y" : "z"); }
-
-void describe_baseline(const Flight& flight, const std::vector<Vec3>& readings,
-                       const Vec3& inverse_sigma, Analysis& analysis) {
-  GapSums all;
-  Vec3 body_sq = Vec3::Zero();
-  int body_count = 0;
-  const Eigen::Matrix3d to_body = flight.sensor_to_body.toRotationMatrix();
+// The baseline gap in ten slices of the flight's time: where along the flight it grows.
+void describe_slices(const Flight& flight, const std::vector<Vec3>& readings, const Vec3& inverse_sigma,
+                     Where& where) {
   constexpr int kSlices = 10;
   std::vector<GapSums> slices(kSlices);
   const double t0 = flight.start_s();
   const double span = std::max(flight.end_s() - t0, 1e-12);
   for (std::size_t k = 0; k < flight.size(); ++k) {
     if (!flight.usable[k]) continue;
-    all.add(readings[k], flight.omega[k], inverse_sigma);
     const int s = std::min(kSlices - 1, static_cast<int>((flight.time_s[k] - t0) / span * kSlices));
     slices[static_cast<std::size_t>(s)].add(readings[k], flight.omega[k], inverse_sigma);
-    body_sq += (to_body * (readings[k] - flight.omega[k])).cwiseAbs2();
-    ++body_count;
   }
-  analysis.baseline.rms_da_deg = all.rms_da_deg();
-  analysis.baseline.rms_rel_err = all.rms_rel_err();
-  Where& w = analysis.where;
-  w.rms_gap_body_rad_s = body_count ? Vec3((body_sq / body_count).cwiseSqrt()) : Vec3::Zero();
-  Eigen::Index axis = 0;
-  w.rms_gap_body_rad_s.maxCoeff(&axis);
-  w.dominant_axis = axis_name(static_cast<int>(axis));
-  w.gap_over_noise = all.residuals ? all.chi_square / all.residuals : 0.0;
   for (int s = 0; s < kSlices; ++s) {
     TimeSlice slice;
     slice.from_s = t0 + span * s / kSlices;
     slice.to_s = t0 + span * (s + 1) / kSlices;
     slice.rms_da_deg = slices[static_cast<std::size_t>(s)].rms_da_deg();
     slice.rms_rel_err = slices[static_cast<std::size_t>(s)].rms_rel_err();
-    w.slices.push_back(slice);
+    where.slices.push_back(slice);
   }
-}
-
-double mean_speed(const Flight& flight) {
-  double sum = 0.0;
-  int count = 0;
-  for (std::size_t k = 0; k < flight.size(); ++k) {
-    if (flight.usable[k]) {
-      sum += flight.omega[k].norm();
-      ++count;
-    }
-  }
-  return count ? sum / count : 0.0;
 }
 
 std::vector<Effect> effects_of_model(const Candidate& c) {
@@ -121,7 +94,10 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
   const EffectFit none_full = fit_effect(Effect::none, nominal, {all}, nullptr);
   std::vector<Vec3> readings;
   predict(none_full, nominal, 0, flight, readings);
-  describe_baseline(flight, readings, inverse_sigma, analysis);
+  BaselineGap baseline;
+  baseline.add(flight, readings, inverse_sigma);
+  baseline.describe(analysis);
+  describe_slices(flight, readings, inverse_sigma, analysis.where);
   analysis.where.invariants = measured_invariants(flight, nominal, d.noise);
 
   const Folds folds = interleaved_folds(n);
@@ -176,7 +152,7 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
   }
 
   rule_out_senseless(analysis.candidates);
-  const RankingContext context{flight.gyro_input, {&flight}, {inverse_sigma}, mean_speed(flight),
+  const RankingContext context{flight.gyro_input, {&flight}, {inverse_sigma}, flight.mean_speed(),
                                d.end_s - d.start_s, &nominal, d.noise.resolution};
   rank_candidates(analysis, context);
   select_stepwise(analysis, context, evaluate);

@@ -1,71 +1,59 @@
+// The registry: every effect of effects/effect_list.def, indexed by its enum value, and
+// the common questions answered from the descriptors.
 #include "diagnose/effect.hpp"
 
+#include <array>
+#include <cstddef>
+
+#include "diagnose/effect_descriptor.hpp"
+
 namespace aloft::host::diagnose {
+namespace {
 
-const char* effect_name(Effect effect) {
-  switch (effect) {
-    case Effect::none: return "none";
-    case Effect::inertia_moments: return "inertia_moments";
-    case Effect::inertia_axes: return "inertia_axes";
-    case Effect::aero_torque: return "aero_torque";
-    case Effect::internal_damping: return "internal_damping";
-    case Effect::impulse: return "impulse";
-    case Effect::gyro_bias: return "gyro_bias";
-    case Effect::gyro_scale: return "gyro_scale";
-    case Effect::sensor_misalignment: return "sensor_misalignment";
-    case Effect::clock_drift: return "clock_drift";
-  }
-  return "none";
+constexpr std::array kRegistry = {
+#define ALOFT_EFFECT(name) &name##_effect,
+#include "diagnose/effects/effect_list.def"
+#undef ALOFT_EFFECT
+};
+
+}  // namespace
+
+const EffectDescriptor& describe(Effect effect) { return *kRegistry[static_cast<std::size_t>(effect)]; }
+
+std::vector<Effect> registered_effects() {
+  std::vector<Effect> all;
+  for (std::size_t i = 0; i < kRegistry.size(); ++i) all.push_back(static_cast<Effect>(i));
+  return all;
 }
 
-int effect_parameter_count(Effect effect) {
-  switch (effect) {
-    case Effect::none: return 0;
-    case Effect::inertia_moments: return 2;
-    case Effect::inertia_axes: return 3;
-    case Effect::aero_torque: return 1;
-    case Effect::internal_damping: return 2;
-    case Effect::impulse: return 3;
-    case Effect::gyro_bias: return 3;
-    case Effect::gyro_scale: return 3;
-    case Effect::sensor_misalignment: return 3;
-    case Effect::clock_drift: return 1;
-  }
-  return 0;
-}
+std::string no_objection(const EffectParameters&) { return {}; }
+std::string no_physics_objection(const FittedSlice&) { return {}; }
+
+const char* effect_name(Effect effect) { return describe(effect).name; }
+
+int effect_parameter_count(Effect effect) { return describe(effect).parameter_count; }
 
 int effect_penalty_count(Effect effect) {
-  return effect_parameter_count(effect) + (effect == Effect::impulse ? 1 : 0);
+  return describe(effect).parameter_count + describe(effect).searched_parameters;
 }
 
-bool is_sensor_effect(Effect effect) {
-  return effect == Effect::gyro_bias || effect == Effect::gyro_scale ||
-         effect == Effect::sensor_misalignment || effect == Effect::clock_drift;
-}
+bool is_sensor_effect(Effect effect) { return describe(effect).sensor; }
 
 std::vector<Effect> candidate_effects(bool gyro_input) {
-  std::vector<Effect> all = {Effect::none,         Effect::inertia_moments,
-                             Effect::inertia_axes, Effect::aero_torque,
-                             Effect::internal_damping, Effect::impulse,
-                             Effect::gyro_bias,    Effect::gyro_scale,
-                             Effect::sensor_misalignment, Effect::clock_drift};
-  if (gyro_input) return all;
-  std::vector<Effect> motion;
-  for (Effect e : all) {
-    if (!is_sensor_effect(e)) motion.push_back(e);
+  std::vector<Effect> out;
+  for (Effect e : registered_effects()) {
+    if (gyro_input || !is_sensor_effect(e)) out.push_back(e);
   }
-  return motion;
+  return out;
 }
 
 std::vector<Effect> always_equivalent(Effect effect, bool gyro_input) {
-  if (gyro_input) {
-    if (effect == Effect::inertia_axes || effect == Effect::sensor_misalignment) {
-      return {effect, effect == Effect::inertia_axes ? Effect::sensor_misalignment
-                                                     : Effect::inertia_axes};
-    }
-    if (effect == Effect::clock_drift) return {Effect::clock_drift, Effect::gyro_scale};
+  std::vector<Effect> out{effect};
+  if (!gyro_input) return out;
+  for (Effect e : describe(effect).gyro_equivalents) {
+    if (e != Effect::none) out.push_back(e);
   }
-  return {effect};
+  return out;
 }
 
 }  // namespace aloft::host::diagnose

@@ -1,24 +1,17 @@
-// The unmodelled effects `aloft diagnose` considers (SPEC §4): their fixed names, how
-// many free parameters each adds to the torque-free model, which apply to IMU input
-// only, and which the data of a gyro alone cannot tell apart.
+// The unmodelled effects `aloft diagnose` considers (SPEC §4). Each is described in one
+// place, its descriptor (effect_descriptor.hpp, effects/<name>.cpp); the enum below is
+// made from the registry list (effects/effect_list.def), so adding an effect adds no case
+// here. The functions below are the questions the rest of diagnose asks most often.
 #pragma once
 
-#include <string>
 #include <vector>
 
 namespace aloft::host::diagnose {
 
 enum class Effect {
-  none,                 // measurement noise only
-  inertia_moments,      // principal moments wrong (ratios; the scale is free)
-  inertia_axes,         // principal axes rotated from nominal
-  aero_torque,          // tau = -k |w| w
-  internal_damping,     // a spherical rotor in a viscous cavity: energy loss at constant |L|
-  impulse,              // an instantaneous angular impulse at one time
-  gyro_bias,            // measured = true + b
-  gyro_scale,           // measured_i = (1 + s_i) true_i
-  sensor_misalignment,  // sensor axes rotated from body axes
-  clock_drift,          // recorded time = true time * (1 + eps)
+#define ALOFT_EFFECT(name) name,
+#include "diagnose/effects/effect_list.def"
+#undef ALOFT_EFFECT
 };
 
 const char* effect_name(Effect effect);
@@ -33,13 +26,12 @@ int effect_penalty_count(Effect effect);
 // Gyro bias, scale, misalignment and clock drift describe the sensor, not the motion.
 bool is_sensor_effect(Effect effect);
 
-// The candidate effects for IMU input (every effect) or motion capture (no sensor effects).
+// The candidate effects for IMU input (every effect) or motion capture (no sensor
+// effects), in registry order.
 std::vector<Effect> candidate_effects(bool gyro_input);
 
 // Effects that gyro data cannot tell apart from `effect` whatever the flight, including
-// `effect` itself: inertia_axes == sensor_misalignment (a rotated tensor and a rotated
-// sensor give the same readings), clock_drift == a uniform gyro_scale (a torque-free
-// motion sped up by (1+eps) is the same motion with every rate scaled by (1+eps)).
+// `effect` itself first (each descriptor lists its own; SPEC §4 names two classes).
 std::vector<Effect> always_equivalent(Effect effect, bool gyro_input);
 
 }  // namespace aloft::host::diagnose

@@ -26,6 +26,18 @@ struct Flight {
   std::size_t size() const { return time_s.size(); }
   double start_s() const { return time_s.empty() ? 0.0 : time_s.front(); }
   double end_s() const { return time_s.empty() ? 0.0 : time_s.back(); }
+  // Mean |omega| over the usable samples (rad/s): how fast the data turns, which sets
+  // the tolerances of parameters measured against it.
+  double mean_speed() const {
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t k = 0; k < size(); ++k) {
+      if (!usable[k]) continue;
+      sum += omega[k].norm();
+      ++count;
+    }
+    return count ? sum / count : 0.0;
+  }
 };
 
 }  // namespace aloft::host::diagnose

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "aloft/rotation.hpp"
+#include "diagnose/effect_descriptor.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -15,18 +15,6 @@ using State = Eigen::Matrix<double, 6, 1>;  // body rate, then the rotor's rate 
 // Longest integration step: RK4 at 5 ms keeps the relative error of a 15 rad/s motion
 // near 1e-6 over a second, far below any gyro's noise; 1 kHz data takes one step a sample.
 constexpr double kMaxStep = 0.005;
-// Rotor coupling rates above this are a rigid body for every flight we see; the cap keeps
-// the explicit steps stable (c/J h < 2).
-constexpr double kMaxRotorRate = 400.0;
-
-double logistic(double a) { return 1.0 / (1.0 + std::exp(-a)); }
-
-Vec3 inertia_moments_of(const NominalInertia& nominal, const Eigen::VectorXd& u01) {
-  const Vec3 n = nominal.principal_moments;
-  const Vec3 u(u01(0), u01(1), -u01(0) - u01(1));
-  Vec3 m = n.cwiseProduct(Vec3(std::exp(u(0)), std::exp(u(1)), std::exp(u(2))));
-  return m * (n.sum() / m.sum());
-}
 
 // The slice of theta that belongs to `effect` (empty when it is not in the model).
 Eigen::VectorXd slice_of(const EffectModel& model, const Eigen::VectorXd& theta, Effect effect) {
@@ -38,18 +26,18 @@ Eigen::VectorXd slice_of(const EffectModel& model, const Eigen::VectorXd& theta,
 // Everything a flight needs from (model, theta), computed once per prediction.
 class FlightDynamics {
  public:
-  FlightDynamics(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta) {
-    inertia_ = model.nominal.tensor;
+  FlightDynamics(const ModelTerms& terms, const Flight& flight)
+      : inertia_(terms.inertia),
+        drag_(terms.drag),
+        rotor_(terms.rotor),
+        rotor_rate_(terms.rotor_rate),
+        has_jump_(terms.has_jump),
+        time_factor_(terms.time_factor),
+        jump_(terms.jump),
+        bias_(terms.bias),
+        scale_(terms.scale) {
     const Mat3 sensor_to_body = flight.sensor_to_body.toRotationMatrix();
-    sensor_rotation_ = sensor_to_body;
-    const std::vector<Effect> effects = model_effects(model);
-    // Moments first: a rotation of the axes then turns the re-weighted tensor.
-    if (theta_offset(model, Effect::inertia_moments) >= 0) {
-      add(Effect::inertia_moments, model, slice_of(model, theta, Effect::inertia_moments), sensor_to_body);
-    }
-    for (Effect e : effects) {
-      if (e != Effect::inertia_moments) add(e, model, slice_of(model, theta, e), sensor_to_body);
-    }
+    sensor_rotation_ = terms.misaligned ? Mat3(sensor_to_body * terms.misalignment.toRotationMatrix()) : sensor_to_body;
     // The shell carries the nominal tensor less the rotor, so that with the rotor locked
     // the body is the nominal one.
     shell_ = inertia_ - rotor_ * Mat3::Identity();
@@ -57,46 +45,8 @@ class FlightDynamics {
     body_to_sensor_ = sensor_rotation_.transpose();
   }
 
-  void add(Effect effect, const EffectModel& model, const Eigen::VectorXd& theta, const Mat3& sensor_to_body) {
-    switch (effect) {
-      case Effect::inertia_moments: {
-        const Mat3 r = model.nominal.principal_axes.toRotationMatrix();
-        inertia_ = r * inertia_moments_of(model.nominal, theta).asDiagonal() * r.transpose();
-        break;
-      }
-      case Effect::inertia_axes: {
-        const Mat3 r = quat_exp<double>(theta.head<3>()).toRotationMatrix();
-        inertia_ = r * inertia_ * r.transpose();
-        break;
-      }
-      case Effect::aero_torque:
-        drag_ = theta(0) * model.nominal.tensor.trace() / 3.0;
-        break;
-      case Effect::internal_damping:
-        rotor_ = 0.9 * model.nominal.principal_moments(0) * logistic(theta(0));
-        rotor_rate_ = std::min(std::exp(theta(1)), kMaxRotorRate);
-        break;
-      case Effect::impulse:
-        jump_ = theta.head<3>();
-        break;
-      case Effect::gyro_bias:
-        bias_ = theta.head<3>();
-        break;
-      case Effect::gyro_scale:
-        scale_ += theta.head<3>();
-        break;
-      case Effect::sensor_misalignment:
-        sensor_rotation_ = sensor_to_body * quat_exp<double>(theta.head<3>()).toRotationMatrix();
-        break;
-      case Effect::clock_drift:
-        time_factor_ = 1.0 / (1.0 + theta(0));
-        break;
-      case Effect::none:
-        break;
-    }
-  }
-
   bool has_rotor() const { return rotor_ > 0.0; }
+  bool has_jump() const { return has_jump_; }
   double time_factor() const { return time_factor_; }
 
   State rate(const State& x) const {
@@ -168,58 +118,17 @@ class FlightDynamics {
   double drag_ = 0.0;
   double rotor_ = 0.0;
   double rotor_rate_ = 0.0;
+  bool has_jump_ = false;
   double time_factor_ = 1.0;
   Vec3 jump_ = Vec3::Zero();
   Vec3 bias_ = Vec3::Zero();
   Vec3 scale_ = Vec3::Ones();
 };
 
-// The smallest rotation that means the same as `r` to the nominal body. The torque-free
-// motion cannot see a turn of the principal frame about a symmetry axis, nor a half turn
-// about a principal axis (the Euler equations are unchanged by it), so a fitted rotation
-// is only known up to those: report the smallest member. `right`: the symmetry acts as
-// r * s (a rotated tensor); otherwise as s * r (a rotated sensor).
-Eigen::Quaterniond canonical_rotation(const Eigen::Quaterniond& r, const NominalInertia& nominal,
-                                      bool right) {
-  const Vec3 m = nominal.principal_moments;
-  const Mat3 axes = nominal.principal_axes.toRotationMatrix();
-  const double tol = 1e-3 * m.sum();
-  auto compose = [&](const Eigen::Quaterniond& s) { return right ? Eigen::Quaterniond(r * s) : Eigen::Quaterniond(s * r); };
-  auto smaller = [](const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
-    return std::abs(a.w()) > std::abs(b.w());
-  };
-  if (m(2) - m(0) < tol) return Eigen::Quaterniond::Identity();  // a sphere: any turn is none
-  int symmetric_axis = -1;
-  if (m(1) - m(0) < tol) symmetric_axis = 2;
-  if (m(2) - m(1) < tol) symmetric_axis = 0;
-  Eigen::Quaterniond best = r;
-  if (symmetric_axis >= 0) {
-    // Turns about the symmetry axis a: |w| of r*q(phi) or q(phi)*r is largest at
-    // phi = -2 atan2(v.a, w) (v, w of r); a half turn about a perpendicular axis too.
-    const Vec3 a = axes.col(symmetric_axis);
-    for (const Vec3& flip_axis : {Vec3::Zero().eval(), axes.col((symmetric_axis + 1) % 3).eval()}) {
-      const Eigen::Quaterniond flip = flip_axis.isZero() ? Eigen::Quaterniond::Identity()
-                                                         : Eigen::Quaterniond(0.0, flip_axis.x(), flip_axis.y(), flip_axis.z());
-      const Eigen::Quaterniond base = compose(flip);
-      const double phi = -2.0 * std::atan2(base.vec().dot(a), base.w());
-      const Eigen::Quaterniond turn(Eigen::AngleAxisd(phi, a));
-      const Eigen::Quaterniond candidate = right ? Eigen::Quaterniond(base * turn) : Eigen::Quaterniond(turn * base);
-      if (smaller(candidate, best)) best = candidate;
-    }
-  } else {
-    for (int i = 0; i < 3; ++i) {
-      const Vec3 p = axes.col(i);
-      const Eigen::Quaterniond candidate = compose(Eigen::Quaterniond(0.0, p.x(), p.y(), p.z()));
-      if (smaller(candidate, best)) best = candidate;
-    }
-  }
-  return best.w() < 0 ? Eigen::Quaterniond(-best.w(), -best.x(), -best.y(), -best.z()) : best;
-}
-
 }  // namespace
 
 std::size_t reference_index(Effect effect, const Flight& flight) {
-  if (effect == Effect::internal_damping || flight.size() == 0) return 0;
+  if (describe(effect).starts_at_release || flight.size() == 0) return 0;
   return flight.size() / 2;
 }
 
@@ -228,8 +137,10 @@ Eigen::Vector3d body_rate_of_reading(const Flight& flight, const Eigen::Vector3d
 }
 
 std::size_t compound_reference_index(const EffectModel& model, const Flight& flight) {
-  return theta_offset(model, Effect::internal_damping) >= 0 ? reference_index(Effect::internal_damping, flight)
-                                                            : reference_index(Effect::none, flight);
+  for (Effect e : model_effects(model)) {
+    if (describe(e).starts_at_release) return reference_index(e, flight);
+  }
+  return reference_index(Effect::none, flight);
 }
 
 std::vector<Effect> model_effects(const EffectModel& model) {
@@ -256,16 +167,25 @@ int model_parameter_count(const EffectModel& model) {
   return count;
 }
 
+ModelTerms model_terms(const EffectModel& model, const Eigen::VectorXd& theta) {
+  ModelTerms terms(model.nominal);
+  const std::vector<Effect> effects = model_effects(model);
+  for (bool first : {true, false}) {
+    for (Effect e : effects) {
+      const EffectDescriptor& d = describe(e);
+      if (d.sets_tensor == first) d.hooks.apply(slice_of(model, theta, e), model.nominal, terms);
+    }
+  }
+  return terms;
+}
+
 Eigen::Vector3d body_rate_for_reading(const EffectModel& model, const Flight& flight,
                                       const Eigen::VectorXd& theta, const Eigen::Vector3d& reading) {
   // The sensor model backwards: take the bias off, undo the scale, then the rotation.
-  Vec3 w = reading;
-  const Eigen::VectorXd bias = slice_of(model, theta, Effect::gyro_bias);
-  if (bias.size() == 3) w -= bias.head<3>();
-  const Eigen::VectorXd scale = slice_of(model, theta, Effect::gyro_scale);
-  if (scale.size() == 3) w = w.cwiseQuotient(Vec3::Ones() + scale.head<3>());
-  const Eigen::VectorXd misalignment = slice_of(model, theta, Effect::sensor_misalignment);
-  if (misalignment.size() == 3) w = quat_exp<double>(misalignment.head<3>()) * w;
+  const ModelTerms terms = model_terms(model, theta);
+  Vec3 w = reading - terms.bias;
+  w = w.cwiseQuotient(terms.scale);
+  if (terms.misaligned) w = terms.misalignment * w;
   return flight.sensor_to_body * w;
 }
 
@@ -275,9 +195,9 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   const std::size_t n = flight.size();
   readings.resize(n);
   if (n == 0) return;
-  FlightDynamics dynamics(model, flight, theta);
+  FlightDynamics dynamics(model_terms(model, theta), flight);
   dynamics.set_impulse_scale(model.nominal.tensor);
-  const bool has_jump = theta_offset(model, Effect::impulse) >= 0;
+  const bool has_jump = dynamics.has_jump();
   const double t_ref = flight.time_s[ref];
   // True (simulation) time of a recorded time stamp; differs only under clock drift.
   auto true_time = [&](double t) { return t_ref + (t - t_ref) * dynamics.time_factor(); };
@@ -318,89 +238,14 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   }
 }
 
-std::array<int, 3> nearest_body_axes(const Eigen::Matrix3d& axes) {
-  std::array<int, 3> body{-1, -1, -1};
-  std::array<bool, 3> taken{false, false, false};
-  for (int round = 0; round < 3; ++round) {
-    double best = -1.0;
-    int bi = 0, bj = 0;
-    for (int i = 0; i < 3; ++i) {
-      if (body[static_cast<std::size_t>(i)] >= 0) continue;
-      for (int j = 0; j < 3; ++j) {
-        if (taken[static_cast<std::size_t>(j)]) continue;
-        if (std::abs(axes(j, i)) > best) {
-          best = std::abs(axes(j, i));
-          bi = i;
-          bj = j;
-        }
-      }
-    }
-    body[static_cast<std::size_t>(bi)] = bj;
-    taken[static_cast<std::size_t>(bj)] = true;
-  }
-  return body;
-}
-
-namespace {
-
-// Fills the user-facing inertia fields from principal moments along `axes` (body axes).
-void describe_inertia(EffectParameters& p, const Vec3& moments, const Mat3& axes, const NominalInertia& nominal) {
-  p.tensor_kg_m2 = axes * moments.asDiagonal() * axes.transpose();
-  const std::array<int, 3> body = nearest_body_axes(nominal.principal_axes.toRotationMatrix());
-  for (int i = 0; i < 3; ++i) {
-    p.principal_body_order_kg_m2(body[static_cast<std::size_t>(i)]) = moments(i);
-    p.nominal_body_order_kg_m2(body[static_cast<std::size_t>(i)]) = nominal.principal_moments(i);
-  }
-}
-
-}  // namespace
-
 EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta) {
   return effect_parameters(model, theta, model.effect);
 }
 
 EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& all_theta, Effect effect) {
-  EffectParameters p;
-  constexpr double kDeg = 180.0 / 3.14159265358979323846;
   const Eigen::VectorXd theta = slice_of(model, all_theta, effect);
-  if (theta.size() != effect_parameter_count(effect)) return p;
-  switch (effect) {
-    case Effect::inertia_moments:
-      p.principal_kg_m2 = inertia_moments_of(model.nominal, theta);
-      describe_inertia(p, p.principal_kg_m2, model.nominal.principal_axes.toRotationMatrix(), model.nominal);
-      break;
-    case Effect::inertia_axes:
-    case Effect::sensor_misalignment:
-      p.rotation = canonical_rotation(quat_exp<double>(theta.head<3>()), model.nominal,
-                                      effect == Effect::inertia_axes);
-      p.angle_deg = angle_between<double>(Eigen::Quaterniond::Identity(), p.rotation) * kDeg;
-      if (effect == Effect::inertia_axes) {
-        describe_inertia(p, model.nominal.principal_moments,
-                         p.rotation.toRotationMatrix() * model.nominal.principal_axes.toRotationMatrix(), model.nominal);
-      }
-      break;
-    case Effect::aero_torque:
-      p.k_N_m_s2 = theta(0) * model.nominal.tensor.trace() / 3.0;
-      break;
-    case Effect::internal_damping:
-      p.rotor_J_kg_m2 = 0.9 * model.nominal.principal_moments(0) * logistic(theta(0));
-      p.c_N_m_s = p.rotor_J_kg_m2 * std::min(std::exp(theta(1)), kMaxRotorRate);
-      break;
-    case Effect::impulse:
-      p.vector = model.nominal.tensor * theta.head<3>();
-      p.time_s = model.impulse_time_s;
-      break;
-    case Effect::gyro_bias:
-    case Effect::gyro_scale:
-      p.vector = theta.head<3>();
-      break;
-    case Effect::clock_drift:
-      p.rate_error = theta(0);
-      break;
-    case Effect::none:
-      break;
-  }
-  return p;
+  if (theta.size() != effect_parameter_count(effect)) return EffectParameters();
+  return describe(effect).hooks.parameters(theta, model.nominal, model.impulse_time_s);
 }
 
 }  // namespace aloft::host::diagnose

@@ -15,7 +15,10 @@ namespace aloft::host::diagnose {
 // "Several mm": an order of magnitude above the 0.27-0.29 mm of the practice trials.
 constexpr double kLargestMarkerResidual_m = 0.003;
 
-// The reason to refuse, or nothing when the markers fit.
-std::optional<std::string> marker_misfit(const PoseFitReport& report);
+// The reason to refuse, or nothing when the markers fit (report: fit_poses of trial and
+// body). The reason names the markers without which the rest fit (misplaced or
+// mislabelled ones), or says that none stands out (a wrong scale or units).
+std::optional<std::string> marker_misfit(const MarkerTrial& trial, const Body& body,
+                                         const PoseFitReport& report);
 
 }  // namespace aloft::host::diagnose

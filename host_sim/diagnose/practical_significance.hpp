@@ -6,6 +6,7 @@
 // Too small to matter, for the effect an addition brings (its own parameters):
 //   the held-out gap it starts from (RMS relative error times the mean |ω|) is below
 //   twice the data's resolution (noise_floor.hpp): nothing the sensor resolves is left;
+//   otherwise the effect's own bar (its descriptor's `too_small`, effects/<name>.cpp):
 //   inertia_moments      every moment within 0.5 % of nominal;
 //   inertia_axes, sensor_misalignment   turned by less than 0.25°;
 //   aero_torque          |ω| would fall by less than 0.5 % over the data;

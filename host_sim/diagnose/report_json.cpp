@@ -4,16 +4,14 @@
 #include <cstdio>
 #include <sstream>
 
+#include "diagnose/effect_descriptor.hpp"
+#include "diagnose/json_values.hpp"
+#include "diagnose/printf_text.hpp"
+
 namespace aloft::host::diagnose {
 namespace {
 
 using nlohmann::json;
-
-json vec(const Eigen::Vector3d& v) { return json::array({v(0), v(1), v(2)}); }
-json matrix(const Eigen::Matrix3d& m) {
-  return json::array({vec(m.row(0).transpose()), vec(m.row(1).transpose()), vec(m.row(2).transpose())});
-}
-json quat(const Eigen::Quaterniond& q) { return json::array({q.w(), q.x(), q.y(), q.z()}); }
 
 json names(const std::vector<Effect>& effects) {
   json out = json::array();
@@ -109,8 +107,8 @@ json analysis_json(const Analysis& a) {
   json where;
   where["onset_s"] = a.where.onset_s ? json(*a.where.onset_s) : json(nullptr);
   where["dominant_axis"] = a.where.dominant_axis;
-  where["rms_gap_body_rad_s"] = vec(a.where.rms_gap_body_rad_s);
-  where["noise_floor_rad_s"] = vec(a.where.noise_floor);
+  where["rms_gap_body_rad_s"] = json_vec(a.where.rms_gap_body_rad_s);
+  where["noise_floor_rad_s"] = json_vec(a.where.noise_floor);
   where["gap_over_noise"] = a.where.gap_over_noise;
   json slices = json::array();
   for (const TimeSlice& s : a.where.slices) {
@@ -171,53 +169,16 @@ json analysis_json(const Analysis& a) {
   return out;
 }
 
-std::string fmt(const char* format, double a, double b = 0, double c = 0, double d = 0) {
-  char buffer[256];
-  std::snprintf(buffer, sizeof buffer, format, a, b, c, d);
-  return buffer;
-}
-
-// "moments about body x, y, z: ... kg m^2 (x +12.0 %, y -3.1 %, z -4.9 %); most changed: x".
-std::string moments_text(const EffectParameters& p) {
-  const Eigen::Vector3d m = p.principal_body_order_kg_m2, n = p.nominal_body_order_kg_m2;
-  Eigen::Vector3d change = Eigen::Vector3d::Zero();
-  for (int i = 0; i < 3; ++i) change(i) = n(i) > 0 ? 100.0 * (m(i) / n(i) - 1.0) : 0.0;
-  Eigen::Index most = 0;
-  change.cwiseAbs().maxCoeff(&most);
-  const char* axis[] = {"x", "y", "z"};
-  return fmt("principal moments about body x, y, z %.4g, %.4g, %.4g kg m^2", m(0), m(1), m(2)) +
-         fmt(" (x %+.1f %%, y %+.1f %%, z %+.1f %% from nominal); most changed: ", change(0), change(1), change(2)) +
-         axis[most] + fmt(" (%+.1f %%)", change(most));
-}
-
-std::string params_text(Effect effect, const EffectParameters& p) {
-  switch (effect) {
-    case Effect::inertia_moments: return moments_text(p);
-    case Effect::inertia_axes:
-    case Effect::sensor_misalignment: return fmt("rotated by %.2f deg", p.angle_deg);
-    case Effect::aero_torque: return fmt("k = %.3g N m s^2", p.k_N_m_s2);
-    case Effect::internal_damping:
-      return fmt("rotor J = %.3g kg m^2, c = %.3g N m s", p.rotor_J_kg_m2, p.c_N_m_s);
-    case Effect::impulse:
-      return fmt("at %.3f s, |dL| %.3g N m s", p.time_s, p.vector.norm());
-    case Effect::gyro_bias:
-      return fmt("bias %.4f, %.4f, %.4f rad/s", p.vector(0), p.vector(1), p.vector(2));
-    case Effect::gyro_scale:
-      return fmt("scale errors %.4f, %.4f, %.4f", p.vector(0), p.vector(1), p.vector(2));
-    case Effect::clock_drift: return fmt("rate error %.4f", p.rate_error);
-    case Effect::none: return "";
-  }
-  return "";
-}
+std::string params_text(Effect effect, const EffectParameters& p) { return describe(effect).hooks.text(p); }
 
 std::string analysis_summary(const Analysis& a) {
   std::ostringstream out;
   if (a.tensor) out << "  " << tensor_summary(*a.tensor);
-  out << fmt("  baseline (nominal model): RMS DA %.3f deg, RMS relative error %.4f", a.baseline.rms_da_deg,
+  out << printf_text("  baseline (nominal model): RMS DA %.3f deg, RMS relative error %.4f", a.baseline.rms_da_deg,
              a.baseline.rms_rel_err)
-      << fmt(", %.2f x the noise floor", a.where.gap_over_noise) << "\n";
+      << printf_text(", %.2f x the noise floor", a.where.gap_over_noise) << "\n";
   out << "  where: gap mostly along body " << a.where.dominant_axis;
-  if (a.where.onset_s) out << fmt(", leaves the nominal model at %.3f s", *a.where.onset_s);
+  if (a.where.onset_s) out << printf_text(", leaves the nominal model at %.3f s", *a.where.onset_s);
   if (a.where.invariants) {
     out << "; energy " << a.where.invariants->energy.behaviour << ", |L| "
         << a.where.invariants->momentum.behaviour;
@@ -234,14 +195,14 @@ std::string analysis_summary(const Analysis& a) {
     out << ": " << params_text(v.effects.front().effect, v.effects.front().params) << "\n";
     for (std::size_t i = 1; i < v.effects.size(); ++i) {
       out << "  and " << effect_name(v.effects[i].effect) << ": " << params_text(v.effects[i].effect, v.effects[i].params)
-          << fmt(" (the model without it: held-out error %.0f %% larger)", 100.0 * (1.0 / std::max(1e-9, 1.0 - v.effects[i].shrink) - 1.0))
+          << printf_text(" (the model without it: held-out error %.0f %% larger)", 100.0 * (1.0 / std::max(1e-9, 1.0 - v.effects[i].shrink) - 1.0))
           << "\n";
     }
-    out << fmt("  held out: RMS DA %.3f -> %.3f deg, relative error %.4f -> %.4f", v.heldout_rms_da_before_deg,
+    out << printf_text("  held out: RMS DA %.3f -> %.3f deg, relative error %.4f -> %.4f", v.heldout_rms_da_before_deg,
                v.heldout_rms_da_after_deg, v.heldout_rms_rel_err_before, v.heldout_rms_rel_err_after)
-        << fmt(" (shrink %.0f %%)", 100.0 * (v.heldout_rms_rel_err_before > 0 ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before : 0.0)) << "\n";
+        << printf_text(" (shrink %.0f %%)", 100.0 * (v.heldout_rms_rel_err_before > 0 ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before : 0.0)) << "\n";
   } else {
-    out << fmt(": the held-out gap (RMS DA %.3f deg) is what the noise explains", v.heldout_rms_da_before_deg) << "\n";
+    out << printf_text(": the held-out gap (RMS DA %.3f deg) is what the noise explains", v.heldout_rms_da_before_deg) << "\n";
   }
   for (const std::string& s : v.could_not_judge) out << "  could not judge: " << s << "\n";
   for (const std::string& s : a.notes) out << "  note: " << s << "\n";
@@ -250,32 +211,7 @@ std::string analysis_summary(const Analysis& a) {
 
 }  // namespace
 
-json params_json(Effect effect, const EffectParameters& p) {
-  switch (effect) {
-    case Effect::none: return json::object();
-    case Effect::inertia_moments:
-      return {{"principal_kg_m2", vec(p.principal_body_order_kg_m2)},
-              {"nominal_principal_kg_m2", vec(p.nominal_body_order_kg_m2)},
-              {"principal_axes_order", "body file axes x, y, z (each principal axis by the body axis it lies nearest)"},
-              {"principal_ascending_kg_m2", vec(p.principal_kg_m2)},
-              {"tensor_kg_m2", matrix(p.tensor_kg_m2)}};
-    case Effect::inertia_axes:
-      return {{"angle_deg", p.angle_deg}, {"rotation", quat(p.rotation)}, {"tensor_kg_m2", matrix(p.tensor_kg_m2)}};
-    case Effect::sensor_misalignment:
-      return {{"angle_deg", p.angle_deg}, {"rotation", quat(p.rotation)}};
-    case Effect::aero_torque: return {{"k_N_m_s2", p.k_N_m_s2}};
-    case Effect::internal_damping:
-      return {{"model", "spherical_rotor_in_viscous_cavity"},
-              {"rotor_J_kg_m2", p.rotor_J_kg_m2},
-              {"c_N_m_s", p.c_N_m_s}};
-    case Effect::impulse:
-      return {{"time_s", p.time_s}, {"angular_impulse_N_m_s", vec(p.vector)}};
-    case Effect::gyro_bias: return {{"bias_rad_s", vec(p.vector)}};
-    case Effect::gyro_scale: return {{"scale_error", vec(p.vector)}};
-    case Effect::clock_drift: return {{"rate_error", p.rate_error}};
-  }
-  return json::object();
-}
+json params_json(Effect effect, const EffectParameters& p) { return describe(effect).hooks.json(p); }
 
 json flight_report(const FlightDiagnosis& d) {
   json out = analysis_json(d.analysis);
@@ -284,7 +220,7 @@ json flight_report(const FlightDiagnosis& d) {
   out["end_s"] = d.end_s;
   out["samples"] = d.samples;
   out["rate_hz"] = d.rate_hz;
-  out["noise_floor"] = {{"sigma_rad_s", vec(d.noise.sigma)},
+  out["noise_floor"] = {{"sigma_rad_s", json_vec(d.noise.sigma)},
                         {"method", d.noise.method},
                         {"resolution_rad_s", d.noise.resolution},
                         {"reliable", d.noise.reliable}};
@@ -336,8 +272,8 @@ json session_report(const SessionDiagnosis& s) {
 std::string flight_summary(const FlightDiagnosis& d) {
   std::ostringstream out;
   out << "flight " << d.name
-      << fmt(": %.3f to %.3f s, %.0f samples at %.0f Hz", d.start_s, d.end_s, static_cast<double>(d.samples), d.rate_hz)
-      << fmt(", noise floor %.4f rad/s", d.noise.sigma.mean());
+      << printf_text(": %.3f to %.3f s, %.0f samples at %.0f Hz", d.start_s, d.end_s, static_cast<double>(d.samples), d.rate_hz)
+      << printf_text(", noise floor %.4f rad/s", d.noise.sigma.mean());
   if (d.unusable_samples) out << ", " << d.unusable_samples << " saturated samples left out";
   if (!d.gaps.empty()) out << ", " << d.gaps.size() << " gaps in its time stamps";
   out << "\n" << analysis_summary(d.analysis);
@@ -351,24 +287,24 @@ std::string session_summary(const SessionDiagnosis& s) {
                           : " flights (pooled, held out: leave one flight out)\n")
       << analysis_summary(s.pooled);
   if (s.flip_period) {
-    out << fmt("  flip period from the first sample, %.0f flights: mean error %.1f %% nominal", s.flip_period->flights,
+    out << printf_text("  flip period from the first sample, %.0f flights: mean error %.1f %% nominal", s.flip_period->flights,
                100.0 * s.flip_period->mean_error_nominal);
     std::string model;
     for (const VerdictEffect& e : s.pooled.verdict.effects) model += (model.empty() ? "" : " + ") + std::string(effect_name(e.effect));
     if (s.flip_period->diagnosed_flights > 0) {
-      out << fmt(", %.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed) << model << " (fitted without each flight)";
+      out << printf_text(", %.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed) << model << " (fitted without each flight)";
     }
     out << "\n";
     if (s.flip_period->fitted_flights > 0) {
-      out << fmt("  flip period from each flight's fitted initial state, %.0f flights: mean error %.1f %% nominal, ",
-                 s.flip_period->fitted_flights, 100.0 * s.flip_period->mean_error_nominal_fitted)
-          << fmt("%.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed_fitted) << model << "\n";
+      out << printf_text("  flip period from each flight's fitted initial state, %.0f flights: mean error %.1f %% nominal, ",
+                         s.flip_period->fitted_flights, 100.0 * s.flip_period->mean_error_nominal_fitted)
+          << printf_text("%.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed_fitted) << model << "\n";
     }
   }
   for (const FlightDiagnosis& d : s.flights) {
     const Verdict& v = d.analysis.verdict;
     out << "  flight " << d.name << ": " << effect_name(v.effect)
-        << fmt(" (held-out RMS DA %.2f -> %.2f deg)", v.heldout_rms_da_before_deg, v.heldout_rms_da_after_deg)
+        << printf_text(" (held-out RMS DA %.2f -> %.2f deg)", v.heldout_rms_da_before_deg, v.heldout_rms_da_after_deg)
         << (v.confident ? "" : " [not confident]") << "\n";
   }
   return out.str();

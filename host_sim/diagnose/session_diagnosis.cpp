@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "common/parallel_for.hpp"
+#include "diagnose/baseline_gap.hpp"
 #include "diagnose/candidate_ranking.hpp"
 #include "diagnose/diagnosis.hpp"
 #include "diagnose/held_out.hpp"
@@ -297,35 +298,18 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
   const EffectFit none_all = per_flight_nominal_fit(pool);
   // Baseline and where, pooled over every flight's nominal fit.
   {
-    GapSums sums;
-    Vec3 body_sq = Vec3::Zero();
-    int body_count = 0;
+    BaselineGap baseline;
     std::vector<Vec3> readings;
     for (std::size_t f = 0; f < count; ++f) {
-      const Flight& flight = *pool.flights[f];
-      predict(none_all, nominal, f, flight, readings);
-      const Eigen::Matrix3d to_body = flight.sensor_to_body.toRotationMatrix();
-      for (std::size_t k = 0; k < flight.size(); ++k) {
-        if (!flight.usable[k]) continue;
-        sums.add(readings[k], flight.omega[k], pool.inverse_sigma[f]);
-        body_sq += (to_body * (readings[k] - flight.omega[k])).cwiseAbs2();
-        ++body_count;
-      }
+      predict(none_all, nominal, f, *pool.flights[f], readings);
+      baseline.add(*pool.flights[f], readings, pool.inverse_sigma[f]);
     }
-    analysis.baseline.rms_da_deg = sums.rms_da_deg();
-    analysis.baseline.rms_rel_err = sums.rms_rel_err();
-    analysis.where.rms_gap_body_rad_s = (body_sq / std::max(body_count, 1)).cwiseSqrt();
-    Eigen::Index axis = 0;
-    analysis.where.rms_gap_body_rad_s.maxCoeff(&axis);
-    analysis.where.dominant_axis = axis == 0 ? "x" : (axis == 1 ? "y" : "z");
-    analysis.where.gap_over_noise = sums.residuals ? sums.chi_square / sums.residuals : 0.0;
+    baseline.describe(analysis);
   }
 
   double speed_sum = 0.0, duration_sum = 0.0;
   for (const Flight* f : pool.flights) {
-    double s = 0;
-    for (const auto& w : f->omega) s += w.norm();
-    speed_sum += s / std::max<std::size_t>(f->size(), 1);
+    speed_sum += f->mean_speed();
     duration_sum += f->end_s() - f->start_s();
   }
   // The pooled fit informs shared parameters with every flight's data.

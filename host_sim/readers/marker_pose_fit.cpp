@@ -42,7 +42,7 @@ std::string join(const std::vector<std::string>& names) {
 bool fit_rigid_transform(const std::vector<Eigen::Vector3d>& body_points,
                          const std::vector<Eigen::Vector3d>& world_points,
                          Eigen::Quaterniond& orientation, Eigen::Vector3d& position,
-                         double& rms_residual_m) {
+                         double& rms_residual_m, std::vector<double>* point_residuals_m) {
   const auto n = static_cast<Eigen::Index>(body_points.size());
   if (n < 3 || world_points.size() != body_points.size()) return false;
   Eigen::Matrix3Xd body(3, n);
@@ -63,6 +63,10 @@ bool fit_rigid_transform(const std::vector<Eigen::Vector3d>& body_points,
   orientation = Eigen::Quaterniond(rotation).normalized();
   position = translation;
   rms_residual_m = std::sqrt(residual.squaredNorm() / static_cast<double>(n));
+  if (point_residuals_m) {
+    point_residuals_m->resize(static_cast<std::size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i) (*point_residuals_m)[static_cast<std::size_t>(i)] = residual.col(i).norm();
+  }
   return true;
 }
 
@@ -104,15 +108,21 @@ PoseTrial fit_poses(const MarkerTrial& markers, const Body& body, PoseFitReport*
   poses.format = markers.format;
   std::vector<Eigen::Vector3d> seen_body;
   std::vector<Eigen::Vector3d> seen_world;
+  std::vector<std::size_t> seen_marker;
+  std::vector<double> point_residuals;
+  std::vector<double> marker_square_sum(file_index.size(), 0.0);
+  std::vector<int> marker_frames(file_index.size(), 0);
   double residual_sum = 0.0;
   for (std::size_t f = 0; f < frames; ++f) {
     seen_body.clear();
     seen_world.clear();
+    seen_marker.clear();
     for (std::size_t m = 0; m < file_index.size(); ++m) {
       const Eigen::Vector3d& p = markers.positions_m[f][static_cast<std::size_t>(file_index[m])];
       if (p.allFinite()) {
         seen_body.push_back(body_points[m]);
         seen_world.push_back(p);
+        seen_marker.push_back(m);
       }
     }
     out.visible_markers[f] = static_cast<int>(seen_body.size());
@@ -120,7 +130,7 @@ PoseTrial fit_poses(const MarkerTrial& markers, const Body& body, PoseFitReport*
     Eigen::Vector3d position;
     double rms = 0.0;
     const bool posed = seen_body.size() >= 3 &&
-                       fit_rigid_transform(seen_body, seen_world, q, position, rms);
+                       fit_rigid_transform(seen_body, seen_world, q, position, rms, &point_residuals);
     if (!posed) {
       if (!out.gaps.empty() && out.gaps.back().last_frame + 1 == f) {
         out.gaps.back().last_frame = f;
@@ -136,6 +146,10 @@ PoseTrial fit_poses(const MarkerTrial& markers, const Body& body, PoseFitReport*
     poses.time_s.push_back(markers.time_s[f]);
     poses.orientation.push_back(q);
     poses.position_m.push_back(position);
+    for (std::size_t i = 0; i < seen_marker.size(); ++i) {
+      marker_square_sum[seen_marker[i]] += point_residuals[i] * point_residuals[i];
+      ++marker_frames[seen_marker[i]];
+    }
     out.posed_frames.push_back(f);
     out.rms_residual_m[f] = rms;
     out.max_rms_residual_m = std::max(out.max_rms_residual_m, rms);
@@ -147,6 +161,12 @@ PoseTrial fit_poses(const MarkerTrial& markers, const Body& body, PoseFitReport*
                 body.name + "'; no flight to analyse");
   }
   out.mean_rms_residual_m = residual_sum / static_cast<double>(poses.time_s.size());
+  out.marker_names = body_names;
+  for (std::size_t m = 0; m < file_index.size(); ++m) {
+    out.marker_rms_residual_m.push_back(
+        marker_frames[m] > 0 ? std::sqrt(marker_square_sum[m] / marker_frames[m])
+                             : std::numeric_limits<double>::quiet_NaN());
+  }
   return poses;
 }
 

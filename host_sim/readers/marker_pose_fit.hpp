@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "common/body_file.hpp"
@@ -33,6 +34,11 @@ struct PoseFitReport {
   std::vector<FrameRange> gaps;           // runs of frames not posed, in order
   double max_rms_residual_m = 0.0;
   double mean_rms_residual_m = 0.0;
+  // Per marker of the body (in the order of Body::markers_m): its name and its RMS distance
+  // from where the fitted pose puts it, over the posed frames that show it; so a
+  // misplaced or mislabelled marker can be named.
+  std::vector<std::string> marker_names;
+  std::vector<double> marker_rms_residual_m;
 };
 
 // Throws aloft::host::Error (one line, naming the marker file) when the body has fewer
@@ -43,10 +49,11 @@ PoseTrial fit_poses(const MarkerTrial& markers, const Body& body, PoseFitReport*
 
 // One frame: the pose (orientation body -> world, position of the body origin) that best
 // carries body_points onto world_points (same order, at least three). Returns false, and
-// leaves the outputs untouched, when the body points are collinear.
+// leaves the outputs untouched, when the body points are collinear. point_residuals_m,
+// when given, receives each point's distance from where the pose puts it.
 bool fit_rigid_transform(const std::vector<Eigen::Vector3d>& body_points,
                          const std::vector<Eigen::Vector3d>& world_points,
                          Eigen::Quaterniond& orientation, Eigen::Vector3d& position,
-                         double& rms_residual_m);
+                         double& rms_residual_m, std::vector<double>* point_residuals_m = nullptr);
 
 }  // namespace aloft::host

@@ -15,35 +15,18 @@
 #include <string>
 #include <vector>
 
+#include "run_aloft.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-  int exit_code;
-  std::string out, err;
-};
+using aloft::test::program_scratch;
+using aloft::test::read_file;
+using aloft::test::run_aloft;
+using Run = aloft::test::RunResult;
 
-fs::path scratch() {
-  const fs::path dir = fs::temp_directory_path() / ("aloft_cli_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Run run_aloft(const std::string& args) {
-  const fs::path out = scratch() / "stdout.txt", err = scratch() / "stderr.txt";
-  const std::string command =
-      std::string(ALOFT_PROGRAM) + " " + args + " > " + out.string() + " 2> " + err.string();
-  const int status = std::system(command.c_str());
-  return {WEXITSTATUS(status), read_text(out), read_text(err)};
-}
+fs::path scratch() { return program_scratch().dir(); }
 
 const std::string body = std::string(ALOFT_EXAMPLES) + "/gf_cylinder.json";
 const std::string imu_missing = (scratch() / "no_such_log.csv").string();
@@ -112,7 +95,7 @@ TEST_CASE("simulate writes each number at the precision it carries", "[cli]") {
   const fs::path csv = scratch() / "traj.csv";
   const Run r = run_aloft(simulate_base + " --duration 0.1 --rate 200 --out " + csv.string());
   REQUIRE(r.exit_code == 0);
-  std::istringstream rows(read_text(csv));
+  std::istringstream rows(read_file(csv));
   std::string row;
   std::vector<std::string> times;
   std::getline(rows, row);  // header
@@ -121,7 +104,7 @@ TEST_CASE("simulate writes each number at the precision it carries", "[cli]") {
   CHECK(times[1] == "0.005");
   CHECK(times[3] == "0.015");
   CHECK(times[20] == "0.1");
-  std::istringstream again(read_text(csv));
+  std::istringstream again(read_file(csv));
   std::getline(again, row);
   std::getline(again, row);
   CHECK(row.rfind("0,1,0,0,0,1,2,3", 0) == 0);  // the initial state as given

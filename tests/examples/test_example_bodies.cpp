@@ -18,6 +18,7 @@
 #include "common/body_file.hpp"
 #include "readers/marker_pose_fit.hpp"
 #include "study/paper_cylinder.hpp"
+#include "run_aloft.hpp"
 
 namespace fs = std::filesystem;
 using aloft::host::Body;
@@ -26,11 +27,7 @@ namespace {
 
 const std::string examples = ALOFT_EXAMPLES;
 
-fs::path scratch() {
-  const fs::path dir = fs::temp_directory_path() / ("aloft_examples_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch() { return aloft::test::program_scratch().dir(); }
 
 double angle_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
   return a.angularDistance(b);

@@ -13,36 +13,18 @@
 #include <string>
 #include <vector>
 
+#include "run_aloft.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-  int exit_code;
-  std::string stderr_text;
-};
+using aloft::test::run_aloft;
+using Run = aloft::test::RunResult;
 
-fs::path scratch_dir() {
-  const fs::path dir = fs::temp_directory_path() / ("aloft_simulate_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch_dir() { return aloft::test::program_scratch().dir(); }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_text(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
-
-Run run_aloft(const std::string& args) {
-  const fs::path err = scratch_dir() / "stderr.txt";
-  const std::string command = std::string(ALOFT_PROGRAM) + " " + args + " 2> " + err.string();
-  const int status = std::system(command.c_str());
-  return {WEXITSTATUS(status), read_text(err)};
-}
+void write_text(const fs::path& p, const std::string& text) { aloft::test::write_file(p, text); }
 
 std::vector<std::vector<double>> read_csv_rows(const fs::path& p, std::string* header) {
   std::ifstream in(p);
@@ -102,8 +84,8 @@ TEST_CASE("measured moments slightly off the triangle inequality run with a warn
                             " --w0 0.1,10,0.1 --duration 0.1 --rate 100 --out " +
                             (dir / "out.csv").string());
   CHECK(run.exit_code == 0);
-  CHECK(run.stderr_text.find("warning") != std::string::npos);
-  CHECK(run.stderr_text.find("1.2 %") != std::string::npos);
+  CHECK(run.err.find("warning") != std::string::npos);
+  CHECK(run.err.find("1.2 %") != std::string::npos);
   CHECK(fs::exists(dir / "out.csv"));
 }
 
@@ -137,16 +119,16 @@ TEST_CASE("simulate refuses bad input with one line and writes nothing", "[simul
     std::string args = "simulate --body " + (dir / "body.json").string() + " " + c.args;
     if (c.args.find("--duration") == std::string::npos) args += " --duration 0.1 --rate 100";
     const Run run = run_aloft(args + " --out " + (dir / "out.csv").string());
-    INFO(c.body << " " << c.args << " -> " << run.stderr_text);
+    INFO(c.body << " " << c.args << " -> " << run.err);
     CHECK(run.exit_code != 0);
-    CHECK(run.stderr_text.find(c.expected) != std::string::npos);
-    CHECK(std::count(run.stderr_text.begin(), run.stderr_text.end(), '\n') == 1);
+    CHECK(run.err.find(c.expected) != std::string::npos);
+    CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
     CHECK_FALSE(fs::exists(dir / "out.csv"));
   }
   const Run missing = run_aloft("simulate --body " + (dir / "nope.json").string() +
                                 " --w0 1,2,3 --duration 1 --rate 10 --out " + (dir / "out.csv").string());
   CHECK(missing.exit_code != 0);
-  CHECK(missing.stderr_text.find("cannot open") != std::string::npos);
+  CHECK(missing.err.find("cannot open") != std::string::npos);
   const Run negative = run_aloft("simulate --body " + (dir / "body.json").string() +
                                  " --w0 1,2,3 --duration 1 --rate -10 --out " + (dir / "out.csv").string());
   CHECK(negative.exit_code != 0);

@@ -7,12 +7,12 @@
 #include <cmath>
 #include <filesystem>
 
-#include "study_test_support.hpp"
+#include "run_aloft.hpp"
 
 using aloft::test::count_lines;
 using aloft::test::read_file;
 using aloft::test::run_aloft;
-using aloft::test::StudyScratch;
+using aloft::test::ScratchDir;
 using nlohmann::json;
 
 namespace {
@@ -29,7 +29,7 @@ void check_summary(const json& s) {
 }  // namespace
 
 TEST_CASE("the default study writes the files of SPEC §5, and the same seed gives the same numbers") {
-  StudyScratch scratch;
+  ScratchDir scratch;
   const auto r = run_aloft(scratch, "study --mc-samples 120 --seed 5 --threads 2 --out '" +
                                         scratch.path("a") + "'");
   INFO(r.err);
@@ -120,7 +120,7 @@ TEST_CASE("the default study writes the files of SPEC §5, and the same seed giv
 }
 
 TEST_CASE("--frame world reports the world frame alone, with the same numbers as both") {
-  StudyScratch scratch;
+  ScratchDir scratch;
   const std::string common = "study --mc-samples 30 --seed 3 --threads 2 --out '";
   const auto both = run_aloft(scratch, common + scratch.path("both") + "'");
   const auto world = run_aloft(scratch, common + scratch.path("world") + "' --frame world");
@@ -139,7 +139,7 @@ TEST_CASE("--frame world reports the world frame alone, with the same numbers as
 }
 
 TEST_CASE("the throw and the axes sampler are options, recorded in results.json") {
-  StudyScratch scratch;
+  ScratchDir scratch;
   const auto r = run_aloft(scratch,
                            "study --mc-samples 20 --threads 2 --spin-rate 1 --spin-tilt 80 "
                            "--spin-azimuth 10 --duration 0.5 --marker-noise 0.05 "
@@ -167,7 +167,7 @@ TEST_CASE("the throw and the axes sampler are options, recorded in results.json"
 }
 
 TEST_CASE("the paper-body throw gives GF and CP rows near the paper's, as calibrated") {
-  StudyScratch scratch;
+  ScratchDir scratch;
   const auto r = run_aloft(scratch, "study --throw paper-body --frame body --mc-samples 10 "
                                     "--threads 2 --out '" + scratch.path("o") + "'");
   INFO(r.err);
@@ -186,7 +186,7 @@ TEST_CASE("the paper-body throw gives GF and CP rows near the paper's, as calibr
 }
 
 TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing written") {
-  StudyScratch scratch;
+  ScratchDir scratch;
   const std::string out = scratch.path("out");
   std::filesystem::create_directories(out);
   scratch.write("out/results.json", "previous run\n");
@@ -289,7 +289,7 @@ TEST_CASE("the study runs on every racquet flight of both sessions") {
   } sessions[] = {{"2025-01-16_17-10-11", 6}, {"2025-01-23_18-29-01", 5}};
   for (const auto& s : sessions) {
     INFO(s.session);
-    StudyScratch scratch;
+    ScratchDir scratch;
     const std::string dir = racquet + "/" + s.session;
     const auto r = run_aloft(scratch, "study --body '" + body + "' --imu '" + dir +
                                           "/gyro.csv' --segments '" + dir +

@@ -14,7 +14,7 @@ namespace aloft::test {
 class ScratchDir {
  public:
   ScratchDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "aloft-readers-XXXXXX").string();
+    std::string pattern = (std::filesystem::temp_directory_path() / "aloft-test-XXXXXX").string();
     if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
     dir_ = pattern;
   }
@@ -33,6 +33,7 @@ class ScratchDir {
     return path;
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  const std::filesystem::path& dir() const { return dir_; }
 
  private:
   std::filesystem::path dir_;
