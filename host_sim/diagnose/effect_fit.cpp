@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "diagnose/effect_descriptor.hpp"
 #include "diagnose/initial_state_fit.hpp"
 #include "diagnose/levenberg_marquardt.hpp"
 
@@ -149,7 +150,7 @@ EffectFit result_of(const Setup& setup, const LeastSquaresResult& solution, int 
 // damping has no neutral theta, so its flights start from the rigid body's rates.
 std::vector<Eigen::VectorXd> starting_rates(const Setup& setup, const EffectFit* nominal_fit,
                                             const Eigen::VectorXd& theta) {
-  const bool rigid = setup.effect == Effect::internal_damping;
+  const bool rigid = !describe(setup.effect).neutral_at_zero;
   const EffectModel model{rigid ? Effect::none : setup.effect, *setup.nominal, setup.impulse_time_s, setup.base};
   const Eigen::VectorXd held = rigid ? Eigen::VectorXd(theta.head(model_parameter_count(model))) : theta;
   // At theta = 0 every effect is the nominal model, whose fitted rates are already the

@@ -1,0 +1,160 @@
+// diagnose/effect_descriptor: every registered effect is described completely, under its
+// SPEC §4 name and `params` keys, and its model hook does what its descriptor claims.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "diagnose/effect_descriptor.hpp"
+#include "diagnose/flight_model.hpp"
+
+using namespace aloft::host::diagnose;
+
+namespace {
+
+// SPEC §4: the fixed names, which describe the sensor, and the required `params` keys.
+struct SpecEffect {
+  std::string name;
+  bool sensor;
+  std::vector<std::string> keys;
+};
+const std::vector<SpecEffect> kSpec = {
+    {"none", false, {}},
+    {"inertia_moments", false, {"principal_kg_m2"}},
+    {"inertia_axes", false, {"angle_deg", "rotation"}},
+    {"aero_torque", false, {"k_N_m_s2"}},
+    {"internal_damping", false, {}},  // model-specific
+    {"impulse", false, {"time_s", "angular_impulse_N_m_s"}},
+    {"gyro_bias", true, {"bias_rad_s"}},
+    {"gyro_scale", true, {"scale_error"}},
+    {"sensor_misalignment", true, {"angle_deg", "rotation"}},
+    {"clock_drift", true, {"rate_error"}},
+};
+
+const SpecEffect* spec_of(const std::string& name) {
+  for (const SpecEffect& s : kSpec) {
+    if (s.name == name) return &s;
+  }
+  return nullptr;
+}
+
+// A tumbling flight of an asymmetric body, read by a gyro turned from the body axes.
+Flight tumbling_flight() {
+  Flight f;
+  f.sensor_to_body = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()));
+  for (int k = 0; k < 200; ++k) {
+    f.time_s.push_back(0.005 * k);
+    f.omega.emplace_back(1.0, 8.0, 0.5);
+    f.usable.push_back(1);
+  }
+  return f;
+}
+
+NominalInertia asymmetric_body() {
+  Eigen::Matrix3d tensor = Eigen::Vector3d(0.002, 0.004, 0.005).asDiagonal();
+  return NominalInertia::of_tensor(tensor);
+}
+
+std::vector<Eigen::Vector3d> predict(Effect effect, const Eigen::VectorXd& theta) {
+  const Flight flight = tumbling_flight();
+  const EffectModel model(effect, asymmetric_body(), 0.42);
+  std::vector<Eigen::Vector3d> readings;
+  predict_readings(model, flight, reference_index(effect, flight), Eigen::Vector3d(1.0, 8.0, 0.5), theta, readings);
+  return readings;
+}
+
+double largest_difference(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b) {
+  double largest = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) largest = std::max(largest, (a[k] - b[k]).norm());
+  return largest;
+}
+
+}  // namespace
+
+TEST_CASE("every registered effect is complete, under a SPEC §4 name, none left out", "[effect_descriptor]") {
+  std::set<std::string> names;
+  for (Effect e : registered_effects()) {
+    const EffectDescriptor& d = describe(e);
+    REQUIRE(d.name != nullptr);
+    CAPTURE(d.name);
+    CHECK(names.insert(d.name).second);  // unique
+    const SpecEffect* spec = spec_of(d.name);
+    REQUIRE(spec != nullptr);
+    CHECK(d.sensor == spec->sensor);
+    CHECK(std::string(effect_name(e)) == d.name);
+    CHECK((d.parameter_count > 0) == (e != Effect::none));
+    const EffectHooks& h = d.hooks;
+    CHECK(h.tolerance != nullptr);
+    CHECK(h.apply != nullptr);
+    CHECK(h.parameters != nullptr);
+    CHECK(h.text != nullptr);
+    CHECK(h.json != nullptr);
+    CHECK(h.too_small != nullptr);
+    CHECK(h.senseless != nullptr);
+    CHECK(h.unphysical != nullptr);
+    for (Effect q : d.gyro_equivalents) CHECK((q != e || e == Effect::none));  // padding is `none`
+  }
+  CHECK(names.size() == kSpec.size());
+  CHECK(registered_effects().front() == Effect::none);
+}
+
+TEST_CASE("each effect's JSON has its SPEC §4 keys, and none has none", "[effect_descriptor]") {
+  for (Effect e : registered_effects()) {
+    const EffectDescriptor& d = describe(e);
+    CAPTURE(d.name);
+    const nlohmann::json params = d.hooks.json(EffectParameters());
+    REQUIRE(params.is_object());
+    for (const std::string& key : spec_of(d.name)->keys) CHECK(params.contains(key));
+    CHECK(params.empty() == (e == Effect::none));
+  }
+}
+
+TEST_CASE("SPEC §4's classes a gyro cannot split, and no sensor effect for motion capture", "[effect_descriptor]") {
+  using V = std::vector<Effect>;
+  CHECK(always_equivalent(Effect::inertia_axes, true) == V{Effect::inertia_axes, Effect::sensor_misalignment});
+  CHECK(always_equivalent(Effect::sensor_misalignment, true) == V{Effect::sensor_misalignment, Effect::inertia_axes});
+  CHECK(always_equivalent(Effect::clock_drift, true) == V{Effect::clock_drift, Effect::gyro_scale});
+  CHECK(always_equivalent(Effect::inertia_axes, false) == V{Effect::inertia_axes});
+  CHECK(candidate_effects(true).size() == registered_effects().size());
+  for (Effect e : candidate_effects(false)) CHECK_FALSE(is_sensor_effect(e));
+  CHECK(effect_penalty_count(Effect::impulse) == effect_parameter_count(Effect::impulse) + 1);
+}
+
+TEST_CASE("the model hook: theta = 0 is the nominal model where the descriptor says so, and "
+          "every parameter moves the readings",
+          "[effect_descriptor]") {
+  const std::vector<Eigen::Vector3d> nominal = predict(Effect::none, Eigen::VectorXd());
+  for (Effect e : registered_effects()) {
+    if (e == Effect::none) continue;
+    const EffectDescriptor& d = describe(e);
+    CAPTURE(d.name);
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(d.parameter_count);
+    // The reference sample differs for an effect that starts at release; compare with the
+    // nominal model fitted at the same sample.
+    const std::vector<Eigen::Vector3d> at_zero = predict(e, zero);
+    if (d.neutral_at_zero && !d.starts_at_release) {
+      CHECK(largest_difference(at_zero, nominal) < 1e-12);
+    } else if (!d.neutral_at_zero) {
+      CHECK(largest_difference(at_zero, nominal) > 1e-3);
+    }
+    for (int i = 0; i < d.parameter_count; ++i) {
+      CAPTURE(i);
+      Eigen::VectorXd theta = zero;
+      theta(i) = 0.05;
+      CHECK(largest_difference(predict(e, theta), at_zero) > 1e-4);
+    }
+  }
+}
+
+TEST_CASE("physical parameters: the impulse keeps its time, drag is p times the mean moment", "[effect_descriptor]") {
+  const NominalInertia body = asymmetric_body();
+  const EffectParameters jump =
+      describe(Effect::impulse).hooks.parameters(Eigen::Vector3d(0.1, 0.0, 0.0), body, 0.42);
+  CHECK(jump.time_s == 0.42);
+  CHECK(jump.vector.isApprox(body.tensor * Eigen::Vector3d(0.1, 0.0, 0.0)));
+  Eigen::VectorXd p(1);
+  p << 2.0;
+  CHECK(describe(Effect::aero_torque).hooks.parameters(p, body, 0.0).k_N_m_s2 == Approx(2.0 * 0.011 / 3.0));
+}
