@@ -213,6 +213,7 @@ std::vector<std::size_t> scan_impulse_times(const Setup& setup, const std::vecto
   }
   std::vector<std::pair<double, std::size_t>> gains;
   for (std::size_t j = 2; j + 1 < n; ++j) {  // jump between samples j-1 and j
+    if (flight.time_s[j - 1] < flight.settling_until_s) continue;  // the gyro's filter settling
     const bool after_reference = j > ref;
     const std::size_t anchor = after_reference ? j : j - 1;
     const Eigen::Matrix3d side_m = after_reference ? m_after[j] : Eigen::Matrix3d(m_all - m_after[j]);
@@ -259,7 +260,7 @@ EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
   Eigen::VectorXd best_theta = zero;
   std::vector<Eigen::VectorXd> best_rates = rates;
   auto try_time = [&](std::size_t j, bool from_nominal) {
-    if (j < 2 || j + 1 >= n) return;
+    if (j < 2 || j + 1 >= n || flight.time_s[j - 1] < flight.settling_until_s) return;
     setup.impulse_time_s = 0.5 * (flight.time_s[j - 1] + flight.time_s[j]);
     const LeastSquaresResult r = from_nominal ? minimise(problem_of(setup, p), zero, rates, quick)
                                               : minimise(problem_of(setup, p), best_theta, best_rates, quick);

@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,13 @@ struct Flight {
   std::vector<double> time_s;            // as recorded, strictly increasing
   std::vector<Eigen::Vector3d> omega;    // measured rate (sensor axes / body axes)
   std::vector<char> usable;              // 0: left out of every fit (e.g. saturated)
+  // The sensor's noise per axis where its log lies still (rest_periods.hpp); unset when
+  // the log has no rest. The noise floor prefers it (noise_floor.hpp).
+  std::optional<Eigen::Vector3d> rest_noise;
+  // Released from rest (rest_periods.hpp): until this time the gyro's low-pass is still
+  // settling from the spin-up, so a jump of the rate there cannot be told from the
+  // filter's transient, and no impulse is placed there. -infinity: no such start.
+  double settling_until_s = -std::numeric_limits<double>::infinity();
 
   std::size_t size() const { return time_s.size(); }
   double start_s() const { return time_s.empty() ? 0.0 : time_s.front(); }

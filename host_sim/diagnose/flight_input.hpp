@@ -12,6 +12,8 @@
 namespace aloft::host::diagnose {
 
 // The samples of `log` with from_s <= t <= to_s, in sensor axes, saturated samples marked.
+// When the log has rest periods (rest_periods.hpp), the flight carries the noise measured
+// there; when it was released from rest, it says until when its gyro's filter settles.
 Flight flight_from_imu(const ImuLog& log, const Body& body, double from_s, double to_s,
                        const std::string& name);
 

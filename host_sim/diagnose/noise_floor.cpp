@@ -35,9 +35,34 @@ double median(std::vector<double>& v) {
   return *mid;
 }
 
+// The floor is never below the rounding noise of the data's resolution.
+void hold_at_resolution(NoiseFloor& floor, const Flight& flight) {
+  floor.resolution = reading_resolution(flight);
+  const double rounding = floor.resolution / std::sqrt(12.0);
+  for (int a = 0; a < 3; ++a) {
+    if (floor.sigma(a) < rounding) {
+      floor.sigma(a) = rounding;
+      floor.method = "resolution";
+    }
+  }
+}
+
+// The spread where the sensor lay still is its noise as filtered and quantised, with no
+// motion in it: nothing to separate, and it holds for a filtered gyro, whose differences
+// of smooth data understate the noise.
+NoiseFloor floor_from_rest(const Flight& flight) {
+  NoiseFloor floor;
+  floor.sigma = flight.rest_noise->cwiseMax(1e-6);
+  floor.reliable = true;
+  floor.method = "rest";
+  hold_at_resolution(floor, flight);
+  return floor;
+}
+
 }  // namespace
 
 NoiseFloor estimate_noise_floor(const Flight& flight) {
+  if (flight.rest_noise) return floor_from_rest(flight);
   NoiseFloor best;
   const std::vector<char> gap_after = steps_followed_by_gap(flight.time_s);
   const std::size_t n = flight.size();
@@ -73,14 +98,7 @@ NoiseFloor estimate_noise_floor(const Flight& flight) {
       best.reliable = squares[0].size() >= 20;
     }
   }
-  best.resolution = reading_resolution(flight);
-  const double rounding = best.resolution / std::sqrt(12.0);
-  for (int a = 0; a < 3; ++a) {
-    if (best.sigma(a) < rounding) {
-      best.sigma(a) = rounding;
-      best.method = "resolution";
-    }
-  }
+  hold_at_resolution(best, flight);
   return best;
 }
 

@@ -1,6 +1,8 @@
-// The noise floor of a flight's readings, estimated from the data alone: the spread of
-// high-order differences of consecutive samples, where a smooth motion contributes
-// almost nothing and white noise a known multiple of its variance.
+// The noise floor of a flight's readings. Where the log has rest periods around the
+// flight (Flight::rest_noise, rest_periods.hpp), their spread; otherwise estimated from
+// the flight alone: the spread of high-order differences of consecutive samples, where a
+// smooth motion contributes almost nothing and white noise a known multiple of its
+// variance. Either way never below the rounding noise of the data's resolution.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,9 +18,10 @@ struct NoiseFloor {
   // The data's resolution: the smallest step between distinct readings of an axis (the
   // median over axes): a quantised gyro's step, or the last digit a log was written with.
   double resolution = 0.0;
-  // "differences" (the spread of high-order differences) or "resolution" (the floor is
-  // held at resolution/sqrt(12), the rounding noise, because the differences of smooth,
-  // filtered or quantised data fell below it).
+  // "rest" (the spread of the readings where the sensor lay still), "differences" (the
+  // spread of high-order differences) or "resolution" (the floor is held at
+  // resolution/sqrt(12), the rounding noise, because the estimate of smooth, filtered or
+  // quantised data fell below it).
   const char* method = "differences";
 };
 

@@ -348,9 +348,10 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
   }
   const BodyModel body = body_model(spec.body);
 
-  SeededRandom throw_rng(stream_seed(seed, Stream::throw_));
+  const std::uint64_t throw_seed = spec.throw_seed != 0 ? spec.throw_seed : seed;
+  SeededRandom throw_rng(stream_seed(throw_seed, Stream::throw_));
   SeededRandom effect_rng(stream_seed(seed, Stream::effect));
-  SeededRandom noise_rng(stream_seed(seed, Stream::noise));
+  SeededRandom noise_rng(stream_seed(throw_seed, Stream::noise));
   Throw thrown = draw_throw(body, spec, throw_rng);
   auto draw = [&]() {
     InjectedEffect e = draw_effect(spec.effect, body, thrown, spec, effect_rng);

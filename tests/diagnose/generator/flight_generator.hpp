@@ -91,6 +91,12 @@ struct FlightSpec {
   // Its magnitude is drawn as for a flight of its own; truth.params then holds each
   // effect's params under its name.
   std::string second_effect;
+
+  // Nonzero: the throw and the noise come from this seed, the effect from generate_flight's
+  // seed; flights of one session share their effect (one body, one sensor) but not their
+  // throws. An effect sized from the throw (aero_torque, internal_damping, impulse) is
+  // sized from each flight's own throw.
+  std::uint64_t throw_seed = 0;
 };
 
 // What the diagnosis should find. `params` uses the keys of SPEC §4 (plus a few more,

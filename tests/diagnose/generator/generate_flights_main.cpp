@@ -4,6 +4,9 @@
 //
 //   aloft_generate_flights --out DIR                 the withheld-effect cases
 //   aloft_generate_flights --out DIR --random 20 --seed 7   20 random flights
+//   aloft_generate_flights --out DIR --phone         the phone-like flights and sessions
+//                                                    (imu.csv is the whole log; the
+//                                                    flights are in segments.csv)
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <filesystem>
@@ -13,6 +16,8 @@
 #include "common/atomic_file.hpp"
 #include "common/commands.hpp"
 #include "flight_files.hpp"
+#include "phone_like_cases.hpp"
+#include "phone_like_flights.hpp"
 #include "seeded_random.hpp"
 #include "withheld_effect_cases.hpp"
 
@@ -38,6 +43,30 @@ std::vector<FlightCase> random_cases(int count, std::uint64_t seed) {
   return cases;
 }
 
+// Writes `flight` (its imu is the whole log) and its segments file into out/name.
+void write_logged(const GeneratedFlight& flight, const std::string& segments_csv, const std::string& out,
+                  const std::string& name, std::uint64_t seed, nlohmann::json& all) {
+  const std::filesystem::path dir = std::filesystem::path(out) / name;
+  write_flight(flight, dir.string());
+  aloft::host::write_file_atomically((dir / "segments.csv").string(),
+                                     [&](std::ostream& o) { o << segments_csv; });
+  nlohmann::json truth = truth_to_json(flight.truth);
+  truth["seed"] = seed;
+  all[name] = truth;
+  std::cout << name << "/imu.csv + segments.csv  " << flight.truth.effect << " on " << flight.truth.body << "\n";
+}
+
+void write_phone_like(const std::string& out, nlohmann::json& all) {
+  for (const FlightCase& c : phone_like_flight_cases()) {
+    const PhoneLikeFlight p = generate_phone_like_flight(c.spec, c.seed);
+    write_logged(p.flight, p.segments_csv, out, c.name, c.seed, all);
+  }
+  for (const SessionCase& c : phone_like_session_cases()) {
+    const PhoneLikeSession s = generate_phone_like_session(c.flight.spec, c.flights, c.flight.seed);
+    write_logged(s.first, s.segments_csv, out, c.flight.name, c.flight.seed, all);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -46,7 +75,9 @@ int main(int argc, char** argv) {
   int random_count = 0;
   std::uint64_t seed = 1;
   int limit = -1;
+  bool phone = false;
   app.add_option("--out", out_dir, "folder to write into")->required();
+  app.add_flag("--phone", phone, "write the phone-like flights and sessions (issue 8)");
   app.add_option("--random", random_count,
                  "write this many random flights instead of the "
                  "withheld-effect cases")
@@ -56,6 +87,13 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
+    if (phone) {
+      nlohmann::json all = nlohmann::json::object();
+      write_phone_like(out_dir, all);
+      aloft::host::write_file_atomically((std::filesystem::path(out_dir) / "truth.json").string(),
+                                         [&](std::ostream& o) { o << all.dump(1) << '\n'; });
+      return 0;
+    }
     std::vector<FlightCase> cases =
         random_count > 0 ? random_cases(random_count, seed) : withheld_effect_cases();
     if (limit >= 0 && std::size_t(limit) < cases.size()) cases.resize(std::size_t(limit));

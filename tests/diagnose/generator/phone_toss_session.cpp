@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "phone_gyro.hpp"
 #include "seeded_random.hpp"
 
 namespace aloft::generator {
@@ -43,33 +44,6 @@ std::vector<Vec3> fly(const Vec3& w0, const Vec3& moments, double duration, int&
   }
   return out;
 }
-
-// Causal second-order Butterworth low-pass (bilinear transform), one axis at a time.
-class LowPass {
- public:
-  explicit LowPass(double cutoff_hz) {
-    if (cutoff_hz <= 0) return;
-    const double k = std::tan(3.14159265358979323846 * cutoff_hz * kStep_s);
-    const double norm = 1.0 / (1.0 + std::sqrt(2.0) * k + k * k);
-    b0_ = k * k * norm;
-    b1_ = 2.0 * b0_;
-    b2_ = b0_;
-    a1_ = 2.0 * (k * k - 1.0) * norm;
-    a2_ = (1.0 - std::sqrt(2.0) * k + k * k) * norm;
-  }
-  Vec3 operator()(const Vec3& x) {
-    const Vec3 y = b0_ * x + b1_ * x1_ + b2_ * x2_ - a1_ * y1_ - a2_ * y2_;
-    x2_ = x1_;
-    x1_ = x;
-    y2_ = y1_;
-    y1_ = y;
-    return y;
-  }
-
- private:
-  double b0_ = 1.0, b1_ = 0.0, b2_ = 0.0, a1_ = 0.0, a2_ = 0.0;
-  Vec3 x1_ = Vec3::Zero(), x2_ = Vec3::Zero(), y1_ = Vec3::Zero(), y2_ = Vec3::Zero();
-};
 
 bool x_is_intermediate(const Vec3& m) {
   return (m.y() < m.x() && m.x() < m.z()) || (m.z() < m.x() && m.x() < m.y());
@@ -129,20 +103,10 @@ PhoneTossSession generate_phone_toss_session(const PhoneTossSpec& spec, std::uin
   }
 
   // The gyro: filtered on the fine grid, read at jittered times, noisy and quantised.
-  LowPass filter(spec.cutoff_hz);
-  std::vector<Vec3> filtered;
-  for (const Vec3& w : rate) filtered.push_back(filter(w));
-  const double end = static_cast<double>(filtered.size() - 1) * kStep_s;
-  for (double t = 0.0; t < end; t += (1.0 + noise.uniform(-spec.jitter, spec.jitter)) / spec.rate_hz) {
-    const double index = t / kStep_s;
-    const std::size_t k = static_cast<std::size_t>(index);
-    const double f = index - static_cast<double>(k);
-    Vec3 w = (1.0 - f) * filtered[k] + f * filtered[std::min(k + 1, filtered.size() - 1)];
-    w += noise.normal_vector(spec.noise_rad_s);
-    if (spec.quantum_rad_s > 0) w = (w / spec.quantum_rad_s).array().round().matrix() * spec.quantum_rad_s;
-    s.log.time_s.push_back(t);
-    s.log.gyro_rad_s.push_back(w);
-  }
+  const PhoneGyroSpec gyro{spec.rate_hz, spec.cutoff_hz, spec.noise_rad_s, spec.quantum_rad_s, spec.jitter};
+  const host::ImuLog read = read_phone_gyro(rate, kStep_s, gyro, noise);
+  s.log.time_s = read.time_s;
+  s.log.gyro_rad_s = read.gyro_rad_s;
   return s;
 }
 

@@ -12,8 +12,8 @@
 //     with a small transverse rate drawn until the body flips 2-4 times (sign changes of
 //     w_x) in its 0.8-1.0 s of flight (when x is no longer intermediate, any count),
 //     with 1.5 s of rest (zero rate) between tosses;
-//   - the gyro: the true rate through a causal second-order Butterworth low-pass, read at
-//     ~rate_hz with +-2 % timestamp jitter, white noise, quantised (phone apps).
+//   - the gyro: the true rate read by a phone's gyro (phone_gyro.hpp): causal low-pass,
+//     ~rate_hz with +-2 % timestamp jitter, white noise, quantised.
 #pragma once
 
 #include <Eigen/Core>

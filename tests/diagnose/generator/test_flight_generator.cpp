@@ -19,6 +19,8 @@
 #include "flight_files.hpp"
 #include "flight_generator.hpp"
 #include "perturbed_rigid_body.hpp"
+#include "phone_like_cases.hpp"
+#include "phone_like_flights.hpp"
 #include "verdict_score.hpp"
 #include "withheld_effect_cases.hpp"
 
@@ -857,4 +859,58 @@ TEST_CASE("verdicts are scored with issue 5's thresholds", "[generator][score]")
   CHECK(d.class_right);
   CHECK_FALSE(d.params_checked);
   CHECK(d.params_right);
+}
+
+// Issue 8, item 6: what a phone-like flight is made of, read back from its log.
+TEST_CASE("phone-like flights: rate, jitter, quantisation, rest around the window", "[phone_like]") {
+  FlightSpec spec;
+  spec.body = "box";
+  spec.effect = "gyro_bias";
+  const PhoneLikeFlight p = generate_phone_like_flight(spec, 77);
+  const auto& log = p.flight.imu;
+  CHECK(p.gyro.rate_hz >= 100.0);
+  CHECK(p.gyro.rate_hz <= 500.0);
+  CHECK(p.gyro.cutoff_hz >= 15.0);
+  CHECK(p.gyro.cutoff_hz <= 40.0);
+  for (std::size_t k = 1; k < log.time_s.size(); ++k) {
+    const double step = (log.time_s[k] - log.time_s[k - 1]) * p.gyro.rate_hz;
+    REQUIRE(step >= 0.98 - 1e-9);
+    REQUIRE(step <= 1.02 + 1e-9);
+  }
+  for (const Eigen::Vector3d& w : log.gyro_rad_s) {
+    for (int a = 0; a < 3; ++a) REQUIRE(std::abs(w(a) / 0.001 - std::round(w(a) / 0.001)) < 1e-6);
+  }
+  // 1-2 s of rest before the spin-up (<= 0.2 s) and after the catch (<= 0.05 s), reading
+  // the bias; the window is the flight.
+  CHECK(p.window.start_s >= 1.1);
+  CHECK(p.window.start_s <= 2.2 + 1e-9);
+  CHECK(p.window.end_s - p.window.start_s == Approx(p.flight.truth.duration_s).margin(0.01));
+  CHECK(log.time_s.back() - p.window.end_s >= 1.0);
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (std::size_t k = 0; k < log.time_s.size() && log.time_s[k] < 0.9; ++k, ++n) mean += log.gyro_rad_s[k];
+  mean /= n;
+  const Eigen::Vector3d bias(p.flight.truth.params["bias_rad_s"][0].get<double>(),
+                             p.flight.truth.params["bias_rad_s"][1].get<double>(),
+                             p.flight.truth.params["bias_rad_s"][2].get<double>());
+  CHECK((mean - bias).norm() < 5.0 * p.gyro.noise_rad_s / std::sqrt(n));
+  CHECK(std::count(p.segments_csv.begin(), p.segments_csv.end(), '\n') == 2);
+}
+
+TEST_CASE("phone-like sessions: one effect, separate flights, a blank keep=false row", "[phone_like]") {
+  FlightSpec spec;
+  spec.body = "disc";
+  spec.effect = "sensor_misalignment";
+  const PhoneLikeSession s = generate_phone_like_session(spec, 3, 99);
+  REQUIRE(s.flights.size() == 3);
+  REQUIRE(s.truths.size() == 3);
+  for (std::size_t i = 1; i < 3; ++i) {
+    CHECK(s.flights[i].start_s - s.flights[i - 1].end_s > 1.0);
+    CHECK(s.truths[i].params["rotation"] == s.truths[0].params["rotation"]);  // one sensor
+    CHECK(s.truths[i].omega0_body != s.truths[0].omega0_body);                // its own throw
+  }
+  CHECK(s.segments_csv.find("\ndropped,,,false,") != std::string::npos);
+  CHECK(std::count(s.segments_csv.begin(), s.segments_csv.end(), '\n') == 5);
+  CHECK(phone_like_flight_cases().size() >= 30);
+  CHECK(phone_like_session_cases().size() >= 3);
 }
