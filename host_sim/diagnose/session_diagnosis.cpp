@@ -111,11 +111,11 @@ std::optional<Eigen::VectorXd> median_of_flights(Effect effect, const PooledData
 // the flights' own estimates: a pool of flights that each find the effect must not lose it
 // because a start from nominal fell into another basin. The lower cost wins.
 EffectFit fit_pooled(Effect effect, const NominalInertia& nominal, const PooledData& pool,
-                     const EffectFit& none_all) {
-  EffectFit best = fit_effect(effect, nominal, pool.all, &none_all);
+                     const EffectFit& none_all, unsigned threads) {
+  EffectFit best = fit_effect(effect, nominal, pool.all, &none_all, nullptr, threads);
   const std::optional<Eigen::VectorXd> median = median_of_flights(effect, pool);
   if (median && !median->isZero()) {
-    EffectFit seeded = fit_effect(effect, nominal, pool.all, &none_all, &*median);
+    EffectFit seeded = fit_effect(effect, nominal, pool.all, &none_all, &*median, threads);
     if (seeded.cost < best.cost) best = std::move(seeded);
   }
   return best;
@@ -128,7 +128,7 @@ void judge_leaving_flights_out(Candidate& c, const NominalInertia& nominal, cons
   const std::size_t count = pool.flights.size();
   c.heldout_readings.assign(count, {});
   std::vector<GapSums> sums(count);
-  c.heldout_theta = leave_one_flight_out(c.fit, nominal, pool.all);
+  c.heldout_theta = leave_one_flight_out(c.fit, nominal, pool.all, static_cast<unsigned>(std::max(threads, 1)));
   parallel_for(count, static_cast<unsigned>(std::max(threads, 1)), [&](std::size_t j) {
     EffectFit others = c.fit;
     others.theta = c.heldout_theta[j];
@@ -332,7 +332,7 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
       c.note = "per flight only: an impulse is not shared by the flights of a session";
       return c;
     }
-    c.fit = c.base.empty() ? fit_pooled(added, nominal, pool, none_all)
+    c.fit = c.base.empty() ? fit_pooled(added, nominal, pool, none_all, workers)
                            : fit_added_effect(base.fit, added, nominal, pool.all);
     c.params = effect_parameters(model_of(c.fit, nominal, 0), c.fit.theta);
     judge_leaving_flights_out(c, nominal, pool, none_all, threads);
