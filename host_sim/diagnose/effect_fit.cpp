@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "common/parallel_for.hpp"
 #include "diagnose/effect_descriptor.hpp"
 #include "diagnose/initial_state_fit.hpp"
 #include "diagnose/levenberg_marquardt.hpp"
@@ -97,6 +98,7 @@ struct Setup {
   double impulse_time_s = 0.0;
   std::vector<Effect> base;     // compound: effects fitted jointly with `effect`
   Eigen::VectorXd base_theta;   // their fitted values (impulse scan, starting point)
+  unsigned threads = 1;         // flights fitted concurrently (a pooled fit)
 
   EffectModel model() const { return EffectModel{effect, *nominal, impulse_time_s, base}; }
 };
@@ -106,6 +108,7 @@ ArrowProblem problem_of(const Setup& setup, int shared_count) {
   problem.shared_count = shared_count;
   problem.local_count = 3;
   problem.block_count = static_cast<int>(setup.data->size());
+  problem.threads = setup.threads;
   problem.residuals = [&setup](int block, const Eigen::VectorXd& shared,
                                const Eigen::VectorXd& local, Eigen::VectorXd& r) {
     const FlightData& d = (*setup.data)[static_cast<std::size_t>(block)];
@@ -156,11 +159,15 @@ std::vector<Eigen::VectorXd> starting_rates(const Setup& setup, const EffectFit*
   // At theta = 0 every effect is the nominal model, whose fitted rates are already the
   // answer: nothing to refine (never so for a compound model: its base is fitted).
   const bool nominal_model = nominal_fit != nullptr && setup.base.empty() && (rigid || theta.isZero());
-  std::vector<Eigen::VectorXd> rates;
-  for (std::size_t i = 0; i < setup.data->size(); ++i) {
+  std::vector<Eigen::VectorXd> rates(setup.data->size());
+  const auto rate_of = [&](std::size_t i) {
     const Vec3 guess = starting_rate((*setup.data)[i], setup.refs[i], nominal_fit, i, *setup.nominal);
-    rates.emplace_back(nominal_model ? guess
-                                     : fit_initial_state(model, (*setup.data)[i], setup.refs[i], held, &guess).omega_ref);
+    rates[i] = nominal_model ? guess : fit_initial_state(model, (*setup.data)[i], setup.refs[i], held, &guess).omega_ref;
+  };
+  if (setup.threads > 1 && rates.size() > 1) {
+    parallel_for(rates.size(), setup.threads, rate_of);
+  } else {
+    for (std::size_t i = 0; i < rates.size(); ++i) rate_of(i);
   }
   return rates;
 }
@@ -252,6 +259,7 @@ EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
   const std::vector<Eigen::VectorXd> rates = starting_rates(setup, nominal_fit, zero);
   LeastSquaresOptions quick;
   quick.max_iterations = 10;
+  quick.normal_at_solution = false;  // only the costs are compared
   const std::size_t n = flight.size();
   std::size_t best = 0;
   double best_cost = std::numeric_limits<double>::infinity();
@@ -319,8 +327,8 @@ double weighted_squares(const FlightData& data, const std::vector<Eigen::Vector3
 
 EffectFit fit_effect(Effect effect, const NominalInertia& nominal,
                      const std::vector<FlightData>& data, const EffectFit* nominal_fit,
-                     const Eigen::VectorXd* theta_start) {
-  Setup setup{effect, &nominal, &data, {}, 0.0, {}, Eigen::VectorXd()};
+                     const Eigen::VectorXd* theta_start, unsigned threads) {
+  Setup setup{effect, &nominal, &data, {}, 0.0, {}, Eigen::VectorXd(), threads};
   for (const FlightData& d : data) setup.refs.push_back(reference_index(effect, *d.flight));
   if (effect == Effect::impulse) {
     if (data.size() != 1) throw std::invalid_argument("an impulse is fitted to one flight only");
@@ -338,6 +346,7 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal,
     // from the rate that suits a damped one).
     LeastSquaresOptions quick;
     quick.max_iterations = 4;
+    quick.normal_at_solution = false;  // only the costs are compared
     double best = std::numeric_limits<double>::infinity();
     std::vector<Eigen::VectorXd> best_rates = rates;
     for (double fraction : {0.03, 0.1, 0.3}) {
@@ -394,8 +403,8 @@ EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalIne
 }
 
 std::vector<Eigen::VectorXd> leave_one_flight_out(const EffectFit& fit, const NominalInertia& nominal,
-                                                  const std::vector<FlightData>& data) {
-  Setup setup{fit.effect, &nominal, &data, {}, 0.0, fit.base, Eigen::VectorXd()};
+                                                  const std::vector<FlightData>& data, unsigned threads) {
+  Setup setup{fit.effect, &nominal, &data, {}, 0.0, fit.base, Eigen::VectorXd(), threads};
   for (const FlightState& f : fit.flights) setup.refs.push_back(f.ref);
   const ArrowProblem problem = problem_of(setup, static_cast<int>(fit.theta.size()));
   std::vector<Eigen::VectorXd> rates;
@@ -416,8 +425,10 @@ EffectFit fit_initial_rates(const EffectFit& fixed, const NominalInertia& nomina
                                      Eigen::VectorXd& r) {
     problem.residuals(block, theta, local, r);
   };
+  LeastSquaresOptions rates_only;
+  rates_only.normal_at_solution = false;  // no effect parameter to give an error for
   const LeastSquaresResult solution =
-      minimise(held, Eigen::VectorXd(), starting_rates(setup, nominal_fit, theta));
+      minimise(held, Eigen::VectorXd(), starting_rates(setup, nominal_fit, theta), rates_only);
   EffectFit fit = result_of(setup, solution, 0);
   fit.theta = theta;
   fit.theta_standard_error = fixed.theta_standard_error;

@@ -58,9 +58,11 @@ void predict(const EffectFit& fit, const NominalInertia& nominal, std::size_t in
 // starting rates (nullptr: start from the readings themselves). An impulse belongs to one
 // flight: fitting it to several flights at once is refused (std::invalid_argument).
 // `theta_start` (optional) starts the effect parameters elsewhere than at nominal.
+// `threads`: the flights of a pooled fit are evaluated on up to this many threads (the
+// result is the same whatever the count).
 EffectFit fit_effect(Effect effect, const NominalInertia& nominal,
                      const std::vector<FlightData>& data, const EffectFit* nominal_fit,
-                     const Eigen::VectorXd* theta_start = nullptr);
+                     const Eigen::VectorXd* theta_start = nullptr, unsigned threads = 1);
 
 // Fits the effects of `base` (a fit of the same data) with `added` jointly: a compound
 // model, the next step of a stepwise selection (stepwise_selection.hpp). The base
@@ -72,9 +74,10 @@ EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalIne
                            const Eigen::VectorXd* theta_start = nullptr);
 
 // The effect parameters without each flight in turn (one Gauss-Newton step from `fit`, the
-// all-flights solution; levenberg_marquardt.hpp). Not for impulses.
+// all-flights solution; levenberg_marquardt.hpp), the flights on up to `threads` threads.
+// Not for impulses.
 std::vector<Eigen::VectorXd> leave_one_flight_out(const EffectFit& fit, const NominalInertia& nominal,
-                                                  const std::vector<FlightData>& data);
+                                                  const std::vector<FlightData>& data, unsigned threads = 1);
 
 // Refits only the flights' initial rates with the effect parameters of `fixed` held: how a
 // fitted effect is carried over to a flight it never saw.

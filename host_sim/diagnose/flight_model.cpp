@@ -90,12 +90,103 @@ class FlightDynamics {
     x += (h / 6.0) * (k1 + 2.0 * (k2 + k3) + k4);
   }
 
+  // Two states one rk4 step each, every component in the two lanes of a packed pair: two
+  // independent chains of dependent operations run side by side instead of one after the
+  // other. The arithmetic is rk4's, term by term in the order Eigen evaluates rate()'s
+  // expressions, so each state ends bit for bit where rk4 would take it. N = 3: the rigid
+  // body's rate alone; N = 6: with the rotor's.
+  template <std::size_t N>
+  using Lanes = std::array<Eigen::Array2d, N>;
+
+  template <std::size_t N>
+  [[gnu::always_inline]] void rk4_pair(State& x, double hx, State& y, double hy) const {
+    Lanes<N> w;
+    for (std::size_t i = 0; i < N; ++i) w[i] = Eigen::Array2d(x(static_cast<Eigen::Index>(i)), y(static_cast<Eigen::Index>(i)));
+    const Eigen::Array2d h(hx, hy);
+    const auto along = [](const Lanes<N>& a, const Eigen::Array2d& s, const Lanes<N>& k) {
+      Lanes<N> out;
+      for (std::size_t i = 0; i < N; ++i) out[i] = a[i] + s * k[i];
+      return out;
+    };
+    const Lanes<N> k1 = rates(w);
+    const Lanes<N> k2 = rates(along(w, 0.5 * h, k1));
+    const Lanes<N> k3 = rates(along(w, 0.5 * h, k2));
+    const Lanes<N> k4 = rates(along(w, h, k3));
+    const Eigen::Array2d sixth = h / 6.0;
+    for (std::size_t i = 0; i < N; ++i) {
+      const Eigen::Array2d next = w[i] + sixth * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
+      x(static_cast<Eigen::Index>(i)) = next(0);
+      y(static_cast<Eigen::Index>(i)) = next(1);
+    }
+  }
+
+  // A 3x3 matrix times a vector as Eigen's fixed-size product sums it: rows 0 and 1 as a
+  // packet, left to right; row 2 on its own, the last two terms first.
+  [[gnu::always_inline]] static Lanes<3> times(const Mat3& m, const Eigen::Array2d& v0, const Eigen::Array2d& v1,
+                                               const Eigen::Array2d& v2) {
+    return {m(0, 0) * v0 + m(0, 1) * v1 + m(0, 2) * v2, m(1, 0) * v0 + m(1, 1) * v1 + m(1, 2) * v2,
+            m(2, 0) * v0 + (m(2, 1) * v1 + m(2, 2) * v2)};
+  }
+  static Lanes<3> cross(const Eigen::Array2d* a, const Eigen::Array2d* b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  }
+
+  // rate() (N = 6) or rigid_rate() (N = 3) of both lanes.
+  template <std::size_t N>
+  [[gnu::always_inline]] Lanes<N> rates(const Lanes<N>& x) const {
+    const Lanes<3> m = times(shell_, x[0], x[1], x[2]);
+    Lanes<3> torque = cross(m.data(), x.data());
+    if (drag_ != 0.0) {
+      const Eigen::Array2d speed = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
+      for (std::size_t i = 0; i < 3; ++i) torque[i] -= drag_ * speed * x[i];
+    }
+    Lanes<N> dx;
+    if constexpr (N == 3) {
+      dx = times(shell_inverse_, torque[0], torque[1], torque[2]);
+    } else {
+      const double coupling_rate = rotor_rate_ * rotor_;
+      Lanes<3> body;
+      for (std::size_t i = 0; i < 3; ++i) body[i] = torque[i] + coupling_rate * (x[i + 3] - x[i]);
+      const Lanes<3> spin = times(shell_inverse_, body[0], body[1], body[2]);
+      const Lanes<3> turn = cross(x.data(), x.data() + 3);
+      for (std::size_t i = 0; i < 3; ++i) {
+        dx[i] = spin[i];
+        dx[i + 3] = -turn[i] - rotor_rate_ * (x[i + 3] - x[i]);
+      }
+    }
+    return dx;
+  }
+
+  // The steps of at most kMaxStep that cover a span, and their length.
+  static int steps_over(double span) {
+    // One step a sample at kHz rates: no divisions (the same count either way).
+    if (std::abs(span) < kMaxStep) return 1;
+    return std::max(1, static_cast<int>(std::ceil(std::abs(span) / kMaxStep - 1e-9)));
+  }
+  static double step_of(double span, int steps) { return steps == 1 ? span : span / steps; }
+
   // Integrates over [from, to] (either direction) in steps of at most kMaxStep.
   void advance(State& x, double from, double to) const {
-    const double span = to - from;
-    const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(span) / kMaxStep - 1e-9)));
-    const double h = span / steps;
+    const int steps = steps_over(to - from);
+    const double h = step_of(to - from, steps);
     for (int i = 0; i < steps; ++i) rk4(x, h);
+  }
+
+  // advance() of two independent states, paired (rk4_pair) while both have steps to go:
+  // each state gets exactly the steps advance() would give it.
+  void advance_pair(State& x, double x_from, double x_to, State& y, double y_from, double y_to) const {
+    const int x_steps = steps_over(x_to - x_from), y_steps = steps_over(y_to - y_from);
+    const double hx = step_of(x_to - x_from, x_steps), hy = step_of(y_to - y_from, y_steps);
+    const int both = std::min(x_steps, y_steps);
+    for (int i = 0; i < both; ++i) {
+      if (has_rotor()) {
+        rk4_pair<6>(x, hx, y, hy);
+      } else {
+        rk4_pair<3>(x, hx, y, hy);
+      }
+    }
+    for (int i = both; i < x_steps; ++i) rk4(x, hx);
+    for (int i = both; i < y_steps; ++i) rk4(y, hy);
   }
 
   // The impulse changes L by I_nom dw; forwards adds it, backwards takes it away.
@@ -107,6 +198,8 @@ class FlightDynamics {
   Vec3 reading(const State& x) const {
     return scale_.cwiseProduct(body_to_sensor_ * x.head<3>()) + bias_;
   }
+
+
 
  private:
   Mat3 inertia_;
@@ -208,13 +301,14 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   start.tail<3>() = omega_ref;  // rotor co-rotating at the reference (damping only)
   readings[ref] = dynamics.reading(start);
 
-  // Forwards from the reference, then backwards; an impulse strictly between two samples
-  // (or on the later one) is applied where it falls.
-  State x = start;
-  for (std::size_t k = ref + 1; k < n; ++k) {
+  // Forwards from the reference and backwards from it; an impulse strictly between two
+  // samples (or on the later one) is applied where it falls.
+  const auto jump_within = [&](double early, double late) { return has_jump && t_jump > early && t_jump <= late; };
+  // The forward walk's step to sample k, and the backward walk's to sample k.
+  const auto step_up = [&](State& x, std::size_t k) {
     const double a = true_time(flight.time_s[k - 1]);
     const double b = true_time(flight.time_s[k]);
-    if (has_jump && t_jump > a && t_jump <= b) {
+    if (jump_within(a, b)) {
       dynamics.advance(x, a, t_jump);
       dynamics.apply_jump(x, 1.0);
       if (b > t_jump) dynamics.advance(x, t_jump, b);
@@ -222,12 +316,11 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
       dynamics.advance(x, a, b);
     }
     readings[k] = dynamics.reading(x);
-  }
-  x = start;
-  for (std::size_t k = ref; k-- > 0;) {
+  };
+  const auto step_down = [&](State& x, std::size_t k) {
     const double a = true_time(flight.time_s[k + 1]);
     const double b = true_time(flight.time_s[k]);
-    if (has_jump && t_jump > b && t_jump <= a) {
+    if (jump_within(b, a)) {
       if (a > t_jump) dynamics.advance(x, a, t_jump);
       dynamics.apply_jump(x, -1.0);
       dynamics.advance(x, t_jump, b);
@@ -235,7 +328,25 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
       dynamics.advance(x, a, b);
     }
     readings[k] = dynamics.reading(x);
+  };
+  // The two walks are independent: while both have samples to go, they step together
+  // (advance_pair) where neither crosses the impulse.
+  State up = start, down = start;
+  std::size_t next_up = ref + 1, next_down = ref;  // the backward walk's next sample is next_down - 1
+  for (; next_up < n && next_down > 0; ++next_up, --next_down) {
+    const double a_up = true_time(flight.time_s[next_up - 1]), b_up = true_time(flight.time_s[next_up]);
+    const double a_down = true_time(flight.time_s[next_down]), b_down = true_time(flight.time_s[next_down - 1]);
+    if (!jump_within(a_up, b_up) && !jump_within(b_down, a_down)) {
+      dynamics.advance_pair(up, a_up, b_up, down, a_down, b_down);
+      readings[next_up] = dynamics.reading(up);
+      readings[next_down - 1] = dynamics.reading(down);
+    } else {
+      step_up(up, next_up);
+      step_down(down, next_down - 1);
+    }
   }
+  for (; next_up < n; ++next_up) step_up(up, next_up);
+  for (; next_down > 0; --next_down) step_down(down, next_down - 1);
 }
 
 EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta) {

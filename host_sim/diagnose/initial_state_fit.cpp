@@ -45,7 +45,9 @@ InitialState fit_on(const EffectModel& model, const Flight& flight, std::size_t 
       r.segment<3>(static_cast<Eigen::Index>(3 * k)) = (readings[k] - flight.omega[k]).cwiseProduct(inverse_sigma);
     }
   };
-  const LeastSquaresResult r = minimise(problem, Eigen::VectorXd(), {Eigen::VectorXd(start)});
+  LeastSquaresOptions options;
+  options.normal_at_solution = false;  // only the rate and its cost are wanted
+  const LeastSquaresResult r = minimise(problem, Eigen::VectorXd(), {Eigen::VectorXd(start)}, options);
   return {Vec3(r.local[0]), r.cost};
 }
 

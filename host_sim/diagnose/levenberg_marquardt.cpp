@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "common/parallel_for.hpp"
+
 namespace aloft::host::diagnose {
 namespace {
 
@@ -14,49 +16,104 @@ struct Point {
   std::vector<Eigen::VectorXd> local;
 };
 
-double total_cost(const ArrowProblem& problem, const Point& x) {
-  double cost = 0.0;
-  Eigen::VectorXd r;
-  for (int b = 0; b < problem.block_count; ++b) {
-    problem.residuals(b, x.shared, x.local[static_cast<std::size_t>(b)], r);
-    cost += r.squaredNorm();
+// Runs body(b) for every block, on problem.threads threads.
+void for_each_block(const ArrowProblem& problem, const std::function<void(std::size_t)>& body) {
+  const std::size_t count = static_cast<std::size_t>(problem.block_count);
+  if (problem.threads <= 1 || count <= 1) {
+    for (std::size_t b = 0; b < count; ++b) body(b);
+    return;
   }
-  return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
+  parallel_for(count, problem.threads, body);
+}
+
+// The residuals of every block at a point, kept so that linearising there (when the
+// point is accepted) does not compute them again.
+struct Evaluation {
+  std::vector<Eigen::VectorXd> residuals;  // per block
+  double cost = 0.0;
+};
+
+Evaluation evaluate(const ArrowProblem& problem, const Point& x) {
+  Evaluation e;
+  e.residuals.resize(static_cast<std::size_t>(problem.block_count));
+  for_each_block(problem, [&](std::size_t b) {
+    problem.residuals(static_cast<int>(b), x.shared, x.local[b], e.residuals[b]);
+  });
+  for (const Eigen::VectorXd& r : e.residuals) e.cost += r.squaredNorm();
+  if (!std::isfinite(e.cost)) e.cost = std::numeric_limits<double>::infinity();
+  return e;
 }
 
 double step_size(double value) { return 1e-7 * std::max(1.0, std::abs(value)); }
 
-// J^T J and J^T r of the whole problem at x, assembled block by block.
+// One block's part of the normal equations: J^T J and J^T r over [shared | its locals],
+// with J by forward differences, and its squared residuals.
+struct BlockNormal {
+  Eigen::MatrixXd jtj;
+  Eigen::VectorXd jtr;
+  double cost = 0.0;
+};
+
+// `known`: the block's residuals at (shared, local) when already computed (nullptr: not).
+BlockNormal block_normal(const ArrowProblem& problem, int block, const Eigen::VectorXd& shared,
+                         const Eigen::VectorXd& local, const Eigen::VectorXd* known) {
+  const int p = problem.shared_count;
+  const int m = problem.local_count;
+  Eigen::VectorXd r0, r1;
+  if (known != nullptr) {
+    r0 = *known;
+  } else {
+    problem.residuals(block, shared, local, r0);
+  }
+  Eigen::MatrixXd jac(r0.size(), p + m);
+  for (int i = 0; i < p; ++i) {
+    Eigen::VectorXd s = shared;
+    const double h = step_size(s(i));
+    s(i) += h;
+    problem.residuals(block, s, local, r1);
+    jac.col(i) = (r1 - r0) / h;
+  }
+  for (int i = 0; i < m; ++i) {
+    Eigen::VectorXd l = local;
+    const double h = step_size(l(i));
+    l(i) += h;
+    problem.residuals(block, shared, l, r1);
+    jac.col(p + i) = (r1 - r0) / h;
+  }
+  BlockNormal out;
+  out.jtj = jac.transpose() * jac;
+  out.jtr = jac.transpose() * r0;
+  out.cost = r0.squaredNorm();
+  return out;
+}
+
+std::vector<BlockNormal> block_normals(const ArrowProblem& problem, const Eigen::VectorXd& shared,
+                                       const std::vector<Eigen::VectorXd>& local,
+                                       const Evaluation* known = nullptr) {
+  std::vector<BlockNormal> blocks(static_cast<std::size_t>(problem.block_count));
+  for_each_block(problem, [&](std::size_t b) {
+    blocks[b] = block_normal(problem, static_cast<int>(b), shared, local[b],
+                             known != nullptr ? &known->residuals[b] : nullptr);
+  });
+  return blocks;
+}
+
+// J^T J and J^T r of the whole problem at x, assembled block by block. `known`: the
+// residuals at x, when evaluated already.
 double linearise(const ArrowProblem& problem, const Point& x, Eigen::MatrixXd& normal,
-                 Eigen::VectorXd& gradient) {
+                 Eigen::VectorXd& gradient, const Evaluation* known = nullptr) {
   const int p = problem.shared_count;
   const int m = problem.local_count;
   const int size = p + m * problem.block_count;
   normal.setZero(size, size);
   gradient.setZero(size);
   double cost = 0.0;
-  Eigen::VectorXd r0, r1;
+  const std::vector<BlockNormal> blocks = block_normals(problem, x.shared, x.local, known);
   for (int b = 0; b < problem.block_count; ++b) {
-    const Eigen::VectorXd& local = x.local[static_cast<std::size_t>(b)];
-    problem.residuals(b, x.shared, local, r0);
-    cost += r0.squaredNorm();
-    Eigen::MatrixXd jac(r0.size(), p + m);
-    for (int i = 0; i < p; ++i) {
-      Eigen::VectorXd s = x.shared;
-      const double h = step_size(s(i));
-      s(i) += h;
-      problem.residuals(b, s, local, r1);
-      jac.col(i) = (r1 - r0) / h;
-    }
-    for (int i = 0; i < m; ++i) {
-      Eigen::VectorXd l = local;
-      const double h = step_size(l(i));
-      l(i) += h;
-      problem.residuals(b, x.shared, l, r1);
-      jac.col(p + i) = (r1 - r0) / h;
-    }
-    const Eigen::MatrixXd jtj = jac.transpose() * jac;
-    const Eigen::VectorXd jtr = jac.transpose() * r0;
+    const BlockNormal& block = blocks[static_cast<std::size_t>(b)];
+    cost += block.cost;
+    const Eigen::MatrixXd& jtj = block.jtj;
+    const Eigen::VectorXd& jtr = block.jtr;
     const int offset = p + m * b;
     normal.topLeftCorner(p, p) += jtj.topLeftCorner(p, p);
     normal.block(0, offset, p, m) += jtj.topRightCorner(p, m);
@@ -102,22 +159,27 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
     const Eigen::VectorXd delta = damped.ldlt().solve(-gradient);
     if (!delta.allFinite()) break;
     const Point candidate = moved(problem, x, delta);
-    const double new_cost = total_cost(problem, candidate);
+    const Evaluation evaluation = evaluate(problem, candidate);
+    const double new_cost = evaluation.cost;
     // Gain predicted by the linear model: -(2 g.d + d.H.d) for cost = |r|^2.
     const double predicted = -(2.0 * gradient.dot(delta) + delta.dot(normal * delta));
     const double rho = predicted > 0.0 ? (cost - new_cost) / predicted : -1.0;
     if (std::isfinite(new_cost) && new_cost < cost) {
       const double gain = (cost - new_cost) / std::max(cost, 1e-300);
       x = candidate;
-      const double new_linear_cost = linearise(problem, x, normal, gradient);
-      cost = new_linear_cost;
       lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * std::min(rho, 1.0) - 1.0, 3));
       growth = 2.0;
       // Converged when accepted steps stop paying, with the damping low enough that the
       // step was close to Gauss-Newton's (a heavily damped step may gain little only
       // because it is short).
       small_gains = gain < options.relative_tolerance ? small_gains + 1 : 0;
-      if (small_gains >= 2 && lambda < 1e-2) {
+      const bool converged = small_gains >= 2 && lambda < 1e-2;
+      if ((converged || iteration + 1 >= options.max_iterations) && !options.normal_at_solution) {
+        cost = evaluation.cost;  // the last step: nothing needs the Jacobian here
+      } else {
+        cost = linearise(problem, x, normal, gradient, &evaluation);
+      }
+      if (converged) {
         ++iteration;
         break;
       }
@@ -146,26 +208,10 @@ std::vector<Eigen::VectorXd> leave_one_block_out(const ArrowProblem& problem,
   std::vector<Eigen::VectorXd> rhs(blocks);
   Eigen::MatrixXd schur_total = Eigen::MatrixXd::Zero(p, p);
   Eigen::VectorXd rhs_total = Eigen::VectorXd::Zero(p);
-  Eigen::VectorXd r0, r1;
+  const std::vector<BlockNormal> normals = block_normals(problem, shared, local);
   for (std::size_t b = 0; b < blocks; ++b) {
-    problem.residuals(static_cast<int>(b), shared, local[b], r0);
-    Eigen::MatrixXd jac(r0.size(), p + m);
-    for (int i = 0; i < p; ++i) {
-      Eigen::VectorXd s = shared;
-      const double h = step_size(s(i));
-      s(i) += h;
-      problem.residuals(static_cast<int>(b), s, local[b], r1);
-      jac.col(i) = (r1 - r0) / h;
-    }
-    for (int i = 0; i < m; ++i) {
-      Eigen::VectorXd l = local[b];
-      const double h = step_size(l(i));
-      l(i) += h;
-      problem.residuals(static_cast<int>(b), shared, l, r1);
-      jac.col(p + i) = (r1 - r0) / h;
-    }
-    const Eigen::MatrixXd jtj = jac.transpose() * jac;
-    const Eigen::VectorXd jtr = jac.transpose() * r0;
+    const Eigen::MatrixXd& jtj = normals[b].jtj;
+    const Eigen::VectorXd& jtr = normals[b].jtr;
     Eigen::MatrixXd hll = jtj.bottomRightCorner(m, m);
     hll.diagonal().array() += 1e-9 * std::max(hll.diagonal().maxCoeff(), 1e-12);
     const Eigen::LDLT<Eigen::MatrixXd> local_solve(hll);

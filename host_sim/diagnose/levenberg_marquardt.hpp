@@ -20,6 +20,10 @@ struct ArrowProblem {
   int shared_count = 0;  // parameters common to every block
   int local_count = 0;   // parameters of each block
   int block_count = 1;
+  // Blocks are evaluated on up to this many threads (parallel_for); `residuals` must then
+  // be safe to call concurrently for different blocks. The result does not depend on it:
+  // the blocks' sums are added in block order whatever thread made them.
+  unsigned threads = 1;
   // Writes the residuals of `block` for the given parameters. The length must be the
   // same at every call for the same block.
   std::function<void(int block, const Eigen::VectorXd& shared, const Eigen::VectorXd& local,
@@ -30,6 +34,9 @@ struct ArrowProblem {
 struct LeastSquaresOptions {
   int max_iterations = 40;
   double relative_tolerance = 1e-7;  // stop when an accepted step gains less than this
+  // false: the caller wants only the solution and its cost, not normal_matrix, so the
+  // last accepted point is not linearised (one Jacobian fewer; the solution is the same).
+  bool normal_at_solution = true;
 };
 
 struct LeastSquaresResult {
