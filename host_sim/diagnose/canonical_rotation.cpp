@@ -6,12 +6,15 @@
 
 namespace aloft::host::diagnose {
 
-Eigen::Quaterniond canonical_rotation(const Eigen::Quaterniond& r, const NominalInertia& nominal, bool right) {
+Eigen::Quaterniond canonical_rotation(const Eigen::Quaterniond& r, const NominalInertia& nominal,
+                                      bool right) {
   using Vec3 = Eigen::Vector3d;
   const Vec3 m = nominal.principal_moments;
   const Eigen::Matrix3d axes = nominal.principal_axes.toRotationMatrix();
   const double tol = 1e-3 * m.sum();
-  auto compose = [&](const Eigen::Quaterniond& s) { return right ? Eigen::Quaterniond(r * s) : Eigen::Quaterniond(s * r); };
+  auto compose = [&](const Eigen::Quaterniond& s) {
+    return right ? Eigen::Quaterniond(r * s) : Eigen::Quaterniond(s * r);
+  };
   auto smaller = [](const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
     return std::abs(a.w()) > std::abs(b.w());
   };
@@ -25,12 +28,14 @@ Eigen::Quaterniond canonical_rotation(const Eigen::Quaterniond& r, const Nominal
     // phi = -2 atan2(v.a, w) (v, w of r); a half turn about a perpendicular axis too.
     const Vec3 a = axes.col(symmetric_axis);
     for (const Vec3& flip_axis : {Vec3::Zero().eval(), axes.col((symmetric_axis + 1) % 3).eval()}) {
-      const Eigen::Quaterniond flip = flip_axis.isZero() ? Eigen::Quaterniond::Identity()
-                                                         : Eigen::Quaterniond(0.0, flip_axis.x(), flip_axis.y(), flip_axis.z());
+      const Eigen::Quaterniond flip =
+          flip_axis.isZero() ? Eigen::Quaterniond::Identity()
+                             : Eigen::Quaterniond(0.0, flip_axis.x(), flip_axis.y(), flip_axis.z());
       const Eigen::Quaterniond base = compose(flip);
       const double phi = -2.0 * std::atan2(base.vec().dot(a), base.w());
       const Eigen::Quaterniond turn(Eigen::AngleAxisd(phi, a));
-      const Eigen::Quaterniond candidate = right ? Eigen::Quaterniond(base * turn) : Eigen::Quaterniond(turn * base);
+      const Eigen::Quaterniond candidate =
+          right ? Eigen::Quaterniond(base * turn) : Eigen::Quaterniond(turn * base);
       if (smaller(candidate, best)) best = candidate;
     }
   } else {

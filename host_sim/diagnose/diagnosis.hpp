@@ -145,8 +145,8 @@ struct FlightDiagnosis {
   std::size_t unusable_samples = 0;
   Analysis analysis;
   const Flight* flight = nullptr;  // the data it was made from (plots)
-  // Session only: the flip period measured and predicted from the first sample, nominal
-  // and with the pooled verdict's effect fitted without this flight.
+  // Session only: the flip period measured and predicted (flip_period.hpp), nominal and
+  // with the pooled final model fitted without this flight.
   std::optional<FlipPeriod> flip_period;
 };
 
@@ -155,9 +155,14 @@ struct FlightDiagnosis {
 // none says so).
 struct FlipPeriodSummary {
   int flights = 0;
+  // From the first sample (flip_period.hpp).
   double mean_error_nominal = 0.0;
   double mean_error_diagnosed = 0.0;  // over the same flights
   int diagnosed_flights = 0;
+  // From each flight's fitted initial state, over the flights with both predictions.
+  double mean_error_nominal_fitted = 0.0;
+  double mean_error_diagnosed_fitted = 0.0;
+  int fitted_flights = 0;
 };
 
 struct SessionDiagnosis {

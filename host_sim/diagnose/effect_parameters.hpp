@@ -22,8 +22,8 @@ struct EffectParameters {
   Eigen::Matrix3d tensor_kg_m2 = Eigen::Matrix3d::Zero();
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  // axes / misalignment
   double angle_deg = 0.0;
-  double k_N_m_s2 = 0.0;                                       // aero_torque
-  double rotor_J_kg_m2 = 0.0, c_N_m_s = 0.0;                   // internal_damping
+  double k_N_m_s2 = 0.0;                             // aero_torque
+  double rotor_J_kg_m2 = 0.0, c_N_m_s = 0.0;         // internal_damping
   Eigen::Vector3d vector = Eigen::Vector3d::Zero();  // impulse N·m·s, bias rad/s, scale
   double time_s = 0.0;                               // impulse
   double rate_error = 0.0;                           // clock_drift

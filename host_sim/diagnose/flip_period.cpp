@@ -14,12 +14,18 @@ std::vector<double> intermediate_component(const Flight& flight, const NominalIn
   return out;
 }
 
-std::optional<double> predicted_period(const Flight& flight, const NominalInertia& nominal,
-                                       const EffectModel& model, const Eigen::VectorXd& theta) {
-  const Eigen::Vector3d start = body_rate_for_reading(model, flight, theta, flight.omega.front());
+std::optional<double> period_from(const Flight& flight, const NominalInertia& nominal, const EffectModel& model,
+                                  const Eigen::VectorXd& theta, const FlightState& start) {
   std::vector<Eigen::Vector3d> readings;
-  predict_readings(model, flight, 0, start, theta, readings);
+  predict_readings(model, flight, start.ref, start.omega_ref, theta, readings);
   return point_method_period(flight.time_s, intermediate_component(flight, nominal, readings));
+}
+
+// The first reading taken as the body rate (through the model's sensor, if it has one).
+FlightState first_sample(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta) {
+  FlightState start;
+  start.omega_ref = body_rate_for_reading(model, flight, theta, flight.omega.front());
+  return start;
 }
 
 }  // namespace
@@ -45,16 +51,21 @@ std::optional<double> point_method_period(const std::vector<double>& t, const st
 }
 
 std::optional<FlipPeriod> flip_period(const Flight& flight, const NominalInertia& nominal,
-                                      const EffectModel* diagnosed, const Eigen::VectorXd& theta) {
+                                      const EffectModel* diagnosed, const Eigen::VectorXd& theta,
+                                      const FlightState* nominal_start, const FlightState* diagnosed_start) {
   if (flight.size() < 5) return std::nullopt;
   const auto measured = point_method_period(flight.time_s, intermediate_component(flight, nominal, flight.omega));
   const EffectModel plain{Effect::none, nominal, 0.0};
-  const auto nominal_period = predicted_period(flight, nominal, plain, Eigen::VectorXd());
+  const Eigen::VectorXd none;
+  const auto nominal_period = period_from(flight, nominal, plain, none, first_sample(plain, flight, none));
   if (!measured || !nominal_period) return std::nullopt;
   FlipPeriod out;
   out.measured_s = *measured;
   out.nominal_s = *nominal_period;
-  if (diagnosed != nullptr) out.diagnosed_s = predicted_period(flight, nominal, *diagnosed, theta);
+  if (nominal_start != nullptr) out.nominal_fitted_s = period_from(flight, nominal, plain, none, *nominal_start);
+  if (diagnosed == nullptr) return out;
+  out.diagnosed_s = period_from(flight, nominal, *diagnosed, theta, first_sample(*diagnosed, flight, theta));
+  if (diagnosed_start != nullptr) out.diagnosed_fitted_s = period_from(flight, nominal, *diagnosed, theta, *diagnosed_start);
   return out;
 }
 

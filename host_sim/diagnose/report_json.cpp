@@ -235,6 +235,12 @@ json flight_report(const FlightDiagnosis& d) {
       fp["diagnosed_relative_error"] =
           std::abs(*d.flip_period->diagnosed_s - d.flip_period->measured_s) / d.flip_period->measured_s;
     }
+    const auto& fitted = d.flip_period->nominal_fitted_s;
+    if (fitted) fp["nominal_fitted_s"] = *fitted;
+    if (fitted) fp["nominal_fitted_relative_error"] = d.flip_period->error(*fitted);
+    const auto& diagnosed_fitted = d.flip_period->diagnosed_fitted_s;
+    if (diagnosed_fitted) fp["diagnosed_fitted_s"] = *diagnosed_fitted;
+    if (diagnosed_fitted) fp["diagnosed_fitted_relative_error"] = d.flip_period->error(*diagnosed_fitted);
     out["flip_period"] = fp;
   }
   json gaps = json::array();
@@ -254,7 +260,11 @@ json session_report(const SessionDiagnosis& s) {
                           {"mean_relative_error_nominal", s.flip_period->mean_error_nominal},
                           {"mean_relative_error_diagnosed", s.flip_period->mean_error_diagnosed},
                           {"diagnosed_flights", s.flip_period->diagnosed_flights},
-                          {"method", "point method on the intermediate-axis rate, simulation from the first sample"}};
+                          {"mean_relative_error_nominal_fitted", s.flip_period->mean_error_nominal_fitted},
+                          {"mean_relative_error_diagnosed_fitted", s.flip_period->mean_error_diagnosed_fitted},
+                          {"fitted_flights", s.flip_period->fitted_flights},
+                          {"method", "point method on the intermediate-axis rate, simulation from the first sample "
+                                     "(*_fitted: from the flight's fitted initial state, model fitted without it)"}};
   }
   return out;
 }
@@ -279,11 +289,17 @@ std::string session_summary(const SessionDiagnosis& s) {
   if (s.flip_period) {
     out << printf_text("  flip period from the first sample, %.0f flights: mean error %.1f %% nominal", s.flip_period->flights,
                100.0 * s.flip_period->mean_error_nominal);
+    std::string model;
+    for (const VerdictEffect& e : s.pooled.verdict.effects) model += (model.empty() ? "" : " + ") + std::string(effect_name(e.effect));
     if (s.flip_period->diagnosed_flights > 0) {
-      out << printf_text(", %.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed) << effect_name(s.pooled.verdict.effect)
-          << " (fitted without each flight)";
+      out << printf_text(", %.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed) << model << " (fitted without each flight)";
     }
     out << "\n";
+    if (s.flip_period->fitted_flights > 0) {
+      out << printf_text("  flip period from each flight's fitted initial state, %.0f flights: mean error %.1f %% nominal, ",
+                         s.flip_period->fitted_flights, 100.0 * s.flip_period->mean_error_nominal_fitted)
+          << printf_text("%.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed_fitted) << model << "\n";
+    }
   }
   for (const FlightDiagnosis& d : s.flights) {
     const Verdict& v = d.analysis.verdict;

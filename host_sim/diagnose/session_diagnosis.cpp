@@ -4,7 +4,8 @@
 // flights (one Gauss-Newton step from the all-flights solution, effect_fit.hpp); on the
 // left-out flight only the initial rate is fitted, on one fold of its samples, and the gap
 // is judged on the other fold (and the other way round), so that no sample is ever judged
-// by a fit that saw it.
+// by a fit that saw it. Compound models come from the same stepwise selection as a
+// flight's (stepwise_selection.hpp), with this held-out rule as its evaluator.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "diagnose/diagnosis.hpp"
 #include "diagnose/held_out.hpp"
 #include "diagnose/plausibility.hpp"
+#include "diagnose/stepwise_selection.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -187,22 +189,32 @@ bool mentions_intermediate(const std::string& comment) {
   return lower.find("intermediate") != std::string::npos;
 }
 
-// Flip periods per flight, nominal and with the pooled verdict's effect (parameters
-// fitted without that flight), and their mean errors.
-void add_flip_periods(SessionDiagnosis& session, const std::vector<const Flight*>& pooled,
+// Flip periods per flight, nominal and with the pooled final model (its parameters
+// fitted without that flight), from the first sample and from the flight's fitted
+// initial state under each model (flip_period.hpp).
+void add_flip_periods(SessionDiagnosis& session, const PooledData& pool, const EffectFit& none_all,
                       const std::vector<Flight>& flights, const NominalInertia& nominal) {
   const Analysis& a = session.pooled;
-  const Candidate* chosen = a.verdict.chosen >= 0 && a.verdict.effect != Effect::none
-                                ? &a.candidates[static_cast<std::size_t>(a.verdict.chosen)]
-                                : nullptr;
-  const EffectModel model{a.verdict.effect, nominal, 0.0};
+  const Candidate* final_model = a.verdict.effect != Effect::none && a.model.heldout_theta.size() == pool.flights.size()
+                                     ? &a.model
+                                     : nullptr;
+  const EffectModel model = final_model != nullptr ? model_of(final_model->fit, nominal, 0) : EffectModel();
   for (std::size_t i = 0; i < flights.size(); ++i) {
-    const auto it = std::find(pooled.begin(), pooled.end(), &flights[i]);
-    if (it == pooled.end()) continue;
-    const std::size_t j = static_cast<std::size_t>(it - pooled.begin());
-    const bool with_effect = chosen != nullptr && j < chosen->heldout_theta.size();
-    session.flights[i].flip_period = flip_period(flights[i], nominal, with_effect ? &model : nullptr,
-                                                 with_effect ? chosen->heldout_theta[j] : Eigen::VectorXd());
+    const auto it = std::find(pool.flights.begin(), pool.flights.end(), &flights[i]);
+    if (it == pool.flights.end()) continue;
+    const std::size_t j = static_cast<std::size_t>(it - pool.flights.begin());
+    const FlightState& nominal_start = none_all.flights[j];
+    if (final_model == nullptr) {
+      session.flights[i].flip_period = flip_period(flights[i], nominal, nullptr, Eigen::VectorXd(), &nominal_start);
+      continue;
+    }
+    EffectFit held = final_model->fit;
+    held.theta = final_model->heldout_theta[j];
+    EffectFit none_j;
+    none_j.flights = {nominal_start};
+    const EffectFit start = fit_initial_rates(held, nominal, {pool.all[j]}, &none_j);
+    session.flights[i].flip_period =
+        flip_period(flights[i], nominal, &model, held.theta, &nominal_start, &start.flights.front());
   }
   bool any_intermediate = false;
   for (const Flight& f : flights) any_intermediate = any_intermediate || mentions_intermediate(f.comment);
@@ -214,12 +226,21 @@ void add_flip_periods(SessionDiagnosis& session, const std::vector<const Flight*
     summary.mean_error_nominal += fp->nominal_error();
     if (fp->diagnosed_s) {
       ++summary.diagnosed_flights;
-      summary.mean_error_diagnosed += std::abs(*fp->diagnosed_s - fp->measured_s) / fp->measured_s;
+      summary.mean_error_diagnosed += fp->error(*fp->diagnosed_s);
+    }
+    if (fp->nominal_fitted_s && fp->diagnosed_fitted_s) {
+      ++summary.fitted_flights;
+      summary.mean_error_nominal_fitted += fp->error(*fp->nominal_fitted_s);
+      summary.mean_error_diagnosed_fitted += fp->error(*fp->diagnosed_fitted_s);
     }
   }
   if (summary.flights == 0) return;
   summary.mean_error_nominal /= summary.flights;
   if (summary.diagnosed_flights > 0) summary.mean_error_diagnosed /= summary.diagnosed_flights;
+  if (summary.fitted_flights > 0) {
+    summary.mean_error_nominal_fitted /= summary.fitted_flights;
+    summary.mean_error_diagnosed_fitted /= summary.fitted_flights;
+  }
   session.flip_period = summary;
 }
 
@@ -295,32 +316,46 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
   const double mean_speed = speed_sum / count;
   const double total_duration = duration_sum;
 
-  for (Effect effect : candidate_effects(pool.flights.front()->gyro_input)) {
+  // The coarsest resolution of the pooled flights (those left out have none).
+  double resolution = 0.0;
+  for (const FlightDiagnosis& d : session.flights) resolution = std::max(resolution, d.noise.resolution);
+  const RankingContext context{pool.flights.front()->gyro_input, pool.flights, pool.inverse_sigma, mean_speed,
+                               total_duration, &nominal, resolution};
+  // Every model of the search, single or compound: its shared parameters fitted to every
+  // flight, judged by leaving one flight out.
+  const CandidateEvaluator evaluate = [&](const Candidate& base, Effect added) {
     Candidate c;
-    c.effect = effect;
-    if (effect == Effect::impulse) {
+    c.effect = added;
+    c.base = model_effects(model_of(base.fit, nominal, 0));
+    if (added == Effect::impulse) {
       c.evaluated = false;
       c.note = "per flight only: an impulse is not shared by the flights of a session";
-      analysis.candidates.push_back(std::move(c));
-      continue;
+      return c;
     }
-    if (effect == Effect::none) {
-      c = nominal_candidate(pool, none_all);
-    } else {
-      c.fit = fit_pooled(effect, nominal, pool, none_all, workers);
-      c.params = effect_parameters(EffectModel{effect, nominal, 0.0}, c.fit.theta);
-      judge_leaving_flights_out(c, nominal, pool, none_all, threads);
+    c.fit = c.base.empty() ? fit_pooled(added, nominal, pool, none_all, workers)
+                           : fit_added_effect(base.fit, added, nominal, pool.all);
+    c.params = effect_parameters(model_of(c.fit, nominal, 0), c.fit.theta);
+    judge_leaving_flights_out(c, nominal, pool, none_all, threads);
+    if (!std::isfinite(c.heldout_rms_rel_err)) {
+      // Leaving a flight out of a nearly degenerate joint fit (two effects the pool can
+      // hardly tell apart) can throw its parameters anywhere: no verdict from that.
+      c.evaluated = false;
+      c.note = "the joint fit is degenerate here: leaving a flight out makes it diverge";
     }
-    analysis.candidates.push_back(std::move(c));
+    return c;
+  };
+  const Candidate nominal_model = nominal_candidate(pool, none_all);
+  for (Effect effect : candidate_effects(context.gyro_input)) {
+    analysis.candidates.push_back(effect == Effect::none ? nominal_model : evaluate(nominal_model, effect));
   }
   rule_out_senseless(analysis.candidates);
-  rank_candidates(analysis, pool.flights.front()->gyro_input, pool.flights, pool.inverse_sigma,
-                  mean_speed, total_duration);
+  rank_candidates(analysis, context);
+  select_stepwise(analysis, context, evaluate);
   TensorReport tensor;
   if (pooled_tensor_report(analysis, pool.flights, nominal, tensor)) analysis.tensor = tensor;
   temper_confidence(analysis);
   note_disagreeing_flights(analysis, pool);
-  add_flip_periods(session, pool.flights, flights, nominal);
+  add_flip_periods(session, pool, none_all, flights, nominal);
   // Onset of a session: the median of the flights' onsets, relative to each flight's start.
   std::vector<double> onsets;
   for (const FlightDiagnosis& d : session.flights) {

@@ -61,7 +61,8 @@ std::vector<Eigen::Vector3d> predict(Effect effect, const Eigen::VectorXd& theta
   const Flight flight = tumbling_flight();
   const EffectModel model(effect, asymmetric_body(), 0.42);
   std::vector<Eigen::Vector3d> readings;
-  predict_readings(model, flight, reference_index(effect, flight), Eigen::Vector3d(1.0, 8.0, 0.5), theta, readings);
+  predict_readings(model, flight, reference_index(effect, flight), Eigen::Vector3d(1.0, 8.0, 0.5), theta,
+                   readings);
   return readings;
 }
 
@@ -111,10 +112,13 @@ TEST_CASE("each effect's JSON has its SPEC §4 keys, and none has none", "[effec
   }
 }
 
-TEST_CASE("SPEC §4's classes a gyro cannot split, and no sensor effect for motion capture", "[effect_descriptor]") {
+TEST_CASE("SPEC §4's classes a gyro cannot split, and no sensor effect for motion capture",
+          "[effect_descriptor]") {
   using V = std::vector<Effect>;
-  CHECK(always_equivalent(Effect::inertia_axes, true) == V{Effect::inertia_axes, Effect::sensor_misalignment});
-  CHECK(always_equivalent(Effect::sensor_misalignment, true) == V{Effect::sensor_misalignment, Effect::inertia_axes});
+  CHECK(always_equivalent(Effect::inertia_axes, true) ==
+        V{Effect::inertia_axes, Effect::sensor_misalignment});
+  CHECK(always_equivalent(Effect::sensor_misalignment, true) ==
+        V{Effect::sensor_misalignment, Effect::inertia_axes});
   CHECK(always_equivalent(Effect::clock_drift, true) == V{Effect::clock_drift, Effect::gyro_scale});
   CHECK(always_equivalent(Effect::inertia_axes, false) == V{Effect::inertia_axes});
   CHECK(candidate_effects(true).size() == registered_effects().size());
@@ -122,9 +126,10 @@ TEST_CASE("SPEC §4's classes a gyro cannot split, and no sensor effect for moti
   CHECK(effect_penalty_count(Effect::impulse) == effect_parameter_count(Effect::impulse) + 1);
 }
 
-TEST_CASE("the model hook: theta = 0 is the nominal model where the descriptor says so, and "
-          "every parameter moves the readings",
-          "[effect_descriptor]") {
+TEST_CASE(
+    "the model hook: theta = 0 is the nominal model where the descriptor says so, and "
+    "every parameter moves the readings",
+    "[effect_descriptor]") {
   const std::vector<Eigen::Vector3d> nominal = predict(Effect::none, Eigen::VectorXd());
   for (Effect e : registered_effects()) {
     if (e == Effect::none) continue;
@@ -148,7 +153,8 @@ TEST_CASE("the model hook: theta = 0 is the nominal model where the descriptor s
   }
 }
 
-TEST_CASE("physical parameters: the impulse keeps its time, drag is p times the mean moment", "[effect_descriptor]") {
+TEST_CASE("physical parameters: the impulse keeps its time, drag is p times the mean moment",
+          "[effect_descriptor]") {
   const NominalInertia body = asymmetric_body();
   const EffectParameters jump =
       describe(Effect::impulse).hooks.parameters(Eigen::Vector3d(0.1, 0.0, 0.0), body, 0.42);

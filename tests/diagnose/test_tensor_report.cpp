@@ -59,8 +59,9 @@ bool names_moments(const Verdict& v) {
 
 void print(const Case& c, const Outcome& o) {
   const Analysis& a = o.diagnosis.pooled;
-  std::printf("%-10s %s conf=%d  heldout rel %.4f -> %.4f", c.name, effect_name(a.verdict.effect), a.verdict.confident,
-              a.verdict.heldout_rms_rel_err_before, a.verdict.heldout_rms_rel_err_after);
+  std::printf("%-10s %s (%zu effects) conf=%d  heldout rel %.4f -> %.4f", c.name, effect_name(a.verdict.effect),
+              a.verdict.effects.size(), a.verdict.confident, a.verdict.heldout_rms_rel_err_before,
+              a.verdict.heldout_rms_rel_err_after);
   if (a.tensor) {
     const TensorReport& t = *a.tensor;
     std::printf("  ratios %.4f [%.4f %.4f] %.4f [%.4f %.4f] truth %.4f %.4f consistent=%d", t.ratio_best(0),
@@ -93,6 +94,8 @@ TEST_CASE("phone tosses: tensor intervals, pooled verdicts and confidence", "[te
       CHECK_FALSE((a.verdict.effect != Effect::none && a.verdict.confident));
     } else {
       CHECK(names_moments(a.verdict));
+      // One cause, one effect: the pooled stepwise search adds nothing to it.
+      CHECK(a.verdict.effects.size() == 1);
       for (int i = 0; i < 2; ++i) CHECK(std::abs(a.tensor->ratio_best(i) / o.truth(i) - 1.0) < 0.05);
     }
   }

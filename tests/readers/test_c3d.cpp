@@ -240,7 +240,7 @@ TEST_CASE("bad C3D files: one-line errors", "[readers][c3d][bad]") {
 TEST_CASE("C3D POINT:UNITS matched as C3D tools match them", "[readers][c3d][units]") {
   ScratchDir dir;
   auto content = two_marker_trial(Processor::intel, true);
-  for (const std::string& metres : {"mete", "meters", " METRES", "m"}) {
+  for (const char* metres : {"mete", "meters", " METRES", "m"}) {
     INFO("units '" << metres << "'");
     content.units = metres;
     const auto trial = read_c3d(dir.write("m.c3d", as_text(aloft::test::write_c3d_bytes(content))));

@@ -75,7 +75,7 @@ RmsDaByFrame reference_rms_da_deg(const StudyFlight& f, const aloft::InertiaTens
   }
   double body_sq = 0.0, world_sq = 0.0;
   for (std::size_t j = 0; j + 1 < n; ++j) {
-    Eigen::Vector3d w;
+    Eigen::Vector3d w = Eigen::Vector3d::Zero();  // set by the call; zeroed for -Wmaybe-uninitialized
     REQUIRE(aloft::omega_body_from_orientations(q[j], q[j + 1], f.time_s[j + 1] - f.time_s[j], w) ==
             aloft::Status::ok);
     const double body = aloft::deviation_angle(w, f.measured_omega_body[j]);

@@ -16,7 +16,9 @@ double k_of(const Eigen::VectorXd& theta, const NominalInertia& nominal) {
 }
 
 // A drag that changes |w| by 1 % over the flight.
-double tolerance(double mean_speed, double duration_s) { return 0.01 / std::max(mean_speed * duration_s, 1e-6); }
+double tolerance(double mean_speed, double duration_s) {
+  return 0.01 / std::max(mean_speed * duration_s, 1e-6);
+}
 
 void apply(const Eigen::VectorXd& theta, const NominalInertia& nominal, ModelTerms& terms) {
   terms.drag = k_of(theta, nominal);

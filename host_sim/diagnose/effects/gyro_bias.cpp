@@ -8,7 +8,9 @@ namespace {
 
 double tolerance(double, double) { return 0.01; }  // rad/s
 
-void apply(const Eigen::VectorXd& theta, const NominalInertia&, ModelTerms& terms) { terms.bias = theta.head<3>(); }
+void apply(const Eigen::VectorXd& theta, const NominalInertia&, ModelTerms& terms) {
+  terms.bias = theta.head<3>();
+}
 
 EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia&, double) {
   EffectParameters p;

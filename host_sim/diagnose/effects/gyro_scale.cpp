@@ -9,7 +9,9 @@ namespace {
 
 double tolerance(double, double) { return 0.005; }
 
-void apply(const Eigen::VectorXd& theta, const NominalInertia&, ModelTerms& terms) { terms.scale += theta.head<3>(); }
+void apply(const Eigen::VectorXd& theta, const NominalInertia&, ModelTerms& terms) {
+  terms.scale += theta.head<3>();
+}
 
 EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia&, double) {
   EffectParameters p;

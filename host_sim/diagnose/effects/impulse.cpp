@@ -16,7 +16,8 @@ void apply(const Eigen::VectorXd& theta, const NominalInertia&, ModelTerms& term
   terms.jump = theta.head<3>();
 }
 
-EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& nominal, double impulse_time_s) {
+EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& nominal,
+                            double impulse_time_s) {
   EffectParameters p;
   p.vector = nominal.tensor * theta.head<3>();
   p.time_s = impulse_time_s;

@@ -29,7 +29,9 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& 
 std::string text(const EffectParameters& p) { return printf_text("rotated by %.2f deg", p.angle_deg); }
 
 nlohmann::json json(const EffectParameters& p) {
-  return {{"angle_deg", p.angle_deg}, {"rotation", json_quat(p.rotation)}, {"tensor_kg_m2", json_matrix(p.tensor_kg_m2)}};
+  return {{"angle_deg", p.angle_deg},
+          {"rotation", json_quat(p.rotation)},
+          {"tensor_kg_m2", json_matrix(p.tensor_kg_m2)}};
 }
 
 // Turned by less than 0.25°.

@@ -49,15 +49,16 @@ std::string text(const EffectParameters& p) {
   change.cwiseAbs().maxCoeff(&most);
   const char* axis[] = {"x", "y", "z"};
   return printf_text("principal moments about body x, y, z %.4g, %.4g, %.4g kg m^2", m(0), m(1), m(2)) +
-         printf_text(" (x %+.1f %%, y %+.1f %%, z %+.1f %% from nominal); most changed: ", change(0), change(1),
-                     change(2)) +
+         printf_text(" (x %+.1f %%, y %+.1f %%, z %+.1f %% from nominal); most changed: ", change(0),
+                     change(1), change(2)) +
          axis[most] + printf_text(" (%+.1f %%)", change(most));
 }
 
 nlohmann::json json(const EffectParameters& p) {
   return {{"principal_kg_m2", json_vec(p.principal_body_order_kg_m2)},
           {"nominal_principal_kg_m2", json_vec(p.nominal_body_order_kg_m2)},
-          {"principal_axes_order", "body file axes x, y, z (each principal axis by the body axis it lies nearest)"},
+          {"principal_axes_order",
+           "body file axes x, y, z (each principal axis by the body axis it lies nearest)"},
           {"principal_ascending_kg_m2", json_vec(p.principal_kg_m2)},
           {"tensor_kg_m2", json_matrix(p.tensor_kg_m2)}};
 }
@@ -67,7 +68,8 @@ std::string too_small(const EffectParameters& p, const SignificanceScale& scale)
   if (scale.nominal == nullptr) return {};
   const double change =
       (p.principal_kg_m2.cwiseQuotient(scale.nominal->principal_moments).array() - 1.0).abs().maxCoeff();
-  if (change < 0.005) return printf_text("its moments differ from nominal by at most %.2g %%", 100.0 * change);
+  if (change < 0.005)
+    return printf_text("its moments differ from nominal by at most %.2g %%", 100.0 * change);
   return {};
 }
 

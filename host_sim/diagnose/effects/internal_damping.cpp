@@ -42,7 +42,9 @@ std::string text(const EffectParameters& p) {
 }
 
 nlohmann::json json(const EffectParameters& p) {
-  return {{"model", "spherical_rotor_in_viscous_cavity"}, {"rotor_J_kg_m2", p.rotor_J_kg_m2}, {"c_N_m_s", p.c_N_m_s}};
+  return {{"model", "spherical_rotor_in_viscous_cavity"},
+          {"rotor_J_kg_m2", p.rotor_J_kg_m2},
+          {"c_N_m_s", p.c_N_m_s}};
 }
 
 // No bar of its own: the shrink of the held-out gap decides.

@@ -25,7 +25,9 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& 
 
 std::string text(const EffectParameters& p) { return printf_text("rotated by %.2f deg", p.angle_deg); }
 
-nlohmann::json json(const EffectParameters& p) { return {{"angle_deg", p.angle_deg}, {"rotation", json_quat(p.rotation)}}; }
+nlohmann::json json(const EffectParameters& p) {
+  return {{"angle_deg", p.angle_deg}, {"rotation", json_quat(p.rotation)}};
+}
 
 // Turned by less than 0.25°.
 std::string too_small(const EffectParameters& p, const SignificanceScale&) {
