@@ -6,6 +6,11 @@
 // Too small to matter, for the effect an addition brings (its own parameters):
 //   the held-out gap it starts from (RMS relative error times the mean |ω|) is below
 //   twice the data's resolution (noise_floor.hpp): nothing the sensor resolves is left;
+//   it closes less than 1 % of that gap (kSmallestShrink): with thousands of correlated
+//   samples (a filtered phone gyro) a test against noise passes on an effect that
+//   explains next to nothing, e.g. a 0.3 % gyro scale that mimics a 15 Hz low-pass
+//   (0.5 % of the gap); the weakest real effect of the withheld tests closes 1.1 % (drag
+//   from marker-derived rates), so the bar sits between them, and 2 % loses that case;
 //   otherwise the effect's own bar (its descriptor's `too_small`, effects/<name>.cpp):
 //   inertia_moments      every moment within 0.5 % of nominal;
 //   inertia_axes, sensor_misalignment   turned by less than 0.25°;
@@ -23,6 +28,7 @@
 namespace aloft::host::diagnose {
 
 constexpr double kResolutionMultiple = 2.0;
+constexpr double kSmallestShrink = 0.01;
 
 // Whether the effect `c` adds (c.effect, with c.base already in the model) is large
 // enough to matter; when not, `why` says what fell short.
