@@ -10,7 +10,11 @@ int main() {
   volatile std::uint32_t spin = 0;
   while (aloft::port::ticks() == start) spin = spin + 1u;
   const std::uint64_t later = aloft::port::ticks();
-  out.text("port contract: ticks advance ").text(later > start ? "yes" : "NO")
-      .text(", ").integer(aloft::port::ticks_per_second()).text(" per second").line();
+  out.text("port contract: ticks advance ")
+      .text(later > start ? "yes" : "NO")
+      .text(", ")
+      .integer(aloft::port::ticks_per_second())
+      .text(" per second")
+      .line();
   aloft::port::exit_with_status(later > start ? 3 : 1);
 }

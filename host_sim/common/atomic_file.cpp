@@ -10,8 +10,7 @@
 
 namespace aloft::host {
 
-void write_file_atomically(const std::string& path,
-                           const std::function<void(std::ostream&)>& write) {
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
   // Same folder as the target, so the final rename never crosses file systems.
   const std::string temporary = path + ".tmp." + std::to_string(::getpid());
   try {

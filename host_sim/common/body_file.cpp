@@ -43,8 +43,8 @@ Eigen::Quaterniond quaternion(const json& j, const std::string& key, const std::
   if (!j.is_array() || j.size() != 4) {
     fail(source, "\"" + key + "\" must be a quaternion [w, x, y, z]");
   }
-  const Eigen::Quaterniond q(number(j[0], key, source), number(j[1], key, source),
-                             number(j[2], key, source), number(j[3], key, source));
+  const Eigen::Quaterniond q(number(j[0], key, source), number(j[1], key, source), number(j[2], key, source),
+                             number(j[3], key, source));
   if (!aloft::is_unit(q)) fail(source, "\"" + key + "\" is not a unit quaternion");
   return q.normalized();
 }
@@ -71,14 +71,13 @@ void make_measured(const Make& make, InertiaTensor<double>& out, const std::stri
   check(s, source);
 }
 
-InertiaTensor<double> parse_inertia(const json& body, double mass, bool has_mass,
-                                    const std::string& source) {
+InertiaTensor<double> parse_inertia(const json& body, double mass, bool has_mass, const std::string& source) {
   if (!body.contains("inertia") || !body["inertia"].is_object()) {
     fail(source, "missing \"inertia\" object");
   }
   const json& inertia = body["inertia"];
-  const int forms = int(inertia.contains("tensor")) + int(inertia.contains("principal")) +
-                    int(inertia.contains("shape"));
+  const int forms =
+      int(inertia.contains("tensor")) + int(inertia.contains("principal")) + int(inertia.contains("shape"));
   if (forms != 1) {
     fail(source, "\"inertia\" must hold exactly one of \"tensor\", \"principal\", \"shape\"");
   }
@@ -88,17 +87,14 @@ InertiaTensor<double> parse_inertia(const json& body, double mass, bool has_mass
     if (!t.is_array() || t.size() != 3) fail(source, "\"tensor\" must be a 3x3 array");
     Eigen::Matrix3d m;
     for (int r = 0; r < 3; ++r) m.row(r) = vector3(t[size_t(r)], "tensor", source).transpose();
-    make_measured([&](double slack) { return InertiaTensor<double>::make_from_tensor(m, out, slack); },
-                  out, source);
+    make_measured([&](double slack) { return InertiaTensor<double>::make_from_tensor(m, out, slack); }, out,
+                  source);
   } else if (inertia.contains("principal")) {
     const Eigen::Vector3d moments = vector3(inertia["principal"], "principal", source);
-    const Eigen::Quaterniond axes = inertia.contains("axes")
-                                        ? quaternion(inertia["axes"], "axes", source)
-                                        : Eigen::Quaterniond::Identity();
+    const Eigen::Quaterniond axes = inertia.contains("axes") ? quaternion(inertia["axes"], "axes", source)
+                                                             : Eigen::Quaterniond::Identity();
     make_measured(
-        [&](double slack) {
-          return InertiaTensor<double>::make_from_principal(moments, axes, out, slack);
-        },
+        [&](double slack) { return InertiaTensor<double>::make_from_principal(moments, axes, out, slack); },
         out, source);
   } else {
     const json& shape = inertia["shape"];
@@ -113,13 +109,11 @@ InertiaTensor<double> parse_inertia(const json& body, double mass, bool has_mass
             source);
     } else if (shape.contains("box")) {
       const json& b = shape["box"];
-      check(InertiaTensor<double>::make_box(mass, positive(b, "x", source),
-                                            positive(b, "y", source), positive(b, "z", source),
-                                            out),
+      check(InertiaTensor<double>::make_box(mass, positive(b, "x", source), positive(b, "y", source),
+                                            positive(b, "z", source), out),
             source);
     } else if (shape.contains("sphere")) {
-      check(InertiaTensor<double>::make_sphere(mass, positive(shape["sphere"], "radius", source),
-                                               out),
+      check(InertiaTensor<double>::make_sphere(mass, positive(shape["sphere"], "radius", source), out),
             source);
     } else {
       fail(source, "unknown shape \"" + shape.begin().key() + "\" (cylinder, box or sphere)");
@@ -137,8 +131,8 @@ std::string without_library_code(const std::string& message) {
 
 // SPEC §2's keys at each level; anything else is most likely a misspelling ("intertia",
 // "marker"), which would otherwise be ignored without a word.
-void warn_unknown_keys(const json& object, std::initializer_list<const char*> known,
-                       const std::string& where, const std::string& source) {
+void warn_unknown_keys(const json& object, std::initializer_list<const char*> known, const std::string& where,
+                       const std::string& source) {
   if (!object.is_object()) return;
   std::string unknown;
   for (const auto& item : object.items()) {

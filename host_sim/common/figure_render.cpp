@@ -25,8 +25,7 @@ cairo_status_t draw_on(cairo_surface_t* surface, const std::function<void(cairo_
 
 }  // namespace
 
-FigureFiles render_svg_and_png(double width, double height,
-                               const std::function<void(cairo_t*)>& draw,
+FigureFiles render_svg_and_png(double width, double height, const std::function<void(cairo_t*)>& draw,
                                const std::string& name) {
   FigureFiles files;
   cairo_surface_t* svg = cairo_svg_surface_create_for_stream(append_to_string, &files.svg, width, height);
@@ -36,8 +35,8 @@ FigureFiles render_svg_and_png(double width, double height,
   cairo_surface_destroy(svg);
   if (status != CAIRO_STATUS_SUCCESS) throw Error(name + ".svg: " + cairo_status_to_string(status));
 
-  cairo_surface_t* image = cairo_image_surface_create(
-      CAIRO_FORMAT_RGB24, static_cast<int>(std::ceil(width)), static_cast<int>(std::ceil(height)));
+  cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(std::ceil(width)),
+                                                      static_cast<int>(std::ceil(height)));
   status = draw_on(image, draw);
   if (status == CAIRO_STATUS_SUCCESS) {
     status = cairo_surface_write_to_png_stream(image, append_to_string, &files.png);

@@ -17,8 +17,7 @@ struct FigureFiles {
 
 // Calls `draw` once on an SVG surface and once on an RGB image of width x height points,
 // and returns both encodings. Throws aloft::host::Error naming `name` if cairo fails.
-FigureFiles render_svg_and_png(double width, double height,
-                               const std::function<void(cairo_t*)>& draw,
+FigureFiles render_svg_and_png(double width, double height, const std::function<void(cairo_t*)>& draw,
                                const std::string& name);
 
 }  // namespace aloft::host

@@ -59,8 +59,6 @@ std::string check_whole_number(const std::string& text) {
 
 CLI::Validator whole_number() { return CLI::Validator(check_whole_number, "", "whole number"); }
 CLI::Validator output_file() { return CLI::Validator(check_output_file, "", "output file"); }
-CLI::Validator output_folder() {
-  return CLI::Validator(check_output_folder, "", "output folder");
-}
+CLI::Validator output_folder() { return CLI::Validator(check_output_folder, "", "output folder"); }
 
 }  // namespace aloft::host

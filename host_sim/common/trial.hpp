@@ -14,7 +14,7 @@ namespace aloft::host {
 // Marker trajectories (TRC, C3D). positions[frame][marker]; an occluded marker is NaN.
 struct MarkerTrial {
   std::string path;
-  std::string format;        // "trc" or "c3d"
+  std::string format;         // "trc" or "c3d"
   std::string units_in_file;  // "mm" or "m" as the file states them
   double rate_hz = 0.0;
   std::vector<std::string> marker_names;

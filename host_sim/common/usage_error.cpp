@@ -85,17 +85,16 @@ std::string usage_error_line(const CLI::App& app, const CLI::ParseError& error) 
   const std::string unused = first_unused_word(app, command);
   if (!unused.empty() && unused[0] == '-' && unused.size() > 1) {
     const std::vector<std::string> options = option_names(command);
-    return who + ": unknown option " + unused + suggestion(unused, options) + "; options: " +
-           join(options) + help;
+    return who + ": unknown option " + unused + suggestion(unused, options) + "; options: " + join(options) +
+           help;
   }
   if (!unused.empty() && command == &app) {
     const std::vector<std::string> commands = command_names(app);
-    return who + ": unknown command " + unused + suggestion(unused, commands) + "; commands: " +
-           join(commands) + help;
+    return who + ": unknown command " + unused + suggestion(unused, commands) +
+           "; commands: " + join(commands) + help;
   }
   if (!unused.empty()) {
-    return who + ": unexpected argument " + unused + "; options: " + join(option_names(command)) +
-           help;
+    return who + ": unexpected argument " + unused + "; options: " + join(option_names(command)) + help;
   }
   if (command == &app) {
     return who + ": no command given; commands: " + join(command_names(app)) + help;

@@ -13,8 +13,7 @@ namespace {
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
 // Root mean square difference of two candidates' held-out predictions, in noise units.
-double prediction_distance(const Candidate& a, const Candidate& b,
-                           const std::vector<const Flight*>& flights,
+double prediction_distance(const Candidate& a, const Candidate& b, const std::vector<const Flight*>& flights,
                            const std::vector<Eigen::Vector3d>& inverse_sigma) {
   double sum = 0.0;
   int count = 0;
@@ -102,11 +101,13 @@ void judge_physics(Candidate& c) {
 // A gyro scale can stand in for wrong moments, never the reverse (moment_scale_equivalence.hpp):
 // listed with a moments verdict only where the gyro reads the principal axes and a scale
 // reproduces the fitted moments exactly; never listed with a scale verdict.
-bool one_way_equivalence_allows(const Candidate& best, const Candidate& other, const RankingContext& context) {
+bool one_way_equivalence_allows(const Candidate& best, const Candidate& other,
+                                const RankingContext& context) {
   if (best.effect == Effect::gyro_scale && other.effect == Effect::inertia_moments) return false;
   if (best.effect != Effect::inertia_moments || other.effect != Effect::gyro_scale) return true;
   if (context.nominal == nullptr || context.flights.empty()) return false;
-  return gyro_along_principal_axes(context.nominal->principal_axes, context.flights.front()->sensor_to_body) &&
+  return gyro_along_principal_axes(context.nominal->principal_axes,
+                                   context.flights.front()->sensor_to_body) &&
          scale_mimicking_moments(context.nominal->principal_moments, best.params.principal_kg_m2).has_value();
 }
 
@@ -137,14 +138,17 @@ StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context
     for (Effect e : c.base) parameters += effect_penalty_count(e);
     if (!c.reference || c.effect != Effect::none) parameters += effect_penalty_count(c.effect);
     c.score = c.heldout_chi_square / dispersion + kPenaltyPerParameter * parameters;
-    c.shrink = reference.heldout_rms_rel_err > 0 ? 1.0 - c.heldout_rms_rel_err / reference.heldout_rms_rel_err : 0.0;
+    c.shrink =
+        reference.heldout_rms_rel_err > 0 ? 1.0 - c.heldout_rms_rel_err / reference.heldout_rms_rel_err : 0.0;
     c.reference_rms_rel_err = reference.heldout_rms_rel_err;
-    c.shrink_da = reference.heldout_rms_da_deg > 0 ? 1.0 - c.heldout_rms_da_deg / reference.heldout_rms_da_deg : 0.0;
+    c.shrink_da =
+        reference.heldout_rms_da_deg > 0 ? 1.0 - c.heldout_rms_da_deg / reference.heldout_rms_da_deg : 0.0;
     if (c.reference) continue;
     c.identifiable = identifiable(c, context.mean_speed, context.duration_s);
     if (!c.identifiable && c.note.empty()) {
-      c.note = "not identifiable: this flight (too short, too slow, or a symmetric body) does not "
-               "pin its parameters";
+      c.note =
+          "not identifiable: this flight (too short, too slow, or a symmetric body) does not "
+          "pin its parameters";
     }
     judge_physics(c);
   }

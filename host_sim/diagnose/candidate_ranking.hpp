@@ -49,7 +49,6 @@ StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context
 // `inverse_sigma[f]` weighs flight f (for the indistinguishability test).
 void rank_candidates(Analysis& analysis, const RankingContext& context);
 void rank_candidates(Analysis& analysis, bool gyro_input, const std::vector<const Flight*>& flights,
-                     const std::vector<Eigen::Vector3d>& inverse_sigma, double mean_speed,
-                     double duration_s);
+                     const std::vector<Eigen::Vector3d>& inverse_sigma, double mean_speed, double duration_s);
 
 }  // namespace aloft::host::diagnose

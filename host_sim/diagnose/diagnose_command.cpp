@@ -45,8 +45,8 @@ std::pair<double, double> parse_window(const std::string& text) {
     const std::string a_text = text.substr(0, colon), b_text = text.substr(colon + 1);
     const double a = std::stod(a_text, &used_a);
     const double b = std::stod(b_text, &used_b);
-    if (used_a != a_text.size() || used_b != b_text.size() || !std::isfinite(a) ||
-        !std::isfinite(b) || !(a < b)) {
+    if (used_a != a_text.size() || used_b != b_text.size() || !std::isfinite(a) || !std::isfinite(b) ||
+        !(a < b)) {
       throw Error(bad);
     }
     return {a, b};
@@ -63,9 +63,8 @@ std::string file_name(const std::string& path) { return std::filesystem::path(pa
 
 void require_enough_samples(const diagnose::Flight& flight, const std::string& source) {
   if (flight.size() < diagnose::kMinimumSamples) {
-    throw Error(source + ": only " + std::to_string(flight.size()) +
-                " samples in the flight; at least " + std::to_string(diagnose::kMinimumSamples) +
-                " are needed to judge it");
+    throw Error(source + ": only " + std::to_string(flight.size()) + " samples in the flight; at least " +
+                std::to_string(diagnose::kMinimumSamples) + " are needed to judge it");
   }
 }
 
@@ -100,11 +99,13 @@ void run_diagnose(const DiagnoseOptions& o) {
       char length[32];
       std::snprintf(length, sizeof length, "%.1f s", log_duration(log));
       if (log.accel_m_s2.empty()) {
-        throw Error(o.imu + ": a " + length + " log without an accelerometer to find its flights by; give --segments or --window");
+        throw Error(o.imu + ": a " + length +
+                    " log without an accelerometer to find its flights by; give --segments or --window");
       }
       const std::vector<Segment> windows = diagnose::airborne_windows(log);
       if (windows.empty()) {
-        throw Error(o.imu + ": the flight detector finds no airborne window in this " + length + " log; give --segments or --window");
+        throw Error(o.imu + ": the flight detector finds no airborne window in this " + length +
+                    " log; give --segments or --window");
       }
       session = true;
       found_by_detector = true;
@@ -117,19 +118,22 @@ void run_diagnose(const DiagnoseOptions& o) {
     PoseFitReport fit_report;
     const MarkerTrial trial = read_marker_file(o.markers);
     const PoseTrial poses = fit_poses(trial, body, &fit_report);
-    if (const auto misfit = diagnose::marker_misfit(trial, body, fit_report)) throw Error(o.markers + ": " + *misfit);
+    if (const auto misfit = diagnose::marker_misfit(trial, body, fit_report))
+      throw Error(o.markers + ": " + *misfit);
     flights.push_back(diagnose::flight_from_poses(poses, file_name(o.markers)));
   } else {
     source = o.poses;
-    flights.push_back(diagnose::flight_from_poses(read_pose_file(o.poses, o.pose_naming), file_name(o.poses)));
+    flights.push_back(
+        diagnose::flight_from_poses(read_pose_file(o.poses, o.pose_naming), file_name(o.poses)));
   }
 
   nlohmann::json report;
   if (session) {
     diagnose::SessionDiagnosis d = diagnose::diagnose_session(flights, nominal, o.threads);
     if (found_by_detector) {
-      d.pooled.notes.push_back(std::to_string(flights.size()) +
-                               " flight(s) found by the accelerometer's flight detector (no --segments or --window given)");
+      d.pooled.notes.push_back(
+          std::to_string(flights.size()) +
+          " flight(s) found by the accelerometer's flight detector (no --segments or --window given)");
     }
     report = diagnose::session_report(d);
     std::cout << diagnose::session_summary(d);
@@ -157,9 +161,10 @@ void run_diagnose(const DiagnoseOptions& o) {
 
 void add_diagnose_command(CLI::App& app) {
   auto options = std::make_shared<DiagnoseOptions>();
-  auto* cmd = app.add_subcommand(
-      "diagnose", "where the simulation parts from the measured motion, which unmodelled effect "
-                  "causes it, and how far the gap shrinks with it (judged on held-out data)");
+  auto* cmd =
+      app.add_subcommand("diagnose",
+                         "where the simulation parts from the measured motion, which unmodelled effect "
+                         "causes it, and how far the gap shrinks with it (judged on held-out data)");
   cmd->add_option("--body", options->body, "body file (SPEC §2)")->required();
   cmd->add_option("--imu", options->imu, "IMU log, plain or phyphox CSV");
   cmd->add_option("--segments", options->segments, "segments CSV: one flight per row (pooled analysis)");

@@ -80,8 +80,8 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
   if (usable < kMinimumSamples) {
     analysis.verdict.confident = false;
     analysis.verdict.could_not_judge.push_back(
-        "only " + std::to_string(usable) + " usable samples (at least " +
-        std::to_string(kMinimumSamples) + " are needed to fit an initial rate and an effect)");
+        "only " + std::to_string(usable) + " usable samples (at least " + std::to_string(kMinimumSamples) +
+        " are needed to fit an initial rate and an effect)");
     analysis.where.dominant_axis = "x";
     return d;
   }
@@ -144,16 +144,15 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
   // The nominal model: the reference every candidate of the first step is judged against.
   Candidate nominal_model;
   nominal_model.fit = none_full;
-  judge_held_out(nominal_model, [&](std::size_t f) {
-    return fit_effect(Effect::none, nominal, {train[f]}, &none_full);
-  });
+  judge_held_out(nominal_model,
+                 [&](std::size_t f) { return fit_effect(Effect::none, nominal, {train[f]}, &none_full); });
   for (Effect effect : candidate_effects(flight.gyro_input)) {
     analysis.candidates.push_back(effect == Effect::none ? nominal_model : evaluate(nominal_model, effect));
   }
 
   rule_out_senseless(analysis.candidates);
-  const RankingContext context{flight.gyro_input, {&flight}, {inverse_sigma}, flight.mean_speed(),
-                               d.end_s - d.start_s, &nominal, d.noise.resolution};
+  const RankingContext context{flight.gyro_input,   {&flight}, {inverse_sigma},   flight.mean_speed(),
+                               d.end_s - d.start_s, &nominal,  d.noise.resolution};
   rank_candidates(analysis, context);
   select_stepwise(analysis, context, evaluate);
   attach_flight_tensor_report(analysis, flight, nominal);

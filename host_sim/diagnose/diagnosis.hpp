@@ -65,12 +65,12 @@ struct Candidate {
   double heldout_rms_da_deg = 0.0;
   double heldout_rms_rel_err = 0.0;
   double score = 0.0;
-  double shrink = 0.0;     // 1 - rel_err(with) / rel_err(none), held out
-  double shrink_da = 0.0;  // the same for DA
+  double shrink = 0.0;                 // 1 - rel_err(with) / rel_err(none), held out
+  double shrink_da = 0.0;              // the same for DA
   double reference_rms_rel_err = 0.0;  // held out, of the model this candidate is ranked against
   bool identifiable = true;
   bool physical = true;
-  bool evaluated = true;   // false: not applicable here (reason in note)
+  bool evaluated = true;  // false: not applicable here (reason in note)
   std::string note;
   std::vector<Effect> indistinguishable;  // candidates the data cannot tell from this one
   // Session only: the effect parameters fitted without each flight (leave one flight out).
@@ -85,9 +85,9 @@ struct Candidate {
 struct VerdictEffect {
   Effect effect = Effect::none;
   std::vector<Effect> equivalent;
-  EffectParameters params;  // from the final model's fit
-  int step = 0;             // the step it joined at (1: first)
-  double heldout_rms_rel_err_after = 0.0;   // of the model as it stood after that step
+  EffectParameters params;                 // from the final model's fit
+  int step = 0;                            // the step it joined at (1: first)
+  double heldout_rms_rel_err_after = 0.0;  // of the model as it stood after that step
   double heldout_rms_da_after_deg = 0.0;
   double step_shrink = 0.0;  // 1 - rel_err(after its step) / rel_err(before)
   double shrink = 0.0;       // 1 - rel_err(final model) / rel_err(final model without it)
@@ -177,7 +177,7 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
 
 // A session: every flight on its own, and the pooled analysis with effects shared by all
 // flights, judged by leaving one flight out. `threads` >= 1.
-SessionDiagnosis diagnose_session(const std::vector<Flight>& flights,
-                                  const NominalInertia& nominal, int threads = 2);
+SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const NominalInertia& nominal,
+                                  int threads = 2);
 
 }  // namespace aloft::host::diagnose

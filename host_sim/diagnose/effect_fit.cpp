@@ -19,8 +19,8 @@ using Vec3 = Eigen::Vector3d;
 
 // The initial rate guess at sample `ref`: the nominal fit's rate there if there is one,
 // else the mean of the usable readings within two samples of it.
-Vec3 starting_rate(const FlightData& data, std::size_t ref, const EffectFit* nominal_fit,
-                   std::size_t index, const NominalInertia& nominal) {
+Vec3 starting_rate(const FlightData& data, std::size_t ref, const EffectFit* nominal_fit, std::size_t index,
+                   const NominalInertia& nominal) {
   const Flight& flight = *data.flight;
   if (nominal_fit != nullptr && index < nominal_fit->flights.size()) {
     std::vector<Vec3> readings;
@@ -40,8 +40,7 @@ Vec3 starting_rate(const FlightData& data, std::size_t ref, const EffectFit* nom
   return body_rate_of_reading(flight, count > 0 ? Vec3(sum / count) : flight.omega[ref]);
 }
 
-void residuals_of(const FlightData& data, const std::vector<Vec3>& readings,
-                  Eigen::VectorXd& r) {
+void residuals_of(const FlightData& data, const std::vector<Vec3>& readings, Eigen::VectorXd& r) {
   const Flight& flight = *data.flight;
   r.setZero(static_cast<Eigen::Index>(3 * flight.size()));
   for (std::size_t k = 0; k < flight.size(); ++k) {
@@ -96,9 +95,9 @@ struct Setup {
   const std::vector<FlightData>* data;
   std::vector<std::size_t> refs;
   double impulse_time_s = 0.0;
-  std::vector<Effect> base;     // compound: effects fitted jointly with `effect`
-  Eigen::VectorXd base_theta;   // their fitted values (impulse scan, starting point)
-  unsigned threads = 1;         // flights fitted concurrently (a pooled fit)
+  std::vector<Effect> base;    // compound: effects fitted jointly with `effect`
+  Eigen::VectorXd base_theta;  // their fitted values (impulse scan, starting point)
+  unsigned threads = 1;        // flights fitted concurrently (a pooled fit)
 
   EffectModel model() const { return EffectModel{effect, *nominal, impulse_time_s, base}; }
 };
@@ -109,13 +108,13 @@ ArrowProblem problem_of(const Setup& setup, int shared_count) {
   problem.local_count = 3;
   problem.block_count = static_cast<int>(setup.data->size());
   problem.threads = setup.threads;
-  problem.residuals = [&setup](int block, const Eigen::VectorXd& shared,
-                               const Eigen::VectorXd& local, Eigen::VectorXd& r) {
+  problem.residuals = [&setup](int block, const Eigen::VectorXd& shared, const Eigen::VectorXd& local,
+                               Eigen::VectorXd& r) {
     const FlightData& d = (*setup.data)[static_cast<std::size_t>(block)];
     const EffectModel model = setup.model();
     std::vector<Vec3> readings;
-    predict_readings(model, *d.flight, setup.refs[static_cast<std::size_t>(block)],
-                     Vec3(local), shared, readings);
+    predict_readings(model, *d.flight, setup.refs[static_cast<std::size_t>(block)], Vec3(local), shared,
+                     readings);
     residuals_of(d, readings, r);
   };
   return problem;
@@ -154,7 +153,8 @@ EffectFit result_of(const Setup& setup, const LeastSquaresResult& solution, int 
 std::vector<Eigen::VectorXd> starting_rates(const Setup& setup, const EffectFit* nominal_fit,
                                             const Eigen::VectorXd& theta) {
   const bool rigid = !describe(setup.effect).neutral_at_zero;
-  const EffectModel model{rigid ? Effect::none : setup.effect, *setup.nominal, setup.impulse_time_s, setup.base};
+  const EffectModel model{rigid ? Effect::none : setup.effect, *setup.nominal, setup.impulse_time_s,
+                          setup.base};
   const Eigen::VectorXd held = rigid ? Eigen::VectorXd(theta.head(model_parameter_count(model))) : theta;
   // At theta = 0 every effect is the nominal model, whose fitted rates are already the
   // answer: nothing to refine (never so for a compound model: its base is fitted).
@@ -162,7 +162,9 @@ std::vector<Eigen::VectorXd> starting_rates(const Setup& setup, const EffectFit*
   std::vector<Eigen::VectorXd> rates(setup.data->size());
   const auto rate_of = [&](std::size_t i) {
     const Vec3 guess = starting_rate((*setup.data)[i], setup.refs[i], nominal_fit, i, *setup.nominal);
-    rates[i] = nominal_model ? guess : fit_initial_state(model, (*setup.data)[i], setup.refs[i], held, &guess).omega_ref;
+    rates[i] = nominal_model
+                   ? guess
+                   : fit_initial_state(model, (*setup.data)[i], setup.refs[i], held, &guess).omega_ref;
   };
   if (setup.threads > 1 && rates.size() > 1) {
     parallel_for(rates.size(), setup.threads, rate_of);
@@ -219,7 +221,7 @@ std::vector<std::size_t> scan_impulse_times(const Setup& setup, const std::vecto
     v_after[k] = v_after[k + 1] + v[k];
   }
   std::vector<std::pair<double, std::size_t>> gains;
-  for (std::size_t j = 2; j + 1 < n; ++j) {  // jump between samples j-1 and j
+  for (std::size_t j = 2; j + 1 < n; ++j) {                        // jump between samples j-1 and j
     if (flight.time_s[j - 1] < flight.settling_until_s) continue;  // the gyro's filter settling
     const bool after_reference = j > ref;
     const std::size_t anchor = after_reference ? j : j - 1;
@@ -288,7 +290,8 @@ EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
     }
   }
   const std::size_t centre = best;
-  for (long off : {-2L, -1L, 1L, 2L}) try_time(static_cast<std::size_t>(std::max(0L, static_cast<long>(centre) + off)), false);
+  for (long off : {-2L, -1L, 1L, 2L})
+    try_time(static_cast<std::size_t>(std::max(0L, static_cast<long>(centre) + off)), false);
   if (best == 0) best = flight.size() / 2;
   setup.impulse_time_s = 0.5 * (flight.time_s[best - 1] + flight.time_s[best]);
   const ArrowProblem problem = problem_of(setup, p);
@@ -297,18 +300,16 @@ EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
 
 }  // namespace
 
-EffectModel model_of(const EffectFit& fit, const NominalInertia& nominal,
-                     std::size_t index) {
+EffectModel model_of(const EffectFit& fit, const NominalInertia& nominal, std::size_t index) {
   EffectModel model{fit.effect, nominal, 0.0, fit.base};
   if (index < fit.flights.size()) model.impulse_time_s = fit.flights[index].impulse_time_s;
   return model;
 }
 
-void predict(const EffectFit& fit, const NominalInertia& nominal, std::size_t index,
-             const Flight& flight, std::vector<Eigen::Vector3d>& readings) {
+void predict(const EffectFit& fit, const NominalInertia& nominal, std::size_t index, const Flight& flight,
+             std::vector<Eigen::Vector3d>& readings) {
   const FlightState& state = fit.flights[index];
-  predict_readings(model_of(fit, nominal, index), flight, state.ref, state.omega_ref, fit.theta,
-                   readings);
+  predict_readings(model_of(fit, nominal, index), flight, state.ref, state.omega_ref, fit.theta, readings);
 }
 
 double weighted_squares(const FlightData& data, const std::vector<Eigen::Vector3d>& readings,
@@ -325,9 +326,8 @@ double weighted_squares(const FlightData& data, const std::vector<Eigen::Vector3
   return sum;
 }
 
-EffectFit fit_effect(Effect effect, const NominalInertia& nominal,
-                     const std::vector<FlightData>& data, const EffectFit* nominal_fit,
-                     const Eigen::VectorXd* theta_start, unsigned threads) {
+EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::vector<FlightData>& data,
+                     const EffectFit* nominal_fit, const Eigen::VectorXd* theta_start, unsigned threads) {
   Setup setup{effect, &nominal, &data, {}, 0.0, {}, Eigen::VectorXd(), threads};
   for (const FlightData& d : data) setup.refs.push_back(reference_index(effect, *d.flight));
   if (effect == Effect::impulse) {
@@ -422,9 +422,7 @@ EffectFit fit_initial_rates(const EffectFit& fixed, const NominalInertia& nomina
   ArrowProblem problem = problem_of(setup, 0);
   ArrowProblem held = problem;
   held.residuals = [&problem, theta](int block, const Eigen::VectorXd&, const Eigen::VectorXd& local,
-                                     Eigen::VectorXd& r) {
-    problem.residuals(block, theta, local, r);
-  };
+                                     Eigen::VectorXd& r) { problem.residuals(block, theta, local, r); };
   LeastSquaresOptions rates_only;
   rates_only.normal_at_solution = false;  // no effect parameter to give an error for
   const LeastSquaresResult solution =

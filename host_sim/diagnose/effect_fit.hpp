@@ -21,12 +21,12 @@ using SampleMask = std::vector<char>;
 
 struct FlightData {
   const Flight* flight = nullptr;
-  SampleMask mask;               // training samples of this fit
+  SampleMask mask;                // training samples of this fit
   Eigen::Vector3d inverse_sigma;  // 1 / noise floor per axis
 };
 
 struct FlightState {
-  std::size_t ref = 0;          // sample whose body rate is omega_ref
+  std::size_t ref = 0;  // sample whose body rate is omega_ref
   Eigen::Vector3d omega_ref = Eigen::Vector3d::Zero();
   double impulse_time_s = 0.0;  // impulse only
 };
@@ -34,9 +34,9 @@ struct FlightState {
 struct EffectFit {
   Effect effect = Effect::none;
   std::vector<Effect> base;  // a compound model: effects fitted with `effect` (flight_model.hpp)
-  Eigen::VectorXd theta;  // effect parameters, shared by the flights (see flight_model.hpp)
+  Eigen::VectorXd theta;     // effect parameters, shared by the flights (see flight_model.hpp)
   std::vector<FlightState> flights;
-  double cost = 0.0;      // weighted sum of squared training residuals
+  double cost = 0.0;       // weighted sum of squared training residuals
   int residual_count = 0;  // training residuals (3 per sample)
   // Standard errors of theta from cost/dof * (J^T J)^-1 (initial rates marginalised);
   // infinite where the data does not inform a parameter.
@@ -51,8 +51,8 @@ struct EffectFit {
 EffectModel model_of(const EffectFit& fit, const NominalInertia& nominal, std::size_t index);
 
 // Predicted readings of flight `index` under `fit`.
-void predict(const EffectFit& fit, const NominalInertia& nominal, std::size_t index,
-             const Flight& flight, std::vector<Eigen::Vector3d>& readings);
+void predict(const EffectFit& fit, const NominalInertia& nominal, std::size_t index, const Flight& flight,
+             std::vector<Eigen::Vector3d>& readings);
 
 // Fits `effect` to `data`. `nominal_fit`, the `none` fit of the same data, gives the
 // starting rates (nullptr: start from the readings themselves). An impulse belongs to one
@@ -60,9 +60,9 @@ void predict(const EffectFit& fit, const NominalInertia& nominal, std::size_t in
 // `theta_start` (optional) starts the effect parameters elsewhere than at nominal.
 // `threads`: the flights of a pooled fit are evaluated on up to this many threads (the
 // result is the same whatever the count).
-EffectFit fit_effect(Effect effect, const NominalInertia& nominal,
-                     const std::vector<FlightData>& data, const EffectFit* nominal_fit,
-                     const Eigen::VectorXd* theta_start = nullptr, unsigned threads = 1);
+EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::vector<FlightData>& data,
+                     const EffectFit* nominal_fit, const Eigen::VectorXd* theta_start = nullptr,
+                     unsigned threads = 1);
 
 // Fits the effects of `base` (a fit of the same data) with `added` jointly: a compound
 // model, the next step of a stepwise selection (stepwise_selection.hpp). The base
@@ -70,8 +70,7 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal,
 // whole compound theta); the rates start at the base fit's. An impulse in the base keeps
 // its fitted time; an added impulse is searched about the base model.
 EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalInertia& nominal,
-                           const std::vector<FlightData>& data,
-                           const Eigen::VectorXd* theta_start = nullptr);
+                           const std::vector<FlightData>& data, const Eigen::VectorXd* theta_start = nullptr);
 
 // The effect parameters without each flight in turn (one Gauss-Newton step from `fit`, the
 // all-flights solution; levenberg_marquardt.hpp), the flights on up to `threads` threads.

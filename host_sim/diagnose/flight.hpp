@@ -21,9 +21,9 @@ struct Flight {
   // rates share a pose, correlation -1/2), which the noise floor allows for.
   bool rates_from_differences = false;
   Eigen::Quaterniond sensor_to_body = Eigen::Quaterniond::Identity();
-  std::vector<double> time_s;            // as recorded, strictly increasing
-  std::vector<Eigen::Vector3d> omega;    // measured rate (sensor axes / body axes)
-  std::vector<char> usable;              // 0: left out of every fit (e.g. saturated)
+  std::vector<double> time_s;          // as recorded, strictly increasing
+  std::vector<Eigen::Vector3d> omega;  // measured rate (sensor axes / body axes)
+  std::vector<char> usable;            // 0: left out of every fit (e.g. saturated)
   // The sensor's noise per axis where its log lies still (rest_periods.hpp); unset when
   // the log has no rest. The noise floor prefers it (noise_floor.hpp).
   std::optional<Eigen::Vector3d> rest_noise;

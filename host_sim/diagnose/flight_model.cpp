@@ -37,7 +37,8 @@ class FlightDynamics {
         bias_(terms.bias),
         scale_(terms.scale) {
     const Mat3 sensor_to_body = flight.sensor_to_body.toRotationMatrix();
-    sensor_rotation_ = terms.misaligned ? Mat3(sensor_to_body * terms.misalignment.toRotationMatrix()) : sensor_to_body;
+    sensor_rotation_ =
+        terms.misaligned ? Mat3(sensor_to_body * terms.misalignment.toRotationMatrix()) : sensor_to_body;
     // The shell carries the nominal tensor less the rotor, so that with the rotor locked
     // the body is the nominal one.
     shell_ = inertia_ - rotor_ * Mat3::Identity();
@@ -101,7 +102,8 @@ class FlightDynamics {
   template <std::size_t N>
   [[gnu::always_inline]] void rk4_pair(State& x, double hx, State& y, double hy) const {
     Lanes<N> w;
-    for (std::size_t i = 0; i < N; ++i) w[i] = Eigen::Array2d(x(static_cast<Eigen::Index>(i)), y(static_cast<Eigen::Index>(i)));
+    for (std::size_t i = 0; i < N; ++i)
+      w[i] = Eigen::Array2d(x(static_cast<Eigen::Index>(i)), y(static_cast<Eigen::Index>(i)));
     const Eigen::Array2d h(hx, hy);
     const auto along = [](const Lanes<N>& a, const Eigen::Array2d& s, const Lanes<N>& k) {
       Lanes<N> out;
@@ -122,8 +124,8 @@ class FlightDynamics {
 
   // A 3x3 matrix times a vector as Eigen's fixed-size product sums it: rows 0 and 1 as a
   // packet, left to right; row 2 on its own, the last two terms first.
-  [[gnu::always_inline]] static Lanes<3> times(const Mat3& m, const Eigen::Array2d& v0, const Eigen::Array2d& v1,
-                                               const Eigen::Array2d& v2) {
+  [[gnu::always_inline]] static Lanes<3> times(const Mat3& m, const Eigen::Array2d& v0,
+                                               const Eigen::Array2d& v1, const Eigen::Array2d& v2) {
     return {m(0, 0) * v0 + m(0, 1) * v1 + m(0, 2) * v2, m(1, 0) * v0 + m(1, 1) * v1 + m(1, 2) * v2,
             m(2, 0) * v0 + (m(2, 1) * v1 + m(2, 2) * v2)};
   }
@@ -195,11 +197,7 @@ class FlightDynamics {
   }
   void set_impulse_scale(const Mat3& nominal_tensor) { nominal_impulse_scale_ = nominal_tensor; }
 
-  Vec3 reading(const State& x) const {
-    return scale_.cwiseProduct(body_to_sensor_ * x.head<3>()) + bias_;
-  }
-
-
+  Vec3 reading(const State& x) const { return scale_.cwiseProduct(body_to_sensor_ * x.head<3>()) + bias_; }
 
  private:
   Mat3 inertia_;
@@ -303,7 +301,9 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
 
   // Forwards from the reference and backwards from it; an impulse strictly between two
   // samples (or on the later one) is applied where it falls.
-  const auto jump_within = [&](double early, double late) { return has_jump && t_jump > early && t_jump <= late; };
+  const auto jump_within = [&](double early, double late) {
+    return has_jump && t_jump > early && t_jump <= late;
+  };
   // The forward walk's step to sample k, and the backward walk's to sample k.
   const auto step_up = [&](State& x, std::size_t k) {
     const double a = true_time(flight.time_s[k - 1]);
@@ -335,7 +335,8 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   std::size_t next_up = ref + 1, next_down = ref;  // the backward walk's next sample is next_down - 1
   for (; next_up < n && next_down > 0; ++next_up, --next_down) {
     const double a_up = true_time(flight.time_s[next_up - 1]), b_up = true_time(flight.time_s[next_up]);
-    const double a_down = true_time(flight.time_s[next_down]), b_down = true_time(flight.time_s[next_down - 1]);
+    const double a_down = true_time(flight.time_s[next_down]),
+                 b_down = true_time(flight.time_s[next_down - 1]);
     if (!jump_within(a_up, b_up) && !jump_within(b_down, a_down)) {
       dynamics.advance_pair(up, a_up, b_up, down, a_down, b_down);
       readings[next_up] = dynamics.reading(up);
@@ -353,7 +354,8 @@ EffectParameters effect_parameters(const EffectModel& model, const Eigen::Vector
   return effect_parameters(model, theta, model.effect);
 }
 
-EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& all_theta, Effect effect) {
+EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& all_theta,
+                                   Effect effect) {
   const Eigen::VectorXd theta = slice_of(model, all_theta, effect);
   if (theta.size() != effect_parameter_count(effect)) return EffectParameters();
   return describe(effect).hooks.parameters(theta, model.nominal, model.impulse_time_s);

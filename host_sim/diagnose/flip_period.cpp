@@ -14,8 +14,9 @@ std::vector<double> intermediate_component(const Flight& flight, const NominalIn
   return out;
 }
 
-std::optional<double> period_from(const Flight& flight, const NominalInertia& nominal, const EffectModel& model,
-                                  const Eigen::VectorXd& theta, const FlightState& start) {
+std::optional<double> period_from(const Flight& flight, const NominalInertia& nominal,
+                                  const EffectModel& model, const Eigen::VectorXd& theta,
+                                  const FlightState& start) {
   std::vector<Eigen::Vector3d> readings;
   predict_readings(model, flight, start.ref, start.omega_ref, theta, readings);
   return point_method_period(flight.time_s, intermediate_component(flight, nominal, readings));
@@ -54,7 +55,8 @@ std::optional<FlipPeriod> flip_period(const Flight& flight, const NominalInertia
                                       const EffectModel* diagnosed, const Eigen::VectorXd& theta,
                                       const FlightState* nominal_start, const FlightState* diagnosed_start) {
   if (flight.size() < 5) return std::nullopt;
-  const auto measured = point_method_period(flight.time_s, intermediate_component(flight, nominal, flight.omega));
+  const auto measured =
+      point_method_period(flight.time_s, intermediate_component(flight, nominal, flight.omega));
   const EffectModel plain{Effect::none, nominal, 0.0};
   const Eigen::VectorXd none;
   const auto nominal_period = period_from(flight, nominal, plain, none, first_sample(plain, flight, none));
@@ -62,10 +64,12 @@ std::optional<FlipPeriod> flip_period(const Flight& flight, const NominalInertia
   FlipPeriod out;
   out.measured_s = *measured;
   out.nominal_s = *nominal_period;
-  if (nominal_start != nullptr) out.nominal_fitted_s = period_from(flight, nominal, plain, none, *nominal_start);
+  if (nominal_start != nullptr)
+    out.nominal_fitted_s = period_from(flight, nominal, plain, none, *nominal_start);
   if (diagnosed == nullptr) return out;
   out.diagnosed_s = period_from(flight, nominal, *diagnosed, theta, first_sample(*diagnosed, flight, theta));
-  if (diagnosed_start != nullptr) out.diagnosed_fitted_s = period_from(flight, nominal, *diagnosed, theta, *diagnosed_start);
+  if (diagnosed_start != nullptr)
+    out.diagnosed_fitted_s = period_from(flight, nominal, *diagnosed, theta, *diagnosed_start);
   return out;
 }
 

@@ -31,8 +31,8 @@ std::optional<double> point_method_period(const std::vector<double>& time_s,
 
 struct FlipPeriod {
   double measured_s = 0.0;
-  double nominal_s = 0.0;             // nominal model from the first sample
-  std::optional<double> diagnosed_s;  // diagnosed model from the first sample
+  double nominal_s = 0.0;                                      // nominal model from the first sample
+  std::optional<double> diagnosed_s;                           // diagnosed model from the first sample
   std::optional<double> nominal_fitted_s, diagnosed_fitted_s;  // from the fitted initial state
   double nominal_error() const { return std::abs(nominal_s - measured_s) / measured_s; }
   double error(double predicted_s) const { return std::abs(predicted_s - measured_s) / measured_s; }

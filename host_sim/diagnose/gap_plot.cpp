@@ -61,9 +61,9 @@ std::pair<std::pair<double, double>, std::pair<double, double>> data_range(const
 }
 
 // Ticks and tick labels on both axes, the axis titles, the frame.
-void draw_axes(cairo_t* cr, const Panel& panel, const AxisTicks& xt, const AxisTicks& yt,
-               double left, double right, double plot_top, double plot_bottom,
-               const std::function<double(double)>& px, const std::function<double(double)>& py) {
+void draw_axes(cairo_t* cr, const Panel& panel, const AxisTicks& xt, const AxisTicks& yt, double left,
+               double right, double plot_top, double plot_bottom, const std::function<double(double)>& px,
+               const std::function<double(double)>& py) {
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, 11);
@@ -184,8 +184,10 @@ std::vector<Panel> panels_of(const FlightDiagnosis& d) {
   if (a.where.invariants) {
     for (const InvariantBehaviour* inv : {&a.where.invariants->energy, &a.where.invariants->momentum}) {
       Series s{inv->name == "kinetic_energy" ? "kinetic energy" : "|L|", {}, {}, 0, 0, 0};
-      if (inv->name == "kinetic_energy") s.r = 0.9, s.g = 0.5;
-      else s.g = 0.5, s.b = 0.3;
+      if (inv->name == "kinetic_energy")
+        s.r = 0.9, s.g = 0.5;
+      else
+        s.g = 0.5, s.b = 0.3;
       for (std::size_t k = 0; k < flight.size(); ++k) {
         s.x.push_back(flight.time_s[k] - flight.start_s());
         s.y.push_back(inv->mean != 0 ? 100.0 * (inv->series[k] / inv->mean - 1.0) : NAN);
@@ -209,7 +211,8 @@ void draw(cairo_t* cr, const std::vector<Panel>& panels, const std::string& titl
 }
 
 void write_bytes(const std::string& path, const std::string& bytes) {
-  write_file_atomically(path, [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
+  write_file_atomically(
+      path, [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
 }
 
 void write_figure(const std::vector<Panel>& panels, const std::string& title, const std::string& stem) {
@@ -247,7 +250,8 @@ void write_session_plots(const SessionDiagnosis& s, const NominalInertia&, const
   make_dir(dir);
   for (const FlightDiagnosis& d : s.flights) {
     if (d.flight == nullptr || d.analysis.candidates.empty()) continue;
-    write_figure(panels_of(d), title_of(d), (std::filesystem::path(dir) / ("flight_" + safe_name(d.name))).string());
+    write_figure(panels_of(d), title_of(d),
+                 (std::filesystem::path(dir) / ("flight_" + safe_name(d.name))).string());
   }
 }
 

@@ -24,9 +24,9 @@ Folds interleaved_folds(std::size_t sample_count) {
 SampleMask all_samples(std::size_t sample_count) { return SampleMask(sample_count, 1); }
 
 SampleMask leading_samples(std::size_t sample_count, double fraction, std::size_t minimum) {
-  const std::size_t count = std::min(
-      sample_count,
-      std::max(minimum, static_cast<std::size_t>(fraction * static_cast<double>(sample_count))));
+  const std::size_t count =
+      std::min(sample_count,
+               std::max(minimum, static_cast<std::size_t>(fraction * static_cast<double>(sample_count))));
   SampleMask mask(sample_count, 0);
   std::fill(mask.begin(), mask.begin() + static_cast<std::ptrdiff_t>(count), 1);
   return mask;

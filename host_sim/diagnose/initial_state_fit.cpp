@@ -42,7 +42,8 @@ InitialState fit_on(const EffectModel& model, const Flight& flight, std::size_t 
     r.setZero(static_cast<Eigen::Index>(3 * flight.size()));
     for (std::size_t k = 0; k < flight.size(); ++k) {
       if (!flight.usable[k]) continue;
-      r.segment<3>(static_cast<Eigen::Index>(3 * k)) = (readings[k] - flight.omega[k]).cwiseProduct(inverse_sigma);
+      r.segment<3>(static_cast<Eigen::Index>(3 * k)) =
+          (readings[k] - flight.omega[k]).cwiseProduct(inverse_sigma);
     }
   };
   LeastSquaresOptions options;

@@ -47,17 +47,16 @@ InvariantBehaviour judge(std::string name, const Flight& flight, const std::vect
   const double slope_se = det > 0 ? std::sqrt(std::max(spread_var, noise_var) * n / det) : 1e300;
   const bool trend = std::abs(slope) > 5.0 * slope_se && std::abs(b.relative_change) > 0.005;
   // Oscillation: the spread about the line is clearly more than noise, and > 0.2 %.
-  const bool oscillation = spread_var > noise_var * (1.0 + 6.0 * std::sqrt(2.0 / n)) &&
-                           b.relative_oscillation > 0.002;
-  b.behaviour = trend ? (oscillation ? "trend_and_oscillation" : "trend")
-                      : (oscillation ? "oscillation" : "constant");
+  const bool oscillation =
+      spread_var > noise_var * (1.0 + 6.0 * std::sqrt(2.0 / n)) && b.relative_oscillation > 0.002;
+  b.behaviour =
+      trend ? (oscillation ? "trend_and_oscillation" : "trend") : (oscillation ? "oscillation" : "constant");
   return b;
 }
 
 }  // namespace
 
-Invariants measured_invariants(const Flight& flight, const NominalInertia& nominal,
-                               const NoiseFloor& noise) {
+Invariants measured_invariants(const Flight& flight, const NominalInertia& nominal, const NoiseFloor& noise) {
   const std::size_t n = flight.size();
   std::vector<double> energy(n, std::numeric_limits<double>::quiet_NaN());
   std::vector<double> momentum = energy;

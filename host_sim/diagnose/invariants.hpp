@@ -14,9 +14,9 @@
 namespace aloft::host::diagnose {
 
 struct InvariantBehaviour {
-  std::string name;              // "kinetic_energy" or "angular_momentum"
-  double mean = 0.0;             // J or N·m·s
-  double relative_change = 0.0;  // fitted linear change over the flight / mean
+  std::string name;                   // "kinetic_energy" or "angular_momentum"
+  double mean = 0.0;                  // J or N·m·s
+  double relative_change = 0.0;       // fitted linear change over the flight / mean
   double relative_oscillation = 0.0;  // RMS about the line / mean
   // "constant", "trend", "oscillation" or "trend_and_oscillation", each judged against
   // what the noise floor alone would give.
@@ -29,7 +29,6 @@ struct Invariants {
   InvariantBehaviour momentum;
 };
 
-Invariants measured_invariants(const Flight& flight, const NominalInertia& nominal,
-                               const NoiseFloor& noise);
+Invariants measured_invariants(const Flight& flight, const NominalInertia& nominal, const NoiseFloor& noise);
 
 }  // namespace aloft::host::diagnose

@@ -198,8 +198,7 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
   return result;
 }
 
-std::vector<Eigen::VectorXd> leave_one_block_out(const ArrowProblem& problem,
-                                                 const Eigen::VectorXd& shared,
+std::vector<Eigen::VectorXd> leave_one_block_out(const ArrowProblem& problem, const Eigen::VectorXd& shared,
                                                  const std::vector<Eigen::VectorXd>& local) {
   const int p = problem.shared_count;
   const int m = problem.local_count;

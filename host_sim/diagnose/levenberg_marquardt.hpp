@@ -59,8 +59,7 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
 // (Schur complement), so every left-out step costs one small solve. This is the first
 // iteration of refitting without block j, started from the all-blocks solution, which is
 // where a refit without one flight of many ends up to first order.
-std::vector<Eigen::VectorXd> leave_one_block_out(const ArrowProblem& problem,
-                                                 const Eigen::VectorXd& shared,
+std::vector<Eigen::VectorXd> leave_one_block_out(const ArrowProblem& problem, const Eigen::VectorXd& shared,
                                                  const std::vector<Eigen::VectorXd>& local);
 
 }  // namespace aloft::host::diagnose

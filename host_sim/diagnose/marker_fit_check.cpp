@@ -56,13 +56,15 @@ std::optional<std::string> marker_misfit(const MarkerTrial& trial, const Body& b
   if (!(report.mean_rms_residual_m > kLargestMarkerResidual_m)) return std::nullopt;
   const std::string culprits = markers_that_do_not_fit(trial, body, report);
   char text[256];
-  std::snprintf(text, sizeof text,
-                "the body's markers do not fit this trial: mean pose-fit residual %.1f mm (marker noise gives "
-                "well under 1 mm); ",
-                report.mean_rms_residual_m * 1000.0);
+  std::snprintf(
+      text, sizeof text,
+      "the body's markers do not fit this trial: mean pose-fit residual %.1f mm (marker noise gives "
+      "well under 1 mm); ",
+      report.mean_rms_residual_m * 1000.0);
   if (culprits.empty()) {
     return std::string(text) +
-           "no marker stands out, so check the file's units and the body file's marker positions (scale, axes)";
+           "no marker stands out, so check the file's units and the body file's marker positions (scale, "
+           "axes)";
   }
   return std::string(text) + "the markers that do not fit: " + culprits +
          "; check their positions and labels in the body file";

@@ -30,7 +30,8 @@ std::optional<Eigen::Vector3d> scale_mimicking_moments(const Eigen::Vector3d& no
   return s;
 }
 
-bool gyro_along_principal_axes(const Eigen::Quaterniond& principal_axes, const Eigen::Quaterniond& sensor_to_body) {
+bool gyro_along_principal_axes(const Eigen::Quaterniond& principal_axes,
+                               const Eigen::Quaterniond& sensor_to_body) {
   // Principal axes in sensor axes: a signed permutation matrix when they coincide.
   const Eigen::Matrix3d m = (sensor_to_body.conjugate() * principal_axes).toRotationMatrix();
   return (m.cwiseAbs().array() > 1.0 - 1e-6).count() == 3;

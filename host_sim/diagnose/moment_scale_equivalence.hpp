@@ -29,6 +29,7 @@ std::optional<Eigen::Vector3d> scale_mimicking_moments(const Eigen::Vector3d& no
 
 // Whether the gyro's axes lie along the principal axes (in any order and sign), the other
 // condition for a scale to act on the principal rates one by one.
-bool gyro_along_principal_axes(const Eigen::Quaterniond& principal_axes, const Eigen::Quaterniond& sensor_to_body);
+bool gyro_along_principal_axes(const Eigen::Quaterniond& principal_axes,
+                               const Eigen::Quaterniond& sensor_to_body);
 
 }  // namespace aloft::host::diagnose

@@ -12,7 +12,7 @@
 namespace aloft::host::diagnose {
 
 struct NominalInertia {
-  Eigen::Matrix3d tensor = Eigen::Matrix3d::Identity();  // kg·m², body axes
+  Eigen::Matrix3d tensor = Eigen::Matrix3d::Identity();         // kg·m², body axes
   Eigen::Vector3d principal_moments = Eigen::Vector3d::Ones();  // ascending
   // Maps principal axes into body axes (column i of its matrix: principal axis i).
   Eigen::Quaterniond principal_axes = Eigen::Quaterniond::Identity();

@@ -16,7 +16,8 @@ bool matters(const Candidate& c, const RankingContext& context, std::string* why
   } else if (c.shrink < kSmallestShrink) {
     reason = printf_text("it closes only %.1f %% of the held-out gap", 100.0 * c.shrink);
   } else {
-    reason = describe(c.effect).hooks.too_small(c.params, SignificanceScale{context.nominal, speed, context.duration_s});
+    reason = describe(c.effect).hooks.too_small(
+        c.params, SignificanceScale{context.nominal, speed, context.duration_s});
   }
   if (why != nullptr) *why = reason;
   return reason.empty();

@@ -62,15 +62,16 @@ json steps_json(const Analysis& a) {
   for (std::size_t i = 0; i < a.steps.size(); ++i) {
     const ModelStep& s = a.steps[i];
     const std::vector<Candidate>& candidates = i == 0 ? a.candidates : s.candidates;
-    json step = {{"model", names(s.model)},
-                 {"added", s.added >= 0 ? json(effect_name(candidates[static_cast<std::size_t>(s.added)].effect))
-                                        : json(nullptr)},
-                 {"equivalent", names(s.equivalent)},
-                 {"heldout_rms_rel_err_before", s.heldout_rms_rel_err_before},
-                 {"heldout_rms_rel_err_after", s.heldout_rms_rel_err_after},
-                 {"heldout_rms_da_before_deg", s.heldout_rms_da_before_deg},
-                 {"heldout_rms_da_after_deg", s.heldout_rms_da_after_deg},
-                 {"shrink", s.shrink}};
+    json step = {
+        {"model", names(s.model)},
+        {"added", s.added >= 0 ? json(effect_name(candidates[static_cast<std::size_t>(s.added)].effect))
+                               : json(nullptr)},
+        {"equivalent", names(s.equivalent)},
+        {"heldout_rms_rel_err_before", s.heldout_rms_rel_err_before},
+        {"heldout_rms_rel_err_after", s.heldout_rms_rel_err_after},
+        {"heldout_rms_da_before_deg", s.heldout_rms_da_before_deg},
+        {"heldout_rms_da_after_deg", s.heldout_rms_da_after_deg},
+        {"shrink", s.shrink}};
     if (i > 0) {
       json tried = json::array();
       for (const Candidate& c : s.candidates) {
@@ -90,14 +91,15 @@ json steps_json(const Analysis& a) {
 
 json tensor_json(const TensorReport& t) {
   static const char* axis[] = {"x", "y", "z"};
-  return {{"consistent_with_nominal", t.consistent_with_nominal},
-          {"ratio_best", {t.ratio_best(0), t.ratio_best(1)}},
-          {"ratio_95", {{t.ratio_low(0), t.ratio_high(0)}, {t.ratio_low(1), t.ratio_high(1)}}},
-          {"axes_95_deg", t.axes_known ? json(t.axes_95_deg) : json(nullptr)},
-          {"ratio_nominal", {t.ratio_nominal(0), t.ratio_nominal(1)}},
-          {"ratios", {std::string("I") + axis[1] + "/I" + axis[0], std::string("I") + axis[2] + "/I" + axis[0]}},
-          {"flights", t.flights},
-          {"method", t.method}};
+  return {
+      {"consistent_with_nominal", t.consistent_with_nominal},
+      {"ratio_best", {t.ratio_best(0), t.ratio_best(1)}},
+      {"ratio_95", {{t.ratio_low(0), t.ratio_high(0)}, {t.ratio_low(1), t.ratio_high(1)}}},
+      {"axes_95_deg", t.axes_known ? json(t.axes_95_deg) : json(nullptr)},
+      {"ratio_nominal", {t.ratio_nominal(0), t.ratio_nominal(1)}},
+      {"ratios", {std::string("I") + axis[1] + "/I" + axis[0], std::string("I") + axis[2] + "/I" + axis[0]}},
+      {"flights", t.flights},
+      {"method", t.method}};
 }
 
 json analysis_json(const Analysis& a) {
@@ -112,7 +114,9 @@ json analysis_json(const Analysis& a) {
   where["gap_over_noise"] = a.where.gap_over_noise;
   json slices = json::array();
   for (const TimeSlice& s : a.where.slices) {
-    slices.push_back({{"from_s", s.from_s}, {"to_s", s.to_s}, {"rms_da_deg", s.rms_da_deg},
+    slices.push_back({{"from_s", s.from_s},
+                      {"to_s", s.to_s},
+                      {"rms_da_deg", s.rms_da_deg},
                       {"rms_rel_err", s.rms_rel_err}});
   }
   where["gap_by_time"] = slices;
@@ -161,7 +165,9 @@ json analysis_json(const Analysis& a) {
   verdict["confident"] = v.confident;
   verdict["could_not_judge"] = v.could_not_judge;
   verdict["effects"] = verdict_effects_json(v);
-  verdict["shrink"] = v.heldout_rms_rel_err_before > 0 ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before : 0.0;
+  verdict["shrink"] = v.heldout_rms_rel_err_before > 0
+                          ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before
+                          : 0.0;
   verdict["steps"] = steps_json(a);
   out["verdict"] = verdict;
   out["unexplained_dispersion"] = a.dispersion;
@@ -174,8 +180,8 @@ std::string params_text(Effect effect, const EffectParameters& p) { return descr
 std::string analysis_summary(const Analysis& a) {
   std::ostringstream out;
   if (a.tensor) out << "  " << tensor_summary(*a.tensor);
-  out << printf_text("  baseline (nominal model): RMS DA %.3f deg, RMS relative error %.4f", a.baseline.rms_da_deg,
-             a.baseline.rms_rel_err)
+  out << printf_text("  baseline (nominal model): RMS DA %.3f deg, RMS relative error %.4f",
+                     a.baseline.rms_da_deg, a.baseline.rms_rel_err)
       << printf_text(", %.2f x the noise floor", a.where.gap_over_noise) << "\n";
   out << "  where: gap mostly along body " << a.where.dominant_axis;
   if (a.where.onset_s) out << printf_text(", leaves the nominal model at %.3f s", *a.where.onset_s);
@@ -194,15 +200,24 @@ std::string analysis_summary(const Analysis& a) {
   if (!v.effects.empty()) {
     out << ": " << params_text(v.effects.front().effect, v.effects.front().params) << "\n";
     for (std::size_t i = 1; i < v.effects.size(); ++i) {
-      out << "  and " << effect_name(v.effects[i].effect) << ": " << params_text(v.effects[i].effect, v.effects[i].params)
-          << printf_text(" (the model without it: held-out error %.0f %% larger)", 100.0 * (1.0 / std::max(1e-9, 1.0 - v.effects[i].shrink) - 1.0))
+      out << "  and " << effect_name(v.effects[i].effect) << ": "
+          << params_text(v.effects[i].effect, v.effects[i].params)
+          << printf_text(" (the model without it: held-out error %.0f %% larger)",
+                         100.0 * (1.0 / std::max(1e-9, 1.0 - v.effects[i].shrink) - 1.0))
           << "\n";
     }
-    out << printf_text("  held out: RMS DA %.3f -> %.3f deg, relative error %.4f -> %.4f", v.heldout_rms_da_before_deg,
-               v.heldout_rms_da_after_deg, v.heldout_rms_rel_err_before, v.heldout_rms_rel_err_after)
-        << printf_text(" (shrink %.0f %%)", 100.0 * (v.heldout_rms_rel_err_before > 0 ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before : 0.0)) << "\n";
+    out << printf_text("  held out: RMS DA %.3f -> %.3f deg, relative error %.4f -> %.4f",
+                       v.heldout_rms_da_before_deg, v.heldout_rms_da_after_deg, v.heldout_rms_rel_err_before,
+                       v.heldout_rms_rel_err_after)
+        << printf_text(" (shrink %.0f %%)",
+                       100.0 * (v.heldout_rms_rel_err_before > 0
+                                    ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before
+                                    : 0.0))
+        << "\n";
   } else {
-    out << printf_text(": the held-out gap (RMS DA %.3f deg) is what the noise explains", v.heldout_rms_da_before_deg) << "\n";
+    out << printf_text(": the held-out gap (RMS DA %.3f deg) is what the noise explains",
+                       v.heldout_rms_da_before_deg)
+        << "\n";
   }
   for (const std::string& s : v.could_not_judge) out << "  could not judge: " << s << "\n";
   for (const std::string& s : a.notes) out << "  note: " << s << "\n";
@@ -256,15 +271,17 @@ json session_report(const SessionDiagnosis& s) {
   for (const FlightDiagnosis& d : s.flights) flights.push_back(flight_report(d));
   out["flights"] = flights;
   if (s.flip_period) {
-    out["flip_period"] = {{"flights", s.flip_period->flights},
-                          {"mean_relative_error_nominal", s.flip_period->mean_error_nominal},
-                          {"mean_relative_error_diagnosed", s.flip_period->mean_error_diagnosed},
-                          {"diagnosed_flights", s.flip_period->diagnosed_flights},
-                          {"mean_relative_error_nominal_fitted", s.flip_period->mean_error_nominal_fitted},
-                          {"mean_relative_error_diagnosed_fitted", s.flip_period->mean_error_diagnosed_fitted},
-                          {"fitted_flights", s.flip_period->fitted_flights},
-                          {"method", "point method on the intermediate-axis rate, simulation from the first sample "
-                                     "(*_fitted: from the flight's fitted initial state, model fitted without it)"}};
+    out["flip_period"] = {
+        {"flights", s.flip_period->flights},
+        {"mean_relative_error_nominal", s.flip_period->mean_error_nominal},
+        {"mean_relative_error_diagnosed", s.flip_period->mean_error_diagnosed},
+        {"diagnosed_flights", s.flip_period->diagnosed_flights},
+        {"mean_relative_error_nominal_fitted", s.flip_period->mean_error_nominal_fitted},
+        {"mean_relative_error_diagnosed_fitted", s.flip_period->mean_error_diagnosed_fitted},
+        {"fitted_flights", s.flip_period->fitted_flights},
+        {"method",
+         "point method on the intermediate-axis rate, simulation from the first sample "
+         "(*_fitted: from the flight's fitted initial state, model fitted without it)"}};
   }
   return out;
 }
@@ -272,7 +289,8 @@ json session_report(const SessionDiagnosis& s) {
 std::string flight_summary(const FlightDiagnosis& d) {
   std::ostringstream out;
   out << "flight " << d.name
-      << printf_text(": %.3f to %.3f s, %.0f samples at %.0f Hz", d.start_s, d.end_s, static_cast<double>(d.samples), d.rate_hz)
+      << printf_text(": %.3f to %.3f s, %.0f samples at %.0f Hz", d.start_s, d.end_s,
+                     static_cast<double>(d.samples), d.rate_hz)
       << printf_text(", noise floor %.4f rad/s", d.noise.sigma.mean());
   if (d.unusable_samples) out << ", " << d.unusable_samples << " saturated samples left out";
   if (!d.gaps.empty()) out << ", " << d.gaps.size() << " gaps in its time stamps";
@@ -287,24 +305,30 @@ std::string session_summary(const SessionDiagnosis& s) {
                           : " flights (pooled, held out: leave one flight out)\n")
       << analysis_summary(s.pooled);
   if (s.flip_period) {
-    out << printf_text("  flip period from the first sample, %.0f flights: mean error %.1f %% nominal", s.flip_period->flights,
-               100.0 * s.flip_period->mean_error_nominal);
+    out << printf_text("  flip period from the first sample, %.0f flights: mean error %.1f %% nominal",
+                       s.flip_period->flights, 100.0 * s.flip_period->mean_error_nominal);
     std::string model;
-    for (const VerdictEffect& e : s.pooled.verdict.effects) model += (model.empty() ? "" : " + ") + std::string(effect_name(e.effect));
+    for (const VerdictEffect& e : s.pooled.verdict.effects)
+      model += (model.empty() ? "" : " + ") + std::string(effect_name(e.effect));
     if (s.flip_period->diagnosed_flights > 0) {
-      out << printf_text(", %.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed) << model << " (fitted without each flight)";
+      out << printf_text(", %.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed) << model
+          << " (fitted without each flight)";
     }
     out << "\n";
     if (s.flip_period->fitted_flights > 0) {
-      out << printf_text("  flip period from each flight's fitted initial state, %.0f flights: mean error %.1f %% nominal, ",
-                         s.flip_period->fitted_flights, 100.0 * s.flip_period->mean_error_nominal_fitted)
-          << printf_text("%.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed_fitted) << model << "\n";
+      out << printf_text(
+                 "  flip period from each flight's fitted initial state, %.0f flights: mean error %.1f %% "
+                 "nominal, ",
+                 s.flip_period->fitted_flights, 100.0 * s.flip_period->mean_error_nominal_fitted)
+          << printf_text("%.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed_fitted) << model
+          << "\n";
     }
   }
   for (const FlightDiagnosis& d : s.flights) {
     const Verdict& v = d.analysis.verdict;
     out << "  flight " << d.name << ": " << effect_name(v.effect)
-        << printf_text(" (held-out RMS DA %.2f -> %.2f deg)", v.heldout_rms_da_before_deg, v.heldout_rms_da_after_deg)
+        << printf_text(" (held-out RMS DA %.2f -> %.2f deg)", v.heldout_rms_da_before_deg,
+                       v.heldout_rms_da_after_deg)
         << (v.confident ? "" : " [not confident]") << "\n";
   }
   return out.str();

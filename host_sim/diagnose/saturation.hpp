@@ -9,7 +9,7 @@
 namespace aloft::host::diagnose {
 
 struct Saturation {
-  std::size_t samples = 0;  // samples marked unusable
+  std::size_t samples = 0;   // samples marked unusable
   double level_rad_s = 0.0;  // the largest flat-top level found
 };
 

@@ -27,10 +27,10 @@ using Vec3 = Eigen::Vector3d;
 struct PooledData {
   std::vector<const Flight*> flights;
   std::vector<Vec3> inverse_sigma;
-  std::vector<FlightData> all;                  // every sample of every flight
+  std::vector<FlightData> all;                   // every sample of every flight
   std::vector<std::array<FlightData, 2>> train;  // fold training masks per flight
   std::vector<Folds> folds;
-  std::vector<const Analysis*> own;              // each flight's own analysis
+  std::vector<const Analysis*> own;  // each flight's own analysis
 };
 
 const Candidate* candidate_of(const Analysis& a, Effect effect) {
@@ -101,7 +101,8 @@ std::optional<Eigen::VectorXd> median_of_flights(Effect effect, const PooledData
   for (Eigen::Index i = 0; i < median.size(); ++i) {
     std::vector<double> values;
     for (const Eigen::VectorXd& t : thetas) values.push_back(t(i));
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2),
+                     values.end());
     median(i) = values[values.size() / 2];
   }
   return median;
@@ -128,7 +129,8 @@ void judge_leaving_flights_out(Candidate& c, const NominalInertia& nominal, cons
   const std::size_t count = pool.flights.size();
   c.heldout_readings.assign(count, {});
   std::vector<GapSums> sums(count);
-  c.heldout_theta = leave_one_flight_out(c.fit, nominal, pool.all, static_cast<unsigned>(std::max(threads, 1)));
+  c.heldout_theta =
+      leave_one_flight_out(c.fit, nominal, pool.all, static_cast<unsigned>(std::max(threads, 1)));
   parallel_for(count, static_cast<unsigned>(std::max(threads, 1)), [&](std::size_t j) {
     EffectFit others = c.fit;
     others.theta = c.heldout_theta[j];
@@ -177,7 +179,8 @@ void note_disagreeing_flights(Analysis& pooled, const PooledData& pool) {
   if (names.empty()) return;
   if (!pool_agrees && 2 * most > named.size()) {
     pooled.notes.push_back(std::to_string(most) + " of " + std::to_string(named.size()) + " flights name " +
-                           effect_name(majority) + " but the pool does not; flights that disagree with the pool: " + names);
+                           effect_name(majority) +
+                           " but the pool does not; flights that disagree with the pool: " + names);
   } else {
     pooled.notes.push_back("flights whose own verdict differs from the pool's: " + names);
   }
@@ -185,7 +188,8 @@ void note_disagreeing_flights(Analysis& pooled, const PooledData& pool) {
 
 bool mentions_intermediate(const std::string& comment) {
   std::string lower = comment;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return lower.find("intermediate") != std::string::npos;
 }
 
@@ -195,9 +199,9 @@ bool mentions_intermediate(const std::string& comment) {
 void add_flip_periods(SessionDiagnosis& session, const PooledData& pool, const EffectFit& none_all,
                       const std::vector<Flight>& flights, const NominalInertia& nominal) {
   const Analysis& a = session.pooled;
-  const Candidate* final_model = a.verdict.effect != Effect::none && a.model.heldout_theta.size() == pool.flights.size()
-                                     ? &a.model
-                                     : nullptr;
+  const Candidate* final_model =
+      a.verdict.effect != Effect::none && a.model.heldout_theta.size() == pool.flights.size() ? &a.model
+                                                                                              : nullptr;
   const EffectModel model = final_model != nullptr ? model_of(final_model->fit, nominal, 0) : EffectModel();
   for (std::size_t i = 0; i < flights.size(); ++i) {
     const auto it = std::find(pool.flights.begin(), pool.flights.end(), &flights[i]);
@@ -205,7 +209,8 @@ void add_flip_periods(SessionDiagnosis& session, const PooledData& pool, const E
     const std::size_t j = static_cast<std::size_t>(it - pool.flights.begin());
     const FlightState& nominal_start = none_all.flights[j];
     if (final_model == nullptr) {
-      session.flights[i].flip_period = flip_period(flights[i], nominal, nullptr, Eigen::VectorXd(), &nominal_start);
+      session.flights[i].flip_period =
+          flip_period(flights[i], nominal, nullptr, Eigen::VectorXd(), &nominal_start);
       continue;
     }
     EffectFit held = final_model->fit;
@@ -319,8 +324,13 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
   // The coarsest resolution of the pooled flights (those left out have none).
   double resolution = 0.0;
   for (const FlightDiagnosis& d : session.flights) resolution = std::max(resolution, d.noise.resolution);
-  const RankingContext context{pool.flights.front()->gyro_input, pool.flights, pool.inverse_sigma, mean_speed,
-                               total_duration, &nominal, resolution};
+  const RankingContext context{pool.flights.front()->gyro_input,
+                               pool.flights,
+                               pool.inverse_sigma,
+                               mean_speed,
+                               total_duration,
+                               &nominal,
+                               resolution};
   // Every model of the search, single or compound: its shared parameters fitted to every
   // flight, judged by leaving one flight out.
   const CandidateEvaluator evaluate = [&](const Candidate& base, Effect added) {
@@ -362,9 +372,11 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
     if (d.analysis.where.onset_s) onsets.push_back(*d.analysis.where.onset_s - d.start_s);
   }
   if (analysis.verdict.effect != Effect::none && !onsets.empty()) {
-    std::nth_element(onsets.begin(), onsets.begin() + static_cast<std::ptrdiff_t>(onsets.size() / 2), onsets.end());
+    std::nth_element(onsets.begin(), onsets.begin() + static_cast<std::ptrdiff_t>(onsets.size() / 2),
+                     onsets.end());
     analysis.where.onset_s = onsets[onsets.size() / 2];
-    analysis.notes.push_back("pooled where.onset_s is the median over flights, seconds after each flight's start");
+    analysis.notes.push_back(
+        "pooled where.onset_s is the median over flights, seconds after each flight's start");
   }
   return session;
 }

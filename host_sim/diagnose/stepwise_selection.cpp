@@ -102,7 +102,8 @@ bool next_step(Analysis& a, const RankingContext& context, const CandidateEvalua
   const Candidate& reference = step.candidates[static_cast<std::size_t>(r.reference)];
   step.heldout_rms_rel_err_before = step.heldout_rms_rel_err_after = reference.heldout_rms_rel_err;
   step.heldout_rms_da_before_deg = step.heldout_rms_da_after_deg = reference.heldout_rms_da_deg;
-  const bool joins = r.beats_reference && step.candidates[static_cast<std::size_t>(r.best)].shrink >= kMinimumStepShrink &&
+  const bool joins = r.beats_reference &&
+                     step.candidates[static_cast<std::size_t>(r.best)].shrink >= kMinimumStepShrink &&
                      matters(step.candidates[static_cast<std::size_t>(r.best)], context);
   if (joins) {
     const Candidate& best = step.candidates[static_cast<std::size_t>(r.best)];
@@ -124,12 +125,14 @@ void select_stepwise(Analysis& analysis, const RankingContext& context, const Ca
   analysis.steps.clear();
   analysis.steps.push_back(first_step(analysis));
   v.effects.clear();
-  const auto none = std::find_if(analysis.candidates.begin(), analysis.candidates.end(),
-                                 [](const Candidate& c) { return c.effect == Effect::none && c.base.empty(); });
+  const auto none =
+      std::find_if(analysis.candidates.begin(), analysis.candidates.end(),
+                   [](const Candidate& c) { return c.effect == Effect::none && c.base.empty(); });
   std::string why;
   if (v.effect != Effect::none && v.chosen >= 0 &&
       !matters(analysis.candidates[static_cast<std::size_t>(v.chosen)], context, &why)) {
-    analysis.notes.push_back(std::string(effect_name(v.effect)) + " beats the noise but is too small to matter: " + why);
+    analysis.notes.push_back(std::string(effect_name(v.effect)) +
+                             " beats the noise but is too small to matter: " + why);
     v.effect = Effect::none;
     v.equivalent = {Effect::none};
     v.could_not_judge.clear();
@@ -169,7 +172,8 @@ void select_stepwise(Analysis& analysis, const RankingContext& context, const Ca
     e.effect = joined.effect;
     e.equivalent = s.equivalent;
     e.step = step_number;
-    e.params = context.nominal != nullptr ? effect_parameters(model, current.fit.theta, e.effect) : joined.params;
+    e.params =
+        context.nominal != nullptr ? effect_parameters(model, current.fit.theta, e.effect) : joined.params;
     e.heldout_rms_rel_err_after = s.heldout_rms_rel_err_after;
     e.heldout_rms_da_after_deg = s.heldout_rms_da_after_deg;
     e.step_shrink = s.shrink;
@@ -177,7 +181,8 @@ void select_stepwise(Analysis& analysis, const RankingContext& context, const Ca
     for (Effect f : final_effects) {
       if (f != e.effect) rest.push_back(f);
     }
-    const double without = rest.empty() ? v.heldout_rms_rel_err_before : heldout_rel_err_of(analysis, rest, evaluate);
+    const double without =
+        rest.empty() ? v.heldout_rms_rel_err_before : heldout_rel_err_of(analysis, rest, evaluate);
     e.shrink = without > 0 ? 1.0 - current.heldout_rms_rel_err / without : 0.0;
     v.effects.push_back(e);
   }
@@ -186,13 +191,15 @@ void select_stepwise(Analysis& analysis, const RankingContext& context, const Ca
   v.effect = v.effects.front().effect;
   v.equivalent = v.effects.front().equivalent;
   for (std::size_t i = 0; i < analysis.candidates.size(); ++i) {
-    if (analysis.candidates[i].effect == v.effect && analysis.candidates[i].base.empty()) v.chosen = static_cast<int>(i);
+    if (analysis.candidates[i].effect == v.effect && analysis.candidates[i].base.empty())
+      v.chosen = static_cast<int>(i);
   }
   v.heldout_rms_rel_err_after = current.heldout_rms_rel_err;
   v.heldout_rms_da_after_deg = current.heldout_rms_da_deg;
   if (!current.identifiable && final_effects.size() > 1) {
     v.confident = false;
-    v.could_not_judge.push_back("the compound model explains the gap but its parameters are poorly determined");
+    v.could_not_judge.push_back(
+        "the compound model explains the gap but its parameters are poorly determined");
   }
   judge_confidence(analysis);
 }
@@ -201,11 +208,14 @@ void judge_confidence(Analysis& analysis) {
   Verdict& v = analysis.verdict;
   if (v.effect == Effect::none) {
     v.confident = false;
-    analysis.notes.push_back("no effect stands out above the noise; a noise-only verdict is never marked confident "
-                             "(effects below what this flight resolves cannot be ruled out)");
+    analysis.notes.push_back(
+        "no effect stands out above the noise; a noise-only verdict is never marked confident "
+        "(effects below what this flight resolves cannot be ruled out)");
     return;
   }
-  const double shrink = v.heldout_rms_rel_err_before > 0 ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before : 0.0;
+  const double shrink = v.heldout_rms_rel_err_before > 0
+                            ? 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before
+                            : 0.0;
   if (shrink < kConfidentShrink) {
     v.confident = false;
     v.could_not_judge.push_back("the final model leaves most of the held-out gap unexplained");

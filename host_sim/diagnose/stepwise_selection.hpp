@@ -37,8 +37,7 @@ using CandidateEvaluator = std::function<Candidate(const Candidate& base, Effect
 // effect of the final model.
 // The first step's winner must also matter (practical_significance.hpp), else the
 // verdict is `none`. Ends with judge_confidence.
-void select_stepwise(Analysis& analysis, const RankingContext& context,
-                     const CandidateEvaluator& evaluate);
+void select_stepwise(Analysis& analysis, const RankingContext& context, const CandidateEvaluator& evaluate);
 
 // A verdict is confident only if it names an effect, every parameter it reports is pinned
 // (identifiable; rank_candidates and select_stepwise clear `confident` otherwise) and the

@@ -95,7 +95,8 @@ void set_intervals(TensorReport& r, const Eigen::Vector2d& log_se, double quanti
 // The axes bound: the fitted rotation plus the 95 % radius of its error ellipsoid.
 void set_axes(TensorReport& r, const Candidate* axes, const Eigen::Matrix3d& covariance, double widen) {
   if (axes == nullptr) return;
-  const double largest = std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvalues().maxCoeff());
+  const double largest =
+      std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvalues().maxCoeff());
   r.axes_95_deg = axes->params.angle_deg + widen * std::sqrt(kChiSquare3At95 * largest) * kDeg;
   r.axes_known = std::isfinite(r.axes_95_deg);
 }
@@ -143,12 +144,14 @@ bool pooled_tensor_report(const Analysis& pooled, const std::vector<const Flight
                           const NominalInertia& nominal, TensorReport& report) {
   const Candidate* moments = find(pooled, Effect::inertia_moments);
   const std::size_t n = flights.size();
-  if (moments == nullptr || moments->fit.theta_covariance.rows() != 2 || moments->heldout_theta.size() != n || n < 2) {
+  if (moments == nullptr || moments->fit.theta_covariance.rows() != 2 || moments->heldout_theta.size() != n ||
+      n < 2) {
     return false;
   }
   TensorReport r = base_report(*moments, nominal);
   const Eigen::Matrix2d g = log_ratio_gradient(r.axis_order);
-  const Eigen::Matrix2d model = g * moments->fit.theta_covariance * g.transpose() * serial_inflation(*moments, flights);
+  const Eigen::Matrix2d model =
+      g * moments->fit.theta_covariance * g.transpose() * serial_inflation(*moments, flights);
   // Jackknife over flights: (n-1)/n times the spread of the leave-one-out estimates.
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   for (const Eigen::VectorXd& t : moments->heldout_theta) mean += g * t;
@@ -165,7 +168,8 @@ bool pooled_tensor_report(const Analysis& pooled, const std::vector<const Flight
     for (const Eigen::VectorXd& d : axes->heldout_theta) centre += d.head<3>();
     centre /= static_cast<double>(n);
     Eigen::Matrix3d jack = Eigen::Matrix3d::Zero();
-    for (const Eigen::VectorXd& d : axes->heldout_theta) jack += (d.head<3>() - centre) * (d.head<3>() - centre).transpose();
+    for (const Eigen::VectorXd& d : axes->heldout_theta)
+      jack += (d.head<3>() - centre) * (d.head<3>() - centre).transpose();
     jack *= (static_cast<double>(n) - 1.0) / static_cast<double>(n);
     const Eigen::Matrix3d own = model_covariance_3(*axes, serial_inflation(*axes, flights));
     const double jl = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(jack).eigenvalues().maxCoeff();
@@ -184,8 +188,9 @@ std::string tensor_summary(const TensorReport& r) {
   const auto half = [&](int i) { return 0.5 * (r.ratio_high(i) - r.ratio_low(i)); };
   std::snprintf(text, sizeof text,
                 "tensor: %s %d flight%s hold%s I%c/I%c to %.4g +- %.2g and I%c/I%c to %.4g +- %.2g (95 %%)",
-                r.flights == 1 ? "this" : "the", r.flights, r.flights == 1 ? "" : "s", r.flights == 1 ? "s" : "",
-                axis[1], axis[0], r.ratio_best(0), half(0), axis[2], axis[0], r.ratio_best(1), half(1));
+                r.flights == 1 ? "this" : "the", r.flights, r.flights == 1 ? "" : "s",
+                r.flights == 1 ? "s" : "", axis[1], axis[0], r.ratio_best(0), half(0), axis[2], axis[0],
+                r.ratio_best(1), half(1));
   std::string out = text;
   if (r.axes_known) {
     std::snprintf(text, sizeof text, ", principal axes within %.2g deg", r.axes_95_deg);
@@ -217,7 +222,8 @@ void temper_confidence(Analysis& analysis) {
   char text[400];
   if (chosen.shrink < kPracticalShrink) {
     v.confident = false;
-    std::snprintf(text, sizeof text, "%s shrinks the held-out gap by only %.0f %% (below the %.0f %% that matters)",
+    std::snprintf(text, sizeof text,
+                  "%s shrinks the held-out gap by only %.0f %% (below the %.0f %% that matters)",
                   effect_name(v.effect), 100.0 * chosen.shrink, 100.0 * kPracticalShrink);
     v.could_not_judge.push_back(text);
   }

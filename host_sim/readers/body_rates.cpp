@@ -22,8 +22,8 @@ BodyRates body_rates_from_poses(const PoseTrial& poses) {
     const Status status =
         omega_body_from_orientations(poses.orientation[k], poses.orientation[k + 1], dt, omega);
     if (status != Status::ok) {
-      throw Error(poses.path + ": poses at t = " + std::to_string(poses.time_s[k]) + " s: " +
-                  describe(status));
+      throw Error(poses.path + ": poses at t = " + std::to_string(poses.time_s[k]) +
+                  " s: " + describe(status));
     }
     rates.time_s.push_back(0.5 * (poses.time_s[k] + poses.time_s[k + 1]));
     rates.omega_body.push_back(omega);

@@ -47,8 +47,8 @@ std::string where(std::size_t offset) { return "at byte " + std::to_string(offse
 
 // The distance from a record's offset word to the end of its description, computed
 // from its contents; nullopt when they do not fit before `end` or exceed an int16.
-std::optional<std::size_t> natural_record_length(const ByteView& file, std::size_t body,
-                                                 std::size_t end, bool is_group, Processor) {
+std::optional<std::size_t> natural_record_length(const ByteView& file, std::size_t body, std::size_t end,
+                                                 bool is_group, Processor) {
   std::size_t pos = body;
   if (!is_group) {
     const std::uint8_t* type_dims = file.at(pos, 2);
@@ -96,8 +96,7 @@ std::optional<double> ParameterSection::number(const std::string& group, const s
   }
 }
 
-std::vector<std::string> ParameterSection::strings(const std::string& group,
-                                                   const std::string& name) const {
+std::vector<std::string> ParameterSection::strings(const std::string& group, const std::string& name) const {
   const Parameter* p = find(group, name);
   std::vector<std::string> out;
   if (!p || p->type != -1) return out;
@@ -185,8 +184,8 @@ ParameterSection parse_parameter_section(const ByteView& file, std::size_t first
       // the next one starts.
       const auto natural = natural_record_length(file, body, end, group_id < 0, format);
       if (!natural) {
-        section.damage = "record " + brief(name) + " " + where(pos) +
-                         " points to the next record outside the section";
+        section.damage =
+            "record " + brief(name) + " " + where(pos) + " points to the next record outside the section";
         break;
       }
       section.repairs.push_back("record " + brief(name) + " " + where(pos) + ": offset " +
@@ -210,8 +209,8 @@ ParameterSection parse_parameter_section(const ByteView& file, std::size_t first
       p.name = name;
       p.type = static_cast<std::int8_t>(type_dims[0]);
       if (p.type != -1 && p.type != 1 && p.type != 2 && p.type != 4) {
-        section.damage = "parameter " + brief(name) + " " + where(pos) + " has unknown type " +
-                         std::to_string(p.type);
+        section.damage =
+            "parameter " + brief(name) + " " + where(pos) + " has unknown type " + std::to_string(p.type);
         break;
       }
       const std::size_t dimension_count = type_dims[1];
@@ -229,9 +228,8 @@ ParameterSection parse_parameter_section(const ByteView& file, std::size_t first
       }
       const std::size_t values_start = body + 2 + dimension_count;
       const std::size_t data_size = count * static_cast<std::size_t>(std::abs(p.type));
-      const std::uint8_t* data = count <= end && values_start + data_size <= limit
-                                     ? file.at(values_start, data_size)
-                                     : nullptr;
+      const std::uint8_t* data =
+          count <= end && values_start + data_size <= limit ? file.at(values_start, data_size) : nullptr;
       if (!data) {
         section.damage = "parameter " + brief(name) + " " + where(pos) + ": data runs past the record";
         break;
@@ -240,7 +238,7 @@ ParameterSection parse_parameter_section(const ByteView& file, std::size_t first
       pending.push_back({group_id, std::move(p)});
     }
     if (next_offset == 0) break;  // the last record
-    pos = next;  // always forward: next_offset > 0 here
+    pos = next;                   // always forward: next_offset > 0 here
   }
 
   for (Pending& entry : pending) {

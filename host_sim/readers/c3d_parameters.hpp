@@ -31,7 +31,7 @@ struct Parameter {
 struct ParameterSection {
   Processor processor = Processor::intel;
   std::vector<Parameter> parameters;
-  std::string damage;  // empty when the whole section was read
+  std::string damage;                // empty when the whole section was read
   std::vector<std::string> repairs;  // records read despite a bad offset word, and how
 
   const Parameter* find(const std::string& group, const std::string& name) const;

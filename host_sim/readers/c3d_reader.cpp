@@ -42,8 +42,8 @@ std::vector<std::uint8_t> read_bytes(const std::string& path) {
 // checked before it is converted: int16 words are read as unsigned 16-bit (writers use
 // the sign bit for counts over 32767); a float (float-processor files) must be a whole
 // number from 0 to 65535. nullopt otherwise, so a value like 1e30 is never converted.
-std::optional<std::size_t> unsigned_word(const ParameterSection& params, const char* group,
-                                         const char* name, std::size_t index = 0) {
+std::optional<std::size_t> unsigned_word(const ParameterSection& params, const char* group, const char* name,
+                                         std::size_t index = 0) {
   constexpr double kMostWord = 65535.0;
   const c3d::Parameter* p = params.find(group, name);
   const auto value = params.number(group, name, index);
@@ -112,7 +112,8 @@ static MarkerTrial read_c3d_unguarded(const std::string& path, C3dDetails* detai
     throw Error(path + ": last frame " + std::to_string(last_frame) + " before first frame " +
                 std::to_string(first_frame));
   }
-  if (data_start < 2) throw Error(path + ": data section start block " + std::to_string(data_start) + " is invalid");
+  if (data_start < 2)
+    throw Error(path + ": data section start block " + std::to_string(data_start) + " is invalid");
   // Every term below is at most 32 bits wide (16-bit words, a 65535·65536 frame number),
   // so the sizes cannot overflow; the frame count is then held to what the file holds
   // before anything is allocated for it.

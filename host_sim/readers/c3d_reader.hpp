@@ -29,9 +29,9 @@ struct C3dDetails {
   std::string processor;  // "intel", "dec" or "mips"
   bool float_data = false;
   double point_scale = 0.0;  // POINT:SCALE as stored (negative: float data)
-  long first_frame = 1;  // up to 65535·65536 in long trials
+  long first_frame = 1;      // up to 65535·65536 in long trials
   int analog_samples_per_frame = 0;
-  std::string parameter_damage;  // empty when the parameter section read cleanly
+  std::string parameter_damage;                // empty when the parameter section read cleanly
   std::vector<std::string> parameter_repairs;  // bad offset words worked around
 };
 

@@ -107,9 +107,9 @@ std::optional<FreeJointColumns> recognise_free_joint(const std::vector<std::stri
     if (fresh) it->second.fill(-1);
     int& column = it->second[static_cast<std::size_t>(named->slot)];
     if (column >= 0) {
-      throw Error(at_line(path, line, "columns " + names[static_cast<std::size_t>(column)] + " and " +
-                                          names[i] + " name the same free-joint coordinate; " +
-                                          how_to_name_the_pose()));
+      throw Error(at_line(path, line,
+                          "columns " + names[static_cast<std::size_t>(column)] + " and " + names[i] +
+                              " name the same free-joint coordinate; " + how_to_name_the_pose()));
     }
     column = static_cast<int>(i);
   }
@@ -121,25 +121,28 @@ std::optional<FreeJointColumns> recognise_free_joint(const std::vector<std::stri
   if (complete.size() > 1) {
     std::string list;
     for (const std::string& j : complete) list += (list.empty() ? "" : ", ") + shown_joint(j);
-    throw Error(at_line(path, line, "the columns hold " + std::to_string(complete.size()) +
-                                        " free joints (" + list + "); " + how_to_name_the_pose()));
+    throw Error(at_line(path, line,
+                        "the columns hold " + std::to_string(complete.size()) + " free joints (" + list +
+                            "); " + how_to_name_the_pose()));
   }
   const std::array<int, 6>& slots = joints[complete.front()];
   const int translations = (slots[3] >= 0) + (slots[4] >= 0) + (slots[5] >= 0);
   if (translations != 0 && translations != 3) {
-    throw Error(at_line(path, line, "free joint " + shown_joint(complete.front()) +
-                                        " has some but not all of its three translation columns"));
+    throw Error(at_line(path, line,
+                        "free joint " + shown_joint(complete.front()) +
+                            " has some but not all of its three translation columns"));
   }
   FreeJointColumns joint;
   joint.source = "free joint " + shown_joint(complete.front()) + " recognised by column names";
   for (int a = 0; a < 3; ++a) {
-    joint.rotations[static_cast<std::size_t>(a)] =
-        JointAxis{unit_axis("xyz"[a]), names[static_cast<std::size_t>(slots[static_cast<std::size_t>(a)])], 1.0, 0.0};
+    joint.rotations[static_cast<std::size_t>(a)] = JointAxis{
+        unit_axis("xyz"[a]), names[static_cast<std::size_t>(slots[static_cast<std::size_t>(a)])], 1.0, 0.0};
   }
   if (translations == 3) {
     for (int a = 0; a < 3; ++a) {
       joint.translations.push_back(
-          JointAxis{unit_axis("xyz"[a]), names[static_cast<std::size_t>(slots[static_cast<std::size_t>(3 + a)])], 1.0, 0.0});
+          JointAxis{unit_axis("xyz"[a]),
+                    names[static_cast<std::size_t>(slots[static_cast<std::size_t>(3 + a)])], 1.0, 0.0});
     }
   }
   return joint;
@@ -148,18 +151,23 @@ std::optional<FreeJointColumns> recognise_free_joint(const std::vector<std::stri
 FreeJointColumns free_joint_from_user_columns(const std::vector<std::string>& columns,
                                               const std::string& sequence) {
   if (columns.size() != 3 && columns.size() != 6) {
-    throw Error("--pose-columns needs 3 rotation columns, optionally followed by 3 translation "
-                "columns (x, y, z), not " + std::to_string(columns.size()) + " names");
+    throw Error(
+        "--pose-columns needs 3 rotation columns, optionally followed by 3 translation "
+        "columns (x, y, z), not " +
+        std::to_string(columns.size()) + " names");
   }
   const std::string axes = to_lower(sequence);
-  if (axes.size() != 3 || axes.find_first_not_of("xyz") != std::string::npos ||
-      axes[0] == axes[1] || axes[1] == axes[2]) {
-    throw Error("--pose-sequence must be three axes of x, y, z, no axis twice in a row (such as "
-                "xyz, zxy or zxz), not '" + sequence + "'");
+  if (axes.size() != 3 || axes.find_first_not_of("xyz") != std::string::npos || axes[0] == axes[1] ||
+      axes[1] == axes[2]) {
+    throw Error(
+        "--pose-sequence must be three axes of x, y, z, no axis twice in a row (such as "
+        "xyz, zxy or zxz), not '" +
+        sequence + "'");
   }
   FreeJointColumns joint;
   joint.source = "--pose-columns with body-fixed sequence " + axes;
-  for (std::size_t a = 0; a < 3; ++a) joint.rotations[a] = JointAxis{unit_axis(axes[a]), columns[a], 1.0, 0.0};
+  for (std::size_t a = 0; a < 3; ++a)
+    joint.rotations[a] = JointAxis{unit_axis(axes[a]), columns[a], 1.0, 0.0};
   if (columns.size() == 6) {
     for (std::size_t a = 0; a < 3; ++a) {
       joint.translations.push_back(JointAxis{unit_axis("xyz"[a]), columns[3 + a], 1.0, 0.0});

@@ -27,7 +27,7 @@ namespace aloft::host {
 
 struct JointAxis {
   Eigen::Vector3d axis = Eigen::Vector3d::UnitX();  // unit vector
-  std::string coordinate;  // the column it follows; empty: constant `offset`
+  std::string coordinate;                           // the column it follows; empty: constant `offset`
   double scale = 1.0;
   double offset = 0.0;
 };

@@ -47,8 +47,7 @@ std::optional<ImuColumns> recognise_phyphox(const std::vector<std::string>& head
   c.time = find_column(header, "time (s)");
   const char* gyro[3] = {"gyroscope x (rad/s)", "gyroscope y (rad/s)", "gyroscope z (rad/s)"};
   // phyphox's combined-sensor exports name the accelerometer like this.
-  const char* accel[3] = {"acceleration x (m/s^2)", "acceleration y (m/s^2)",
-                          "acceleration z (m/s^2)"};
+  const char* accel[3] = {"acceleration x (m/s^2)", "acceleration y (m/s^2)", "acceleration z (m/s^2)"};
   for (int k = 0; k < 3; ++k) {
     c.gyro[k] = find_column(header, gyro[k]);
     c.accel[k] = find_column(header, accel[k]);
@@ -67,8 +66,7 @@ ImuColumns recognise_header(const std::vector<std::string>& header, const std::s
                         "header is neither a plain IMU log (t,gx,gy,gz[,ax,ay,az]) nor a "
                         "phyphox export (\"Time (s)\",\"Gyroscope x (rad/s)\",...)"));
   }
-  const int accel_found = (columns->accel[0] >= 0) + (columns->accel[1] >= 0) +
-                          (columns->accel[2] >= 0);
+  const int accel_found = (columns->accel[0] >= 0) + (columns->accel[1] >= 0) + (columns->accel[2] >= 0);
   if (accel_found != 0 && accel_found != 3) {
     throw Error(at_line(path, header_line, "accelerometer needs all three columns or none"));
   }
@@ -84,8 +82,7 @@ static ImuLog read_imu_csv_unguarded(const std::string& path) {
   std::size_t header_index = 0;
   while (is_blank(file.lines[header_index])) ++header_index;
   const std::size_t header_line = header_index + 1;
-  const std::vector<std::string> header =
-      split_csv_line(file.lines[header_index], path, header_line);
+  const std::vector<std::string> header = split_csv_line(file.lines[header_index], path, header_line);
   const std::optional<ImuColumns> columns = recognise_header(header, path, header_line);
   const bool has_accel = columns->accel[0] >= 0;
 
@@ -105,14 +102,13 @@ static ImuLog read_imu_csv_unguarded(const std::string& path) {
     auto value = [&](int column) {
       const double v = parse_number(cells[column], path, line, header[column]);
       if (!std::isfinite(v)) {
-        throw Error(at_line(path, line, "column " + header[column] + " is not finite ('" +
-                                            cells[column] + "')"));
+        throw Error(
+            at_line(path, line, "column " + header[column] + " is not finite ('" + cells[column] + "')"));
       }
       return v;
     };
     log.time_s.push_back(value(columns->time));
-    log.gyro_rad_s.emplace_back(value(columns->gyro[0]), value(columns->gyro[1]),
-                                value(columns->gyro[2]));
+    log.gyro_rad_s.emplace_back(value(columns->gyro[0]), value(columns->gyro[1]), value(columns->gyro[2]));
     if (has_accel) {
       log.accel_m_s2.emplace_back(value(columns->accel[0]), value(columns->accel[1]),
                                   value(columns->accel[2]));

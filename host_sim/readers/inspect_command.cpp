@@ -67,8 +67,10 @@ Json summarise_markers(const std::string& path, const TrialFormat& format, const
     const PoseTrial poses = fit_poses(trial, body, &report);
     Json gaps = Json::array();
     for (const FrameRange& g : report.gaps) {
-      gaps.push_back({{"first_frame", g.first_frame}, {"last_frame", g.last_frame},
-                      {"start_s", g.start_s}, {"end_s", g.end_s}});
+      gaps.push_back({{"first_frame", g.first_frame},
+                      {"last_frame", g.last_frame},
+                      {"start_s", g.start_s},
+                      {"end_s", g.end_s}});
     }
     out["pose_fit"] = {{"body", body.name},
                        {"posed_frames", poses.time_s.size()},
@@ -121,7 +123,8 @@ Json summarise_segments(const std::string& path) {
 }  // namespace
 
 void add_inspect_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("inspect", "summarise a trial file (markers, poses, IMU log, segments) as JSON");
+  auto* cmd =
+      app.add_subcommand("inspect", "summarise a trial file (markers, poses, IMU log, segments) as JSON");
   auto file = std::make_shared<std::string>();
   auto body = std::make_shared<std::string>();
   auto naming = std::make_shared<PoseNaming>();

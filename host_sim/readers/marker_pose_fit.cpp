@@ -40,9 +40,9 @@ std::string join(const std::vector<std::string>& names) {
 }  // namespace
 
 bool fit_rigid_transform(const std::vector<Eigen::Vector3d>& body_points,
-                         const std::vector<Eigen::Vector3d>& world_points,
-                         Eigen::Quaterniond& orientation, Eigen::Vector3d& position,
-                         double& rms_residual_m, std::vector<double>* point_residuals_m) {
+                         const std::vector<Eigen::Vector3d>& world_points, Eigen::Quaterniond& orientation,
+                         Eigen::Vector3d& position, double& rms_residual_m,
+                         std::vector<double>* point_residuals_m) {
   const auto n = static_cast<Eigen::Index>(body_points.size());
   if (n < 3 || world_points.size() != body_points.size()) return false;
   Eigen::Matrix3Xd body(3, n);
@@ -65,7 +65,8 @@ bool fit_rigid_transform(const std::vector<Eigen::Vector3d>& body_points,
   rms_residual_m = std::sqrt(residual.squaredNorm() / static_cast<double>(n));
   if (point_residuals_m) {
     point_residuals_m->resize(static_cast<std::size_t>(n));
-    for (Eigen::Index i = 0; i < n; ++i) (*point_residuals_m)[static_cast<std::size_t>(i)] = residual.col(i).norm();
+    for (Eigen::Index i = 0; i < n; ++i)
+      (*point_residuals_m)[static_cast<std::size_t>(i)] = residual.col(i).norm();
   }
   return true;
 }
@@ -91,9 +92,8 @@ PoseTrial fit_poses(const MarkerTrial& markers, const Body& body, PoseFitReport*
     file_index.push_back(index);
   }
   if (!missing.empty()) {
-    throw Error(path + ": marker" + (missing.size() > 1 ? "s " : " ") + join(missing) +
-                " of body '" + body.name + "' not in the file (it has " +
-                join(markers.marker_names) + ")");
+    throw Error(path + ": marker" + (missing.size() > 1 ? "s " : " ") + join(missing) + " of body '" +
+                body.name + "' not in the file (it has " + join(markers.marker_names) + ")");
   }
 
   const std::size_t frames = markers.positions_m.size();
@@ -156,16 +156,15 @@ PoseTrial fit_poses(const MarkerTrial& markers, const Body& body, PoseFitReport*
     residual_sum += rms;
   }
   if (poses.time_s.size() < 2) {
-    throw Error(path + ": only " + std::to_string(poses.time_s.size()) + " of " +
-                std::to_string(frames) + " frames show three non-collinear markers of body '" +
-                body.name + "'; no flight to analyse");
+    throw Error(path + ": only " + std::to_string(poses.time_s.size()) + " of " + std::to_string(frames) +
+                " frames show three non-collinear markers of body '" + body.name + "'; no flight to analyse");
   }
   out.mean_rms_residual_m = residual_sum / static_cast<double>(poses.time_s.size());
   out.marker_names = body_names;
   for (std::size_t m = 0; m < file_index.size(); ++m) {
-    out.marker_rms_residual_m.push_back(
-        marker_frames[m] > 0 ? std::sqrt(marker_square_sum[m] / marker_frames[m])
-                             : std::numeric_limits<double>::quiet_NaN());
+    out.marker_rms_residual_m.push_back(marker_frames[m] > 0
+                                            ? std::sqrt(marker_square_sum[m] / marker_frames[m])
+                                            : std::numeric_limits<double>::quiet_NaN());
   }
   return poses;
 }

@@ -52,8 +52,8 @@ PoseTrial fit_poses(const MarkerTrial& markers, const Body& body, PoseFitReport*
 // leaves the outputs untouched, when the body points are collinear. point_residuals_m,
 // when given, receives each point's distance from where the pose puts it.
 bool fit_rigid_transform(const std::vector<Eigen::Vector3d>& body_points,
-                         const std::vector<Eigen::Vector3d>& world_points,
-                         Eigen::Quaterniond& orientation, Eigen::Vector3d& position,
-                         double& rms_residual_m, std::vector<double>* point_residuals_m = nullptr);
+                         const std::vector<Eigen::Vector3d>& world_points, Eigen::Quaterniond& orientation,
+                         Eigen::Vector3d& position, double& rms_residual_m,
+                         std::vector<double>* point_residuals_m = nullptr);
 
 }  // namespace aloft::host

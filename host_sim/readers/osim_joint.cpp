@@ -18,8 +18,7 @@ bool ends_with(const std::string& text, const std::string& tail) {
 }
 
 bool is_joint_element(const pugi::xml_node& node) {
-  return node.type() == pugi::node_element && ends_with(node.name(), "Joint") &&
-         node.attribute("name");
+  return node.type() == pugi::node_element && ends_with(node.name(), "Joint") && node.attribute("name");
 }
 
 // N numbers from an element's text ("0 0 1"); throws when there are not exactly N.
@@ -102,7 +101,8 @@ void read_offsets_v3(const pugi::xml_node& joint, FreeJointColumns& out, const s
   }
   out.parent_offset = offset_frame(joint.child("location_in_parent"), joint.child("orientation_in_parent"),
                                    "location/orientation_in_parent", path);
-  out.child_offset = offset_frame(joint.child("location"), joint.child("orientation"), "location/orientation", path);
+  out.child_offset =
+      offset_frame(joint.child("location"), joint.child("orientation"), "location/orientation", path);
 }
 
 // The function element of a TransformAxis (OpenSim 4: a child named "function"
@@ -111,7 +111,8 @@ pugi::xml_node axis_function(const pugi::xml_node& transform_axis) {
   for (const pugi::xml_node& child : transform_axis.children()) {
     if (child.type() != pugi::node_element) continue;
     const std::string name = child.name();
-    if (name == "function") return child.first_child().type() == pugi::node_element ? child.first_child() : pugi::xml_node();
+    if (name == "function")
+      return child.first_child().type() == pugi::node_element ? child.first_child() : pugi::xml_node();
     if (name != "coordinates" && name != "axis") return child;
   }
   return {};
@@ -176,31 +177,37 @@ FreeJointColumns free_joint(const pugi::xml_node& joint, const std::string& name
                 " coordinates, not 6");
   }
   FreeJointColumns out;
-  const Eigen::Vector3d axes[3] = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()};
+  const Eigen::Vector3d axes[3] = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
+                                   Eigen::Vector3d::UnitZ()};
   for (std::size_t i = 0; i < 3; ++i) out.rotations[i] = JointAxis{axes[i], coordinates[i], 1.0, 0.0};
-  for (std::size_t i = 0; i < 3; ++i) out.translations.push_back(JointAxis{axes[i], coordinates[3 + i], 1.0, 0.0});
+  for (std::size_t i = 0; i < 3; ++i)
+    out.translations.push_back(JointAxis{axes[i], coordinates[3 + i], 1.0, 0.0});
   return out;
 }
 
 }  // namespace
 
-static FreeJointColumns read_osim_joint_unguarded(const std::string& osim_path, const std::string& joint_name) {
+static FreeJointColumns read_osim_joint_unguarded(const std::string& osim_path,
+                                                  const std::string& joint_name) {
   pugi::xml_document doc;
   const pugi::xml_parse_result parsed = doc.load_file(osim_path.c_str());
   if (!parsed) {
     throw Error(osim_path + ": not a readable OpenSim model (" + parsed.description() + " at byte " +
                 std::to_string(parsed.offset) + ")");
   }
-  const pugi::xml_node joint =
-      doc.find_node([&](const pugi::xml_node& n) { return is_joint_element(n) && joint_name == n.attribute("name").value(); });
+  const pugi::xml_node joint = doc.find_node([&](const pugi::xml_node& n) {
+    return is_joint_element(n) && joint_name == n.attribute("name").value();
+  });
   if (!joint) {
     std::string names;
     std::size_t found = 0;
     doc.find_node([&](const pugi::xml_node& n) {
-      if (is_joint_element(n) && found++ < 20) names += (names.empty() ? "" : ", ") + std::string(n.attribute("name").value());
+      if (is_joint_element(n) && found++ < 20)
+        names += (names.empty() ? "" : ", ") + std::string(n.attribute("name").value());
       return false;
     });
-    throw Error(osim_path + ": no joint named '" + joint_name + "' (joints: " + (names.empty() ? "none" : names) + ")");
+    throw Error(osim_path + ": no joint named '" + joint_name +
+                "' (joints: " + (names.empty() ? "none" : names) + ")");
   }
   const std::string type = joint.name();
   FreeJointColumns out;

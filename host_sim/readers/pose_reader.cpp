@@ -56,13 +56,15 @@ JointColumnIndices find_joint_columns(const FreeJointColumns& joint, const std::
     if (axis.coordinate.empty()) return -1;
     const int column = coordinate_column(names, axis.coordinate);
     if (column < 0) {
-      throw Error(at_line(path, line, "no column " + axis.coordinate + " (" + joint.source +
-                                          "); columns: " + column_list(names)));
+      throw Error(at_line(
+          path, line,
+          "no column " + axis.coordinate + " (" + joint.source + "); columns: " + column_list(names)));
     }
     return column;
   };
   for (std::size_t i = 0; i < 3; ++i) out.rotation[i] = locate(joint.rotations[i]);
-  for (std::size_t i = 0; i < joint.translations.size() && i < 3; ++i) out.translation[i] = locate(joint.translations[i]);
+  for (std::size_t i = 0; i < joint.translations.size() && i < 3; ++i)
+    out.translation[i] = locate(joint.translations[i]);
   return out;
 }
 
@@ -90,10 +92,12 @@ static PoseTrial read_mot_unguarded(const std::string& path, const PoseNaming& n
       in_degrees = value == "yes";
     } else if (key == "nrows" || key == "datarows") {
       declared_rows = header_count(value);
-      if (!declared_rows) throw Error(at_line(path, i + 1, "nRows '" + value + "' is not a whole number up to 1e9"));
+      if (!declared_rows)
+        throw Error(at_line(path, i + 1, "nRows '" + value + "' is not a whole number up to 1e9"));
     } else if (key == "ncolumns" || key == "datacolumns") {
       declared_columns = header_count(value);
-      if (!declared_columns) throw Error(at_line(path, i + 1, "nColumns '" + value + "' is not a whole number up to 1e9"));
+      if (!declared_columns)
+        throw Error(at_line(path, i + 1, "nColumns '" + value + "' is not a whole number up to 1e9"));
     }
   }
   if (i == file.lines.size()) throw Error(path + ": no endheader line (not an OpenSim .mot/.sto)");
@@ -109,17 +113,19 @@ static PoseTrial read_mot_unguarded(const std::string& path, const PoseNaming& n
   }
   if (time_column < 0) throw Error(at_line(path, names_line, "no time column"));
   if (declared_columns && *declared_columns != names.size()) {
-    throw Error(at_line(path, names_line, std::to_string(names.size()) +
-                                              " column names where nColumns is " +
-                                              std::to_string(*declared_columns)));
+    throw Error(at_line(path, names_line,
+                        std::to_string(names.size()) + " column names where nColumns is " +
+                            std::to_string(*declared_columns)));
   }
   // The pose first: a file that holds none is refused for that, whatever else it lacks.
   std::vector<std::string> data_names = names;
   data_names.erase(data_names.begin() + time_column);
-  const std::optional<FreeJointColumns> joint = named ? named : recognise_free_joint(data_names, path, names_line);
+  const std::optional<FreeJointColumns> joint =
+      named ? named : recognise_free_joint(data_names, path, names_line);
   if (!joint) {
-    throw Error(at_line(path, names_line, "no free-joint pose among the columns (" + column_list(names) +
-                                              "); " + how_to_name_the_pose()));
+    throw Error(at_line(
+        path, names_line,
+        "no free-joint pose among the columns (" + column_list(names) + "); " + how_to_name_the_pose()));
   }
   const JointColumnIndices columns = find_joint_columns(*joint, names, path, names_line);
   if (!in_degrees) {
@@ -138,9 +144,9 @@ static PoseTrial read_mot_unguarded(const std::string& path, const PoseNaming& n
     const std::size_t line = i + 1;
     const std::vector<std::string> cells = split_whitespace(file.lines[i]);
     if (cells.size() != names.size()) {
-      throw Error(at_line(path, line, std::to_string(cells.size()) + " cells where the header names " +
-                                          std::to_string(names.size()) +
-                                          " columns (truncated or malformed row)"));
+      throw Error(at_line(path, line,
+                          std::to_string(cells.size()) + " cells where the header names " +
+                              std::to_string(names.size()) + " columns (truncated or malformed row)"));
     }
     auto value = [&](int column) {
       if (column < 0) return 0.0;  // a constant axis: its value is not read
@@ -232,9 +238,9 @@ static PoseTrial read_pose_csv_unguarded(const std::string& path) {
     const std::size_t line = i + 1;
     const std::vector<std::string> cells = split_csv_line(file.lines[i], path, line);
     if (cells.size() != header.size()) {
-      throw Error(at_line(path, line, std::to_string(cells.size()) + " cells where the header has " +
-                                          std::to_string(header.size()) +
-                                          " (truncated or malformed row)"));
+      throw Error(at_line(path, line,
+                          std::to_string(cells.size()) + " cells where the header has " +
+                              std::to_string(header.size()) + " (truncated or malformed row)"));
     }
     auto value = [&](int column) {
       const double v = parse_number(cells[column], path, line, header[column]);

@@ -18,9 +18,9 @@ bool parse_keep(const std::string& cell, const std::string& path, std::size_t li
   throw Error(at_line(path, line, "keep must be true or false, not '" + cell + "'"));
 }
 
-
 // The header row; throws "FILE:LINE: ..." unless it is segment,start,end[,keep,comment].
-std::vector<std::string> segments_header(const std::string& line, const std::string& path, std::size_t number) {
+std::vector<std::string> segments_header(const std::string& line, const std::string& path,
+                                         std::size_t number) {
   const std::vector<std::string> header = split_csv_line(line, path, number);
   const char* expected[] = {"segment", "start", "end", "keep", "comment"};
   const bool header_ok = header.size() >= 3 && header.size() <= 5 && [&] {
@@ -36,9 +36,8 @@ std::vector<std::string> segments_header(const std::string& line, const std::str
 }  // namespace
 
 static std::vector<Segment> read_segments_csv_unguarded(const std::string& path) {
-  const TextFile file = read_text_file(path, [&](const std::string& line, std::size_t number) {
-    segments_header(line, path, number);
-  });
+  const TextFile file = read_text_file(
+      path, [&](const std::string& line, std::size_t number) { segments_header(line, path, number); });
   std::size_t header_index = 0;
   while (is_blank(file.lines[header_index])) ++header_index;
   const std::vector<std::string> header = segments_header(file.lines[header_index], path, header_index + 1);
@@ -49,8 +48,7 @@ static std::vector<Segment> read_segments_csv_unguarded(const std::string& path)
     if (is_blank(file.lines[i])) continue;
     const std::size_t line = i + 1;
     // The comment column, when there is one, takes the rest of the line, commas included.
-    std::vector<std::string> cells =
-        split_csv_line(file.lines[i], path, line, header.size() == 5 ? 5 : 0);
+    std::vector<std::string> cells = split_csv_line(file.lines[i], path, line, header.size() == 5 ? 5 : 0);
     for (std::string& cell : cells) cell = trim(cell);  // also inside quotes
     ++rows;
     // SPEC §3: a keep=false row is not a flight and is skipped whatever its other cells

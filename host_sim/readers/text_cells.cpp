@@ -112,9 +112,9 @@ std::vector<std::string> split_csv_line(const std::string& line, const std::stri
       if (max_cells > 0 && cells.size() + 1 == max_cells) {
         const std::string rest = trim(line.substr(i + 1));
         // A wholly quoted remainder is one quoted cell; anything else is kept verbatim.
-        const std::vector<std::string> unquoted =
-            !rest.empty() && rest.front() == '"' ? split_csv_line(rest, path, line_number)
-                                                 : std::vector<std::string>{};
+        const std::vector<std::string> unquoted = !rest.empty() && rest.front() == '"'
+                                                      ? split_csv_line(rest, path, line_number)
+                                                      : std::vector<std::string>{};
         cells.push_back(unquoted.size() == 1 ? unquoted[0] : rest);
         return cells;
       }

@@ -31,8 +31,7 @@ void check_time_stamps(const std::vector<double>& time_s, const std::string& pat
     }
     if (time_s[i] < time_s[i - 1]) {
       throw Error(at_line(path, line,
-                          "time goes back from " + show(time_s[i - 1]) + " s to " +
-                              show(time_s[i]) + " s"));
+                          "time goes back from " + show(time_s[i - 1]) + " s to " + show(time_s[i]) + " s"));
     }
   }
 }

@@ -54,8 +54,7 @@ std::size_t header_count(const std::map<std::string, std::string>& header, const
                          const std::string& path) {
   const double value = header_number(header, key, path);
   if (value < 0 || value != std::floor(value) || value > 1e9) {
-    throw Error(at_line(path, 3, key + " must be a whole number, not '" + header.at(to_lower(key)) +
-                                     "'"));
+    throw Error(at_line(path, 3, key + " must be a whole number, not '" + header.at(to_lower(key)) + "'"));
   }
   return static_cast<std::size_t>(value);
 }
@@ -98,9 +97,9 @@ static MarkerTrial read_trc_unguarded(const std::string& path) {
     if (!names_row[i].empty()) trial.marker_names.push_back(names_row[i]);
   }
   if (trial.marker_names.size() != declared_markers) {
-    throw Error(at_line(path, 4, "names " + std::to_string(trial.marker_names.size()) +
-                                     " markers where NumMarkers is " +
-                                     std::to_string(declared_markers)));
+    throw Error(at_line(path, 4,
+                        "names " + std::to_string(trial.marker_names.size()) +
+                            " markers where NumMarkers is " + std::to_string(declared_markers)));
   }
   if (trial.marker_names.empty()) throw Error(at_line(path, 4, "no marker names"));
   const std::size_t markers = trial.marker_names.size();
@@ -113,9 +112,9 @@ static MarkerTrial read_trc_unguarded(const std::string& path) {
     const std::size_t line = i + 1;
     const std::vector<std::string> cells = split_tab_line(file.lines[i]);
     if (cells.size() < cells_per_row) {
-      throw Error(at_line(path, line, std::to_string(cells.size()) + " cells where a frame has " +
-                                          std::to_string(cells_per_row) +
-                                          " (truncated or malformed row)"));
+      throw Error(at_line(path, line,
+                          std::to_string(cells.size()) + " cells where a frame has " +
+                              std::to_string(cells_per_row) + " (truncated or malformed row)"));
     }
     for (std::size_t k = cells_per_row; k < cells.size(); ++k) {
       if (!cells[k].empty()) {
@@ -138,8 +137,7 @@ static MarkerTrial read_trc_unguarded(const std::string& path) {
         present += std::isfinite(xyz[axis]) ? 1 : 0;
       }
       if (present != 0 && present != 3) {
-        throw Error(at_line(path, line, "marker " + trial.marker_names[m] +
-                                            " has only some of X, Y, Z"));
+        throw Error(at_line(path, line, "marker " + trial.marker_names[m] + " has only some of X, Y, Z"));
       }
       frame[m] = present == 3 ? Eigen::Vector3d(xyz[0] * scale, xyz[1] * scale, xyz[2] * scale)
                               : Eigen::Vector3d(nan, nan, nan);

@@ -92,7 +92,9 @@ PoseTrial read_pose_file(const std::string& path, const PoseNaming& naming) {
   const TrialFormat format = detect_trial_format(path);
   if (format.name == "mot" || format.name == "sto") return read_mot(path, naming);
   if (format.name == "pose_csv") {
-    if (!naming.empty()) throw Error(path + ": a pose CSV names its own columns; --pose-columns, --osim and --joint are for .mot/.sto");
+    if (!naming.empty())
+      throw Error(path +
+                  ": a pose CSV names its own columns; --pose-columns, --osim and --joint are for .mot/.sto");
     return read_pose_csv(path);
   }
   throw Error(path + ": holds " + kind_name(format.kind) + ", not poses (.mot, .sto, pose CSV)");

@@ -16,8 +16,7 @@
 namespace aloft::host {
 namespace {
 
-std::vector<double> parse_numbers(const std::string& text, std::size_t count,
-                                  const std::string& option) {
+std::vector<double> parse_numbers(const std::string& text, std::size_t count, const std::string& option) {
   std::vector<double> values;
   std::stringstream in(text);
   std::string cell;
@@ -88,8 +87,7 @@ void run_simulate(const SimulateOptions& o) {
       out << '\n';
     }
   });
-  std::fprintf(stderr, "aloft simulate: %zu samples written to %s\n", samples.size(),
-               o.out_path.c_str());
+  std::fprintf(stderr, "aloft simulate: %zu samples written to %s\n", samples.size(), o.out_path.c_str());
 }
 
 }  // namespace
@@ -99,13 +97,10 @@ void add_simulate_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "simulate", "simulate one torque-free flight and write t,qw,qx,qy,qz,wx,wy,wz (SPEC §5)");
   cmd->add_option("--body", options->body_path, "body file (SPEC §2)")->required();
-  cmd->add_option("--w0", options->w0, "initial angular velocity in body axes, rad/s: wx,wy,wz")
-      ->required();
-  cmd->add_option("--q0", options->q0, "initial orientation body->world: w,x,y,z")
-      ->capture_default_str();
+  cmd->add_option("--w0", options->w0, "initial angular velocity in body axes, rad/s: wx,wy,wz")->required();
+  cmd->add_option("--q0", options->q0, "initial orientation body->world: w,x,y,z")->capture_default_str();
   cmd->add_option("--duration", options->duration_s, "flight duration, s")->required();
-  cmd->add_option("--rate", options->rate_hz, "output sample rate, Hz (internal steps <= 1 ms)")
-      ->required();
+  cmd->add_option("--rate", options->rate_hz, "output sample rate, Hz (internal steps <= 1 ms)")->required();
   cmd->add_option("--integrator", options->integrator, "rk4 or splitting (4th-order Lie splitting)")
       ->capture_default_str()
       ->check(CLI::IsMember({"rk4", "splitting"}));

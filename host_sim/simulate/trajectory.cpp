@@ -32,8 +32,7 @@ std::vector<TrajectorySample> run(const Integrator& integrator, const Trajectory
       for (int i = 0; i < substeps; ++i) {
         const Status s = integrator.step(state, h);
         if (s != Status::ok) {
-          throw Error("simulation stopped at t = " + std::to_string(double(k) * dt) + " s: " +
-                      describe(s));
+          throw Error("simulation stopped at t = " + std::to_string(double(k) * dt) + " s: " + describe(s));
         }
       }
     }
@@ -48,9 +47,8 @@ std::vector<TrajectorySample> run(const Integrator& integrator, const Trajectory
 }
 
 template <typename Scalar>
-std::vector<TrajectorySample> run_in(const InertiaTensor<Scalar>& inertia,
-                                     const TrajectoryRequest& request, std::size_t samples,
-                                     int substeps) {
+std::vector<TrajectorySample> run_in(const InertiaTensor<Scalar>& inertia, const TrajectoryRequest& request,
+                                     std::size_t samples, int substeps) {
   if (request.integrator == IntegratorKind::rk4) {
     return run<Scalar>(Rk4Integrator<Scalar>(inertia), request, samples, substeps);
   }
@@ -79,8 +77,7 @@ std::vector<TrajectorySample> simulate_trajectory(const InertiaTensor<double>& i
   const double samples_f = std::floor(request.duration_s * request.rate_hz + 1e-9) + 1.0;
   if (samples_f > 1e8) throw Error("too many samples (duration x rate > 1e8)");
   const auto samples = static_cast<std::size_t>(samples_f);
-  const int substeps =
-      static_cast<int>(std::ceil(1.0 / request.rate_hz / request.max_step_s - 1e-9));
+  const int substeps = static_cast<int>(std::ceil(1.0 / request.rate_hz / request.max_step_s - 1e-9));
   if (request.precision == Precision::double_precision) {
     return run_in<double>(inertia, request, samples, substeps);
   }

@@ -178,8 +178,8 @@ std::vector<Panel> build_panels(const StudyResult& result, DaFrame frame, double
       if (!an.monte_carlo || an.perturbation.family != fam.family) continue;
       char label[16];
       std::snprintf(label, sizeof label, "%g", an.perturbation.bound);
-      p.boxes.push_back(
-          {label, summarise(pooled_rms_da(result, an.name, frame)), paper_side ? published_row(an) : nullptr});
+      p.boxes.push_back({label, summarise(pooled_rms_da(result, an.name, frame)),
+                         paper_side ? published_row(an) : nullptr});
     }
     panels.push_back(p);
   }
@@ -232,8 +232,8 @@ double figure_width(const StudyResult& result) {
 FigureFiles render_study_figure(const StudyResult& result) {
   const double width = figure_width(result);
   const double height = row_top(result.frames.size());
-  return render_svg_and_png(width, height, [&](cairo_t* cr) { draw(cr, result, width); },
-                            "figure");
+  return render_svg_and_png(
+      width, height, [&](cairo_t* cr) { draw(cr, result, width); }, "figure");
 }
 
 }  // namespace aloft::host

@@ -13,8 +13,7 @@ InertiaTensor<double> compound_pendulum_inertia() {
   InertiaTensor<double> cp;
   const Eigen::Vector3d moments(paper::kCompoundPendulumKgM2[0], paper::kCompoundPendulumKgM2[1],
                                 paper::kCompoundPendulumKgM2[2]);
-  const Status made =
-      InertiaTensor<double>::make_from_principal(moments, Eigen::Quaterniond::Identity(), cp);
+  const Status made = InertiaTensor<double>::make_from_principal(moments, Eigen::Quaterniond::Identity(), cp);
   if (made != Status::ok) throw Error(std::string("the paper's CP tensor: ") + describe(made));
   return cp;
 }
@@ -22,8 +21,7 @@ InertiaTensor<double> compound_pendulum_inertia() {
 BuiltInTrial make_built_in_trial(const SyntheticThrowSettings& settings) {
   const SyntheticThrow sim = make_synthetic_throw(settings);
   const PoseTrial fitted = fit_poses(sim.markers, sim.body);
-  const ResampledPoses poses =
-      resample_poses(fitted.time_s, fitted.orientation, paper::kResampleRateHz);
+  const ResampledPoses poses = resample_poses(fitted.time_s, fitted.orientation, paper::kResampleRateHz);
 
   BuiltInTrial out;
   out.body = sim.body;
@@ -31,9 +29,7 @@ BuiltInTrial make_built_in_trial(const SyntheticThrowSettings& settings) {
 
   nlohmann::json& d = out.description;
   d["kind"] = "built-in synthetic throw of the paper's cylinder";
-  d["body"] = {{"mass_kg", paper::kMassKg},
-               {"height_m", paper::kHeightM},
-               {"diameter_m", paper::kDiameterM}};
+  d["body"] = {{"mass_kg", paper::kMassKg}, {"height_m", paper::kHeightM}, {"diameter_m", paper::kDiameterM}};
   nlohmann::json markers = nlohmann::json::object();
   for (const auto& [name, p] : sim.body.markers_m) markers[name] = {p.x(), p.y(), p.z()};
   d["markers_body_m"] = markers;

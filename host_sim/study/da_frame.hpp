@@ -22,9 +22,7 @@ constexpr std::size_t kDaFrames = 2;
 constexpr std::array<DaFrame, kDaFrames> kAllDaFrames = {DaFrame::body, DaFrame::world};
 
 inline std::size_t frame_index(DaFrame frame) { return static_cast<std::size_t>(frame); }
-inline const char* frame_name(DaFrame frame) {
-  return frame == DaFrame::body ? "body" : "world";
-}
+inline const char* frame_name(DaFrame frame) { return frame == DaFrame::body ? "body" : "world"; }
 
 // One RMS deviation angle per frame, degrees (world is NaN for a rate flight).
 using RmsDaByFrame = std::array<double, kDaFrames>;

@@ -11,8 +11,7 @@ bool full_flight_lanes_avx2_supported() {
   return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 }
 
-void run_full_flight_lanes_avx2(const FlightArrays<double>& flight,
-                                const FlightSimulation<double>* sims,
+void run_full_flight_lanes_avx2(const FlightArrays<double>& flight, const FlightSimulation<double>* sims,
                                 SquaredDeviations<double>* out) {
   using Lanes = xsimd::batch<double, xsimd::avx2>;
   static_assert(LaneTraits<Lanes>::count == kFullFlightLanesAvx2, "4 doubles per AVX2 register");

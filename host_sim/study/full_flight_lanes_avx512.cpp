@@ -11,8 +11,7 @@ bool full_flight_lanes_avx512_supported() {
   return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
 }
 
-void run_full_flight_lanes_avx512(const FlightArrays<double>& flight,
-                                  const FlightSimulation<double>* sims,
+void run_full_flight_lanes_avx512(const FlightArrays<double>& flight, const FlightSimulation<double>* sims,
                                   SquaredDeviations<double>* out) {
   using Lanes = xsimd::batch<double, xsimd::avx512f>;
   static_assert(LaneTraits<Lanes>::count == kFullFlightLanesAvx512, "8 doubles per AVX-512 register");

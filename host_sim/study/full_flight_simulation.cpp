@@ -24,8 +24,7 @@ struct SquaredDaSums {
   void add(const Eigen::Quaterniond& from, const Eigen::Quaterniond& to, const StudyFlight& f,
            std::size_t j) {
     const double b = deviation_angle(rotation_axis_between(from, to), f.measured_omega_body[j]);
-    const double w =
-        deviation_angle(world_rotation_axis_between(from, to), f.measured_omega_world[j]);
+    const double w = deviation_angle(world_rotation_axis_between(from, to), f.measured_omega_world[j]);
     body += b * b;
     world += w * w;
   }
@@ -34,8 +33,7 @@ struct SquaredDaSums {
 // Pose flight: orientation and rate integrated; the simulated omega of each interval
 // comes from the two simulated orientations that bound it, like the measured one. The
 // flight was validated once (validate_study_flight), so the steps are unchecked.
-RmsDaByFrame pose_flight_rms_da(const StudyFlight& f, const InertiaTensor<double>& inertia,
-                                std::size_t k) {
+RmsDaByFrame pose_flight_rms_da(const StudyFlight& f, const InertiaTensor<double>& inertia, std::size_t k) {
   const Rk4Integrator<double> integrator(inertia);
   const std::size_t n = f.samples();
   const RigidBodyState<double> seed{f.orientation[k], f.state_omega_body[k]};
@@ -60,8 +58,7 @@ RmsDaByFrame pose_flight_rms_da(const StudyFlight& f, const InertiaTensor<double
 
 // Rate flight: the body rate alone, compared with the gyro at every sample (the seed
 // sample itself included, where the deviation is zero by construction).
-double rate_flight_rms_da(const StudyFlight& f, const InertiaTensor<double>& inertia,
-                          std::size_t k) {
+double rate_flight_rms_da(const StudyFlight& f, const InertiaTensor<double>& inertia, std::size_t k) {
   const std::size_t n = f.samples();
   double sum_sq = 0.0;
   Eigen::Vector3d w = f.state_omega_body[k];
@@ -86,8 +83,7 @@ Eigen::Vector3d rotation_axis_between(const Eigen::Quaterniond& a, const Eigen::
   return d.w() < 0.0 ? Eigen::Vector3d(-d.vec()) : Eigen::Vector3d(d.vec());
 }
 
-Eigen::Vector3d world_rotation_axis_between(const Eigen::Quaterniond& a,
-                                            const Eigen::Quaterniond& b) {
+Eigen::Vector3d world_rotation_axis_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
   const Eigen::Quaterniond d = b * a.conjugate();
   return d.w() < 0.0 ? Eigen::Vector3d(-d.vec()) : Eigen::Vector3d(d.vec());
 }
@@ -165,8 +161,7 @@ void validate_study_flight(const StudyFlight& f) {
   if (n < 3) {
     throw Error(where + "flight has " + std::to_string(n) + " samples; at least 3 are needed");
   }
-  if (f.state_omega_body.size() != n ||
-      (f.has_orientation() && f.orientation.size() != n) ||
+  if (f.state_omega_body.size() != n || (f.has_orientation() && f.orientation.size() != n) ||
       f.measured_omega_body.size() != (f.has_orientation() ? n - 1 : n) ||
       f.measured_omega_world.size() != (f.has_orientation() ? n - 1 : 0)) {
     throw Error(where + "inconsistent flight data (internal error)");

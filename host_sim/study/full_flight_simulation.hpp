@@ -53,8 +53,7 @@ Eigen::Vector3d rotation_axis_between(const Eigen::Quaterniond& a, const Eigen::
 
 // The same axis in world axes: the vector part of b a^-1 on the short side (a's body
 // axis rotated by a), pointing along omega_world dt.
-Eigen::Vector3d world_rotation_axis_between(const Eigen::Quaterniond& a,
-                                            const Eigen::Quaterniond& b);
+Eigen::Vector3d world_rotation_axis_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b);
 
 // Checks a flight before thousands of simulations run on it: at least 3 samples,
 // increasing times, finite unit orientations, finite non-zero measured rates. Throws

@@ -21,11 +21,9 @@ bool full_flight_lanes_avx2_supported();
 bool full_flight_lanes_avx512_supported();
 
 // BatchFlight over 4 (AVX2) or 8 (AVX-512) lanes: sims[0..lanes) and out[0..lanes).
-void run_full_flight_lanes_avx2(const FlightArrays<double>& flight,
-                                const FlightSimulation<double>* sims,
+void run_full_flight_lanes_avx2(const FlightArrays<double>& flight, const FlightSimulation<double>* sims,
                                 SquaredDeviations<double>* out);
-void run_full_flight_lanes_avx512(const FlightArrays<double>& flight,
-                                  const FlightSimulation<double>* sims,
+void run_full_flight_lanes_avx512(const FlightArrays<double>& flight, const FlightSimulation<double>* sims,
                                   SquaredDeviations<double>* out);
 
 }  // namespace aloft::host

@@ -43,8 +43,7 @@ Eigen::Quaterniond axes_rotation(AxesSampler sampler, double radians, Simulation
   }
   boost::random::uniform_real_distribution<double> u(-1.0, 1.0);
   const double a = radians * u(random), b = radians * u(random), c = radians * u(random);
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitX()) *
-         Eigen::AngleAxisd(b, Eigen::Vector3d::UnitY()) *
+  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(b, Eigen::Vector3d::UnitY()) *
          Eigen::AngleAxisd(c, Eigen::Vector3d::UnitZ());
 }
 

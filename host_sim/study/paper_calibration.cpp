@@ -18,8 +18,7 @@ struct ModelRows {
   std::array<DistributionSummary, kDaFrames> gf, cp;
 };
 
-ModelRows evaluate_models(const CalibrationSettings& s, const ThrowParameters& p,
-                          std::size_t seed_stride) {
+ModelRows evaluate_models(const CalibrationSettings& s, const ThrowParameters& p, std::size_t seed_stride) {
   const BuiltInTrial trial = make_built_in_trial(with_parameters(s.base, p));
   std::vector<Analysis> analyses = {model_analysis("GF", trial.body.inertia),
                                     model_analysis("CP", compound_pendulum_inertia())};
@@ -157,8 +156,7 @@ SyntheticThrowSettings with_parameters(SyntheticThrowSettings base, const ThrowP
   return base;
 }
 
-CalibrationResult calibrate_to_paper(const CalibrationSettings& s,
-                                     const std::vector<DaFrame>& frames) {
+CalibrationResult calibrate_to_paper(const CalibrationSettings& s, const std::vector<DaFrame>& frames) {
   const Clock::time_point start = Clock::now();
   const auto report = [&](const std::string& phase, std::size_t done, std::size_t total) {
     if (s.progress) s.progress(phase, done, total);
@@ -180,8 +178,7 @@ CalibrationResult calibrate_to_paper(const CalibrationSettings& s,
     std::vector<Scored>& candidates = scored[frame_index(frame)];
     const std::size_t starts = std::max<std::size_t>(1, std::min(s.refine_starts, candidates.size()));
     std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(starts),
-                      candidates.end(),
-                      [](const Scored& a, const Scored& b) { return a.score < b.score; });
+                      candidates.end(), [](const Scored& a, const Scored& b) { return a.score < b.score; });
     FrameCalibration fc;
     fc.frame = frame;
     fc.evaluations = grid.size();

@@ -72,7 +72,6 @@ struct CalibrationResult {
 
 SyntheticThrowSettings with_parameters(SyntheticThrowSettings base, const ThrowParameters& p);
 
-CalibrationResult calibrate_to_paper(const CalibrationSettings& settings,
-                                     const std::vector<DaFrame>& frames);
+CalibrationResult calibrate_to_paper(const CalibrationSettings& settings, const std::vector<DaFrame>& frames);
 
 }  // namespace aloft::host

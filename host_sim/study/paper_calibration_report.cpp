@@ -50,9 +50,10 @@ json calibration_json(const CalibrationResult& result, const CalibrationSettings
     entry["evaluations"] = f.evaluations;
     json rows = json::array();
     for (const PredictedRow& r : f.rows) {
-      json row = {{"analysis", r.name},
-                  {"role", r.used_in_search ? "fitted" : "predicted"},
-                  {"rms_da_deg", {{"p10", r.summary.p10}, {"median", r.summary.median}, {"p90", r.summary.p90}}}};
+      json row = {
+          {"analysis", r.name},
+          {"role", r.used_in_search ? "fitted" : "predicted"},
+          {"rms_da_deg", {{"p10", r.summary.p10}, {"median", r.summary.median}, {"p90", r.summary.p90}}}};
       if (const paper::PublishedRow* p = paper_row(r.name)) {
         row["paper_rms_da_deg"] = {{"p10", p->p10}, {"median", p->median}, {"p90", p->p90}};
       }
@@ -86,8 +87,7 @@ std::string calibration_table(const CalibrationResult& result) {
       std::snprintf(line, sizeof line,
                     "  %-20s %-9s %6.2f %6.2f %6.2f | paper %5.1f %5.1f %5.1f | diff %+5.1f %+5.1f %+5.1f\n",
                     r.name.c_str(), r.used_in_search ? "fitted" : "predicted", s.p10, s.median, s.p90,
-                    pr->p10, pr->median, pr->p90, s.p10 - pr->p10, s.median - pr->median,
-                    s.p90 - pr->p90);
+                    pr->p10, pr->median, pr->p90, s.p10 - pr->p10, s.median - pr->median, s.p90 - pr->p90);
       out << line;
     }
   }

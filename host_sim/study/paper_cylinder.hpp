@@ -11,7 +11,7 @@ constexpr double kMassKg = 10.010;
 constexpr double kHeightM = 0.0970;
 constexpr double kDiameterM = 0.1298;
 constexpr double kFlightTimeS = 0.872;
-constexpr double kCameraRateHz = 250.0;   // Vicon MX
+constexpr double kCameraRateHz = 250.0;     // Vicon MX
 constexpr double kResampleRateHz = 1000.0;  // OpenSim inverse kinematics output
 constexpr double kMarkerDiameterM = 0.012;
 

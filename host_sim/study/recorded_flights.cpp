@@ -17,18 +17,15 @@ namespace {
 
 std::string stem_of(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
-StudyFlight pose_flight_from(const PoseTrial& poses, const std::string& path,
-                             nlohmann::json& description) {
+StudyFlight pose_flight_from(const PoseTrial& poses, const std::string& path, nlohmann::json& description) {
   if (poses.time_s.size() < 3) {
     throw Error(path + ": " + std::to_string(poses.time_s.size()) +
                 " usable poses; the study needs at least 3");
   }
   description["poses"] = poses.time_s.size();
   description["gaps"] = time_gaps(poses.time_s);
-  description["resampling"] =
-      "C1 cubic Hermite spline in the tangent space of SO(3), to 1000 Hz";
-  const ResampledPoses resampled =
-      resample_poses(poses.time_s, poses.orientation, paper::kResampleRateHz);
+  description["resampling"] = "C1 cubic Hermite spline in the tangent space of SO(3), to 1000 Hz";
+  const ResampledPoses resampled = resample_poses(poses.time_s, poses.orientation, paper::kResampleRateHz);
   StudyFlight f = make_pose_flight(stem_of(path), resampled);
   description["samples"] = f.samples();
   return f;
@@ -62,8 +59,7 @@ RecordedTrial load_recorded_trial(const RecordingInput& in) {
     // The readers' one dispatch on the file type (readers/trial_file.hpp).
     const MarkerTrial markers = read_marker_file(in.markers_path);
     if (out.body.markers_m.size() < 3) {
-      throw Error(in.body_path + ": the body needs at least 3 \"markers\" to fit " +
-                  in.markers_path);
+      throw Error(in.body_path + ": the body needs at least 3 \"markers\" to fit " + in.markers_path);
     }
     d["kind"] = "markers";
     d["markers"] = in.markers_path;
@@ -72,8 +68,10 @@ RecordedTrial load_recorded_trial(const RecordingInput& in) {
     const PoseTrial poses = fit_poses(markers, out.body, &report);
     nlohmann::json unposed = nlohmann::json::array();
     for (const FrameRange& g : report.gaps) {
-      unposed.push_back({{"first_frame", g.first_frame}, {"last_frame", g.last_frame},
-                         {"start_s", g.start_s}, {"end_s", g.end_s}});
+      unposed.push_back({{"first_frame", g.first_frame},
+                         {"last_frame", g.last_frame},
+                         {"start_s", g.start_s},
+                         {"end_s", g.end_s}});
     }
     d["unposed_frames"] = unposed;  // fewer than three markers visible: bridged by the spline
     d["mean_fit_residual_m"] = report.mean_rms_residual_m;
@@ -107,14 +105,12 @@ RecordedTrial load_recorded_trial(const RecordingInput& in) {
           w.push_back(to_body * log.gyro_rad_s[i]);
         }
       }
-      const std::string name = segments.size() > 1 || !in.segments_path.empty()
-                                   ? "segment " + s.name
-                                   : stem_of(in.imu_path);
+      const std::string name =
+          segments.size() > 1 || !in.segments_path.empty() ? "segment " + s.name : stem_of(in.imu_path);
       if (t.size() < 3) {
-        throw Error((in.segments_path.empty() ? in.imu_path : in.segments_path) + ": " + name +
-                    " (" + std::to_string(s.start_s) + " to " + std::to_string(s.end_s) +
-                    " s) holds " + std::to_string(t.size()) + " gyro samples of " + in.imu_path +
-                    "; at least 3 are needed");
+        throw Error((in.segments_path.empty() ? in.imu_path : in.segments_path) + ": " + name + " (" +
+                    std::to_string(s.start_s) + " to " + std::to_string(s.end_s) + " s) holds " +
+                    std::to_string(t.size()) + " gyro samples of " + in.imu_path + "; at least 3 are needed");
       }
       StudyFlight f = make_rate_flight(name, t, w);
       f.start_s = s.start_s;

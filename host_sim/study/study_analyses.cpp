@@ -25,8 +25,8 @@ Analysis monte_carlo_analysis(const InertiaPerturbation& perturbation, std::size
   if (perturbation.family == PerturbationFamily::both) {
     std::snprintf(name, sizeof name, "both %g %% + %g deg", perturbation.bound, perturbation.bound);
   } else {
-    std::snprintf(name, sizeof name, "%s %g %s", family_name(perturbation.family),
-                  perturbation.bound, family_unit(perturbation.family));
+    std::snprintf(name, sizeof name, "%s %g %s", family_name(perturbation.family), perturbation.bound,
+                  family_unit(perturbation.family));
   }
   a.name = name;
   a.monte_carlo = true;
@@ -71,8 +71,8 @@ void run_analyses(const StudyFlight& flight, const InertiaTensor<double>& nomina
     InertiaTensor<double> inertia;
   };
   const auto simulation = [&](std::size_t flat) {
-    const std::size_t a = static_cast<std::size_t>(
-        std::upper_bound(first.begin(), first.end(), flat) - first.begin() - 1);
+    const std::size_t a =
+        static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), flat) - first.begin() - 1);
     Analysis& an = analyses[a];
     const std::size_t i = flat - first[a];
     if (!an.monte_carlo) return Simulation{&an, i, i * an.seed_stride, an.inertia};

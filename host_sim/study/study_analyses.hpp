@@ -25,11 +25,11 @@
 namespace aloft::host {
 
 struct Analysis {
-  std::string name;         // "GF", "CP", "nominal", "moments 2.5 %", ...
+  std::string name;  // "GF", "CP", "nominal", "moments 2.5 %", ...
   bool monte_carlo = false;
-  InertiaTensor<double> inertia;       // model analyses
-  InertiaPerturbation perturbation;    // Monte Carlo analyses
-  std::size_t simulations = 0;         // Monte Carlo; a model runs one per seed sample
+  InertiaTensor<double> inertia;     // model analyses
+  InertiaPerturbation perturbation;  // Monte Carlo analyses
+  std::size_t simulations = 0;       // Monte Carlo; a model runs one per seed sample
   // Models: seeded at every seed_stride-th sample (1, the paper's: every sample; the
   // calibration search thins them out for speed).
   std::size_t seed_stride = 1;

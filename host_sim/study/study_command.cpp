@@ -31,7 +31,7 @@ struct StudyOptions {
   std::string out_dir = "aloft-study";
   std::uint64_t seed = 1;
   std::size_t mc_samples = paper::kMonteCarloSimulations;
-  unsigned threads = 0;  // 0: every core
+  unsigned threads = 0;        // 0: every core
   std::string frame = "both";  // body, world or both (study/da_frame.hpp)
   RecordingInput recording;
   ThrowOptions throw_options;
@@ -66,12 +66,14 @@ void check_options(const StudyOptions& o) {
     throw Error("study: --frame must be body, world or both, not '" + o.frame + "'");
   }
   if (!r.body_path.empty() && o.throw_options.throw_given()) {
-    throw Error("study: --throw, --spin-*, --duration and --marker-* shape the built-in "
-                "throw; they do not apply to a recording");
+    throw Error(
+        "study: --throw, --spin-*, --duration and --marker-* shape the built-in "
+        "throw; they do not apply to a recording");
   }
   if (o.calibrate_to_paper && (!r.body_path.empty() || o.throw_options.searched_given())) {
-    throw Error("study: --calibrate-to-paper searches the built-in throw's spin and marker "
-                "noise; it takes no recording, --throw, --spin-* or --marker-noise");
+    throw Error(
+        "study: --calibrate-to-paper searches the built-in throw's spin and marker "
+        "noise; it takes no recording, --throw, --spin-* or --marker-noise");
   }
   resolve_throw(o.throw_options);  // refuses bad values before any work
   resolve_axes_sampler(o.throw_options);
@@ -91,8 +93,8 @@ std::vector<DaFrame> frames_to_report(const StudyOptions& o) {
 std::function<void(std::size_t, std::size_t)> terminal_progress(const std::string& label) {
   if (!::isatty(STDERR_FILENO)) return {};
   return [label](std::size_t done, std::size_t total) {
-    std::fprintf(stderr, "\rstudy: %s: %zu / %zu simulations (%3.0f %%)", label.c_str(), done,
-                 total, 100.0 * static_cast<double>(done) / static_cast<double>(total));
+    std::fprintf(stderr, "\rstudy: %s: %zu / %zu simulations (%3.0f %%)", label.c_str(), done, total,
+                 100.0 * static_cast<double>(done) / static_cast<double>(total));
     if (done == total) std::fprintf(stderr, "\r\033[K");
     std::fflush(stderr);
   };
@@ -195,8 +197,8 @@ void calibrate(const StudyOptions& o) {
   if (::isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
   write_outputs(o.out_dir, {{"calibration.json", calibration_json(result, s).dump(2) + "\n"}});
   std::fputs(calibration_table(result).c_str(), stdout);
-  std::printf("wall time %.1f s on %u thread%s; wrote %s/calibration.json\n", result.wall_time_s,
-              s.threads, s.threads == 1 ? "" : "s", o.out_dir.c_str());
+  std::printf("wall time %.1f s on %u thread%s; wrote %s/calibration.json\n", result.wall_time_s, s.threads,
+              s.threads == 1 ? "" : "s", o.out_dir.c_str());
 }
 
 void study(const StudyOptions& o) {
@@ -222,8 +224,7 @@ void study(const StudyOptions& o) {
 
   std::printf("aloft study: %s, %zu flight%s, seed %llu, %u thread%s\n", result.input.c_str(),
               result.flights.size(), result.flights.size() == 1 ? "" : "s",
-              static_cast<unsigned long long>(result.seed), result.threads,
-              result.threads == 1 ? "" : "s");
+              static_cast<unsigned long long>(result.seed), result.threads, result.threads == 1 ? "" : "s");
   std::fputs(table.c_str(), stdout);
   if (!result.built_in) std::printf("nominal: %s\n", kNominalMeasures);
   std::printf("wall time %.2f s (", result.wall_time_s);
@@ -239,11 +240,11 @@ void study(const StudyOptions& o) {
 
 void add_study_command(CLI::App& app) {
   auto options = std::make_shared<StudyOptions>();
-  auto* cmd = app.add_subcommand(
-      "study", "the seed paper's inertia study: GF vs CP and 12 Monte Carlo analyses, on the "
-               "built-in throw or on a recording");
-  cmd->add_option("--out", options->out_dir, "output folder (default aloft-study)")
-      ->check(output_folder());
+  auto* cmd =
+      app.add_subcommand("study",
+                         "the seed paper's inertia study: GF vs CP and 12 Monte Carlo analyses, on the "
+                         "built-in throw or on a recording");
+  cmd->add_option("--out", options->out_dir, "output folder (default aloft-study)")->check(output_folder());
   cmd->add_option("--seed", options->seed, "seed of the Monte Carlo draws (default 1)")
       ->check(whole_number());
   cmd->add_option("--mc-samples", options->mc_samples,

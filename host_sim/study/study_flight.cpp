@@ -20,8 +20,7 @@ StudyFlight make_pose_flight(const std::string& name, const ResampledPoses& pose
   for (std::size_t j = 0; j + 1 < n; ++j) {
     // A failed status (bad dt or quaternion) leaves the rate zero, which validation rejects.
     const Status s = omega_body_from_orientations(f.orientation[j], f.orientation[j + 1],
-                                                  f.time_s[j + 1] - f.time_s[j],
-                                                  f.measured_omega_body[j]);
+                                                  f.time_s[j + 1] - f.time_s[j], f.measured_omega_body[j]);
     if (s != Status::ok) f.measured_omega_body[j].setZero();
   }
   f.measured_omega_world.resize(f.measured_omega_body.size());

@@ -22,13 +22,13 @@
 namespace aloft::host {
 
 struct StudyFlight {
-  std::string name;             // e.g. "built-in throw", "segment 3"
-  double start_s = 0.0;         // where the flight lies in its source file
+  std::string name;      // e.g. "built-in throw", "segment 3"
+  double start_s = 0.0;  // where the flight lies in its source file
   double end_s = 0.0;
-  std::vector<double> time_s;   // n samples, strictly increasing
-  std::vector<Eigen::Quaterniond> orientation;    // n for pose flights, empty for rate flights
-  std::vector<Eigen::Vector3d> state_omega_body;  // n: omega of the state seeded at sample k
-  std::vector<Eigen::Vector3d> measured_omega_body;  // n-1 (pose) or n (rate) comparisons
+  std::vector<double> time_s;                         // n samples, strictly increasing
+  std::vector<Eigen::Quaterniond> orientation;        // n for pose flights, empty for rate flights
+  std::vector<Eigen::Vector3d> state_omega_body;      // n: omega of the state seeded at sample k
+  std::vector<Eigen::Vector3d> measured_omega_body;   // n-1 (pose) or n (rate) comparisons
   std::vector<Eigen::Vector3d> measured_omega_world;  // n-1 (pose: q_j omega_j), empty (rate)
 
   bool has_orientation() const { return !orientation.empty(); }

@@ -11,8 +11,7 @@ namespace aloft::host {
 
 using nlohmann::json;
 
-std::vector<double> pooled_rms_da(const StudyResult& result, const std::string& name,
-                                  DaFrame frame) {
+std::vector<double> pooled_rms_da(const StudyResult& result, const std::string& name, DaFrame frame) {
   std::vector<double> out;
   for (const FlightStudy& f : result.flights) {
     for (const Analysis& a : f.analyses) {
@@ -76,8 +75,7 @@ namespace {
 
 // "models" and "monte_carlo" for a list of analyses whose rms_da_deg are `values_of(a)`.
 template <typename ValuesOf>
-void analyses_json(const std::vector<Analysis>& analyses, bool with_paper, ValuesOf values_of,
-                   json& out) {
+void analyses_json(const std::vector<Analysis>& analyses, bool with_paper, ValuesOf values_of, json& out) {
   json models = json::object();
   json monte_carlo = json::array();
   for (const Analysis& a : analyses) {
@@ -118,13 +116,13 @@ namespace {
 // both keys in every frame reported, for analyses whose values in a frame are
 // values_of(a, frame).
 template <typename ValuesOf>
-void frames_json(const StudyResult& result, const std::vector<Analysis>& analyses,
-                 bool with_paper, ValuesOf values_of, json& out) {
+void frames_json(const StudyResult& result, const std::vector<Analysis>& analyses, bool with_paper,
+                 ValuesOf values_of, json& out) {
   json frames = json::object();
   for (DaFrame frame : result.frames) {
     json block;
-    analyses_json(analyses, with_paper, [&](const Analysis& a) { return values_of(a, frame); },
-                  block);
+    analyses_json(
+        analyses, with_paper, [&](const Analysis& a) { return values_of(a, frame); }, block);
     frames[frame_name(frame)] = block;
   }
   out["frame"] = frame_name(result.frames.front());
@@ -136,8 +134,9 @@ void frames_json(const StudyResult& result, const std::vector<Analysis>& analyse
 json frame_definitions() {
   return {{"body", "omega in the body's own axes: the vector part of q_j^-1 q_{j+1}"},
           {"world", "omega in the fixed lab axes: the vector part of q_{j+1} q_j^-1"},
-          {"top_level_keys", "\"models\" and \"monte_carlo\" hold the frame named by "
-                             "\"frame\"; \"frames\" holds every frame reported"}};
+          {"top_level_keys",
+           "\"models\" and \"monte_carlo\" hold the frame named by "
+           "\"frame\"; \"frames\" holds every frame reported"}};
 }
 
 }  // namespace
@@ -154,8 +153,9 @@ json results_json(const StudyResult& result) {
       "linear interpolation between order statistics at rank p(n-1) (Hyndman-Fan type 7)";
   out["frame_definitions"] = frame_definitions();
   const std::vector<Analysis>& first = result.flights.front().analyses;
-  frames_json(result, first, result.built_in,
-              [&](const Analysis& a, DaFrame f) { return pooled_rms_da(result, a.name, f); }, out);
+  frames_json(
+      result, first, result.built_in,
+      [&](const Analysis& a, DaFrame f) { return pooled_rms_da(result, a.name, f); }, out);
   if (!result.built_in) {
     json flights = json::array();
     for (const FlightStudy& f : result.flights) {
@@ -164,8 +164,8 @@ json results_json(const StudyResult& result) {
       entry["start_s"] = f.flight.start_s;
       entry["end_s"] = f.flight.end_s;
       entry["samples"] = f.flight.samples();
-      frames_json(result, f.analyses, false,
-                  [](const Analysis& a, DaFrame frame) { return a.values(frame); }, entry);
+      frames_json(
+          result, f.analyses, false, [](const Analysis& a, DaFrame frame) { return a.values(frame); }, entry);
       flights.push_back(entry);
     }
     out["flights"] = flights;
@@ -206,8 +206,8 @@ std::string experiment_csv(const StudyResult& result) {
     for (std::size_t i = 0; i < f.samples(); ++i) {
       const Eigen::Quaterniond& q = f.orientation[i];
       const Eigen::Vector3d& w = f.state_omega_body[i];
-      out << f.time_s[i] << ',' << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ','
-          << w.x() << ',' << w.y() << ',' << w.z() << '\n';
+      out << f.time_s[i] << ',' << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ',' << w.x()
+          << ',' << w.y() << ',' << w.z() << '\n';
     }
     return out.str();
   }
@@ -250,8 +250,7 @@ std::string comparison_table(const StudyResult& result) {
     out << line;
     if (paper_side) {
       if (const paper::PublishedRow* row = published_row(a)) {
-        std::snprintf(line, sizeof line, " |     %5.1f  %5.1f %5.1f", row->p10, row->median,
-                      row->p90);
+        std::snprintf(line, sizeof line, " |     %5.1f  %5.1f %5.1f", row->p10, row->median, row->p90);
         out << line;
       } else {
         out << " |         -      -     -";

@@ -21,9 +21,9 @@ struct FlightStudy {
 };
 
 struct StudyResult {
-  bool built_in = false;        // the paper's cylinder on the built-in throw
-  std::string input;            // what was studied, for people
-  nlohmann::json trial;         // how the trial was made or read (more keys in results.json)
+  bool built_in = false;  // the paper's cylinder on the built-in throw
+  std::string input;      // what was studied, for people
+  nlohmann::json trial;   // how the trial was made or read (more keys in results.json)
   std::vector<FlightStudy> flights;
   std::uint64_t seed = 0;
   unsigned threads = 1;
@@ -36,7 +36,6 @@ struct StudyResult {
 };
 
 // Every simulation's RMS DA in `frame` of the analysis named `name`, pooled over all flights.
-std::vector<double> pooled_rms_da(const StudyResult& result, const std::string& name,
-                                  DaFrame frame);
+std::vector<double> pooled_rms_da(const StudyResult& result, const std::string& name, DaFrame frame);
 
 }  // namespace aloft::host

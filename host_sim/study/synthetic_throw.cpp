@@ -21,8 +21,8 @@ Body paper_cylinder_body(MarkerLayout layout) {
   body.mass_kg = paper::kMassKg;
   const double radius = paper::kDiameterM / 2.0;
   const double half_height = paper::kHeightM / 2.0;
-  if (InertiaTensor<double>::make_cylinder(paper::kMassKg, radius, paper::kHeightM,
-                                           body.inertia) != Status::ok) {
+  if (InertiaTensor<double>::make_cylinder(paper::kMassKg, radius, paper::kHeightM, body.inertia) !=
+      Status::ok) {
     throw std::logic_error("paper cylinder: invalid dimensions");
   }
   // Marker centres sit one marker radius off the surface.
@@ -78,17 +78,16 @@ SyntheticThrow make_synthetic_throw(const SyntheticThrowSettings& settings) {
     if (i > 0) {
       for (int s = 0; s < kSubsteps; ++s) {
         const Status stepped = integrator.step(state, frame_dt / kSubsteps, TimeDirection::forward);
-        if (stepped != Status::ok) throw std::logic_error(std::string("built-in throw: ") + describe(stepped));
+        if (stepped != Status::ok)
+          throw std::logic_error(std::string("built-in throw: ") + describe(stepped));
       }
     }
     const double t = static_cast<double>(i) * frame_dt;
-    const Eigen::Vector3d centre = settings.launch_position_m + launch_velocity * t +
-                                   0.5 * gravity * t * t;
+    const Eigen::Vector3d centre = settings.launch_position_m + launch_velocity * t + 0.5 * gravity * t * t;
     const Eigen::Matrix3d r = state.orientation.toRotationMatrix();
     std::vector<Eigen::Vector3d> seen;
     for (const auto& [name, position] : out.body.markers_m) {
-      seen.push_back(centre + r * position +
-                     Eigen::Vector3d(noise(random), noise(random), noise(random)));
+      seen.push_back(centre + r * position + Eigen::Vector3d(noise(random), noise(random), noise(random)));
     }
     m.time_s.push_back(t);
     m.positions_m.push_back(std::move(seen));

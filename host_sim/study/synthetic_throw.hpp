@@ -43,8 +43,8 @@ namespace aloft::host {
 // and azimuth `azimuth_deg` from body x.
 inline Eigen::Vector3d rate_about_axis(double rad_s, double polar_deg, double azimuth_deg) {
   const double polar = polar_deg * M_PI / 180.0, azimuth = azimuth_deg * M_PI / 180.0;
-  return rad_s * Eigen::Vector3d(std::sin(polar) * std::cos(azimuth),
-                                 std::sin(polar) * std::sin(azimuth), std::cos(polar));
+  return rad_s * Eigen::Vector3d(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
+                                 std::cos(polar));
 }
 
 // Where the four markers sit on the cylinder.
@@ -77,9 +77,9 @@ struct SyntheticThrowSettings {
 };
 
 struct SyntheticThrow {
-  Body body;                // GF cylinder with its four markers
-  MarkerTrial markers;      // what the cameras report
-  PoseTrial true_poses;     // the true orientation at each camera frame (for tests)
+  Body body;                                     // GF cylinder with its four markers
+  MarkerTrial markers;                           // what the cameras report
+  PoseTrial true_poses;                          // the true orientation at each camera frame (for tests)
   std::vector<Eigen::Vector3d> true_omega_body;  // true body rate at each camera frame
 };
 

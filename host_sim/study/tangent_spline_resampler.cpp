@@ -70,8 +70,7 @@ Eigen::Matrix3d so3_right_jacobian_inverse(const Eigen::Vector3d& p) {
 }
 
 ResampledPoses resample_poses(const std::vector<double>& time_s,
-                              const std::vector<Eigen::Quaterniond>& orientation,
-                              double rate_hz) {
+                              const std::vector<Eigen::Quaterniond>& orientation, double rate_hz) {
   const std::size_t n = time_s.size();
   if (n < 3 || orientation.size() != n) {
     throw std::invalid_argument("resampling needs at least 3 poses");
@@ -87,8 +86,7 @@ ResampledPoses resample_poses(const std::vector<double>& time_s,
 
   ResampledPoses out;
   const double t0 = time_s.front();
-  const auto count =
-      static_cast<std::size_t>(std::floor((time_s.back() - t0) * rate_hz + 1e-6)) + 1;
+  const auto count = static_cast<std::size_t>(std::floor((time_s.back() - t0) * rate_hz + 1e-6)) + 1;
   out.time_s.reserve(count);
   out.orientation.reserve(count);
   out.omega_body.reserve(count);
@@ -104,8 +102,8 @@ ResampledPoses resample_poses(const std::vector<double>& time_s,
     const double s2 = s * s, s3 = s2 * s;
     const Eigen::Vector3d p =
         (-2.0 * s3 + 3.0 * s2) * target + h * ((s3 - 2.0 * s2 + s) * m0 + (s3 - s2) * m1);
-    const Eigen::Vector3d dp = (-6.0 * s2 + 6.0 * s) / h * target +
-                               (3.0 * s2 - 4.0 * s + 1.0) * m0 + (3.0 * s2 - 2.0 * s) * m1;
+    const Eigen::Vector3d dp =
+        (-6.0 * s2 + 6.0 * s) / h * target + (3.0 * s2 - 4.0 * s + 1.0) * m0 + (3.0 * s2 - 2.0 * s) * m1;
     out.time_s.push_back(t);
     out.orientation.push_back((orientation[k] * aloft::quat_exp(p)).normalized());
     out.omega_body.push_back(so3_right_jacobian(p) * dp);

@@ -36,7 +36,6 @@ Eigen::Matrix3d so3_right_jacobian_inverse(const Eigen::Vector3d& p);
 // for every such time up to the last pose (plus rounding of 1e-9 s). Throws
 // std::invalid_argument on fewer than 3 poses or non-increasing times.
 ResampledPoses resample_poses(const std::vector<double>& time_s,
-                              const std::vector<Eigen::Quaterniond>& orientation,
-                              double rate_hz);
+                              const std::vector<Eigen::Quaterniond>& orientation, double rate_hz);
 
 }  // namespace aloft::host

@@ -28,8 +28,8 @@ bool ThrowOptions::throw_given() const {
 }
 
 bool ThrowOptions::searched_given() const {
-  return preset != "built-in" || given(spin_rate_rev_s) || given(spin_tilt_deg) ||
-         given(spin_azimuth_deg) || given(marker_noise_mm);
+  return preset != "built-in" || given(spin_rate_rev_s) || given(spin_tilt_deg) || given(spin_azimuth_deg) ||
+         given(marker_noise_mm);
 }
 
 void add_throw_options(CLI::App& cmd, ThrowOptions& o) {
@@ -44,8 +44,7 @@ void add_throw_options(CLI::App& cmd, ThrowOptions& o) {
   cmd.add_option("--duration", o.duration_s, "built-in throw: flight time, s (0.872)");
   cmd.add_option("--marker-noise", o.marker_noise_mm,
                  "built-in throw: marker noise per coordinate, mm (0.1)");
-  cmd.add_option("--marker-layout", o.marker_layout,
-                 "built-in throw: side-and-end (default) or side");
+  cmd.add_option("--marker-layout", o.marker_layout, "built-in throw: side-and-end (default) or side");
   cmd.add_option("--axes-sampler", o.axes_sampler,
                  "Monte Carlo axes draws: ball (rotation vector in a ball, default) or cardan "
                  "(three independent angles within the bound)");

@@ -10,8 +10,8 @@ template class PrincipalFrame<float>;
 template class PrincipalFrame<double>;
 template void principal_rk4_step<float>(const EulerCoefficients<float>&, PrincipalState<float>&,
                                         const float&);
-template void principal_rk4_step<double>(const EulerCoefficients<double>&,
-                                         PrincipalState<double>&, const double&);
+template void principal_rk4_step<double>(const EulerCoefficients<double>&, PrincipalState<double>&,
+                                         const double&);
 template float lane_deviation_angle<float>(const LaneVec3<float>&, const LaneVec3<float>&);
 template double lane_deviation_angle<double>(const LaneVec3<double>&, const LaneVec3<double>&);
 template class BatchFlight<float>;

@@ -37,21 +37,13 @@ void* operator new[](std::size_t, const std::nothrow_t&) noexcept {
   aloft_heap_use_is_a_link_error_on_cortex_m();
 }
 void* operator new(std::size_t, std::align_val_t) { aloft_heap_use_is_a_link_error_on_cortex_m(); }
-void* operator new[](std::size_t, std::align_val_t) {
-  aloft_heap_use_is_a_link_error_on_cortex_m();
-}
+void* operator new[](std::size_t, std::align_val_t) { aloft_heap_use_is_a_link_error_on_cortex_m(); }
 void operator delete(void*) noexcept { aloft_heap_use_is_a_link_error_on_cortex_m(); }
 void operator delete[](void*) noexcept { aloft_heap_use_is_a_link_error_on_cortex_m(); }
 void operator delete(void*, std::size_t) noexcept { aloft_heap_use_is_a_link_error_on_cortex_m(); }
-void operator delete[](void*, std::size_t) noexcept {
-  aloft_heap_use_is_a_link_error_on_cortex_m();
-}
-void operator delete(void*, std::align_val_t) noexcept {
-  aloft_heap_use_is_a_link_error_on_cortex_m();
-}
-void operator delete[](void*, std::align_val_t) noexcept {
-  aloft_heap_use_is_a_link_error_on_cortex_m();
-}
+void operator delete[](void*, std::size_t) noexcept { aloft_heap_use_is_a_link_error_on_cortex_m(); }
+void operator delete(void*, std::align_val_t) noexcept { aloft_heap_use_is_a_link_error_on_cortex_m(); }
+void operator delete[](void*, std::align_val_t) noexcept { aloft_heap_use_is_a_link_error_on_cortex_m(); }
 void operator delete(void*, std::size_t, std::align_val_t) noexcept {
   aloft_heap_use_is_a_link_error_on_cortex_m();
 }

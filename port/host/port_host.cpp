@@ -17,8 +17,7 @@ void init() { start_time = std::chrono::steady_clock::now(); }
 
 std::uint64_t ticks() {
   const auto elapsed = std::chrono::steady_clock::now() - start_time;
-  return static_cast<std::uint64_t>(
-      std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count());
+  return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count());
 }
 
 std::uint32_t ticks_per_second() { return 1000000000u; }

@@ -149,8 +149,7 @@ void BM_FullFlight_odeint(benchmark::State& bench) {
   boost::numeric::odeint::runge_kutta4<OdeState> stepper;
   for (auto _ : bench) {
     const aloft::RigidBodyState<double> start = thrown_state<double>();
-    OdeState x = {1.0, 0.0, 0.0, 0.0, start.omega_body.x(), start.omega_body.y(),
-                  start.omega_body.z()};
+    OdeState x = {1.0, 0.0, 0.0, 0.0, start.omega_body.x(), start.omega_body.y(), start.omega_body.z()};
     for (int k = 0; k < kFlightSteps; ++k) {
       stepper.do_step(system, x, 0.0, 1e-3);
       const double n = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);

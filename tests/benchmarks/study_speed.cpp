@@ -37,8 +37,7 @@ double process_cpu_s() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-Timing run(const BuiltInTrial& trial, std::vector<Analysis>& analyses, unsigned threads,
-           bool lanes) {
+Timing run(const BuiltInTrial& trial, std::vector<Analysis>& analyses, unsigned threads, bool lanes) {
   RunSettings settings;
   settings.threads = threads;
   settings.simd_lanes = lanes;
@@ -78,13 +77,14 @@ int compare(std::size_t mc, unsigned threads) {
       }
     }
   }
-  std::printf("study, built-in throw, %zu simulations (2 model analyses, 12 x %zu Monte Carlo), "
-              "%u threads\n", simulations(scalar), mc, threads);
+  std::printf(
+      "study, built-in throw, %zu simulations (2 model analyses, 12 x %zu Monte Carlo), "
+      "%u threads\n",
+      simulations(scalar), mc, threads);
   std::printf("%-28s %10s %10s\n", "path", "wall (s)", "CPU (s)");
   std::printf("%-28s %10.3f %10.3f\n", "scalar (one at a time)", s.wall_s, s.cpu_s);
   std::printf("%-28s %10.3f %10.3f\n", "SIMD lanes", l.wall_s, l.cpu_s);
-  std::printf("CPU ratio scalar / lanes %.2fx, wall ratio %.2fx\n", s.cpu_s / l.cpu_s,
-              s.wall_s / l.wall_s);
+  std::printf("CPU ratio scalar / lanes %.2fx, wall ratio %.2fx\n", s.cpu_s / l.cpu_s, s.wall_s / l.wall_s);
   std::printf("largest RMS DA difference %.3g deg (limit 1e-9)\n", worst);
   return worst <= 1e-9 ? 0 : 1;
 }
@@ -96,14 +96,14 @@ long peak_rss_kib() {
 }
 
 int growth(unsigned threads) {
-  std::printf("%-34s %12s %10s %10s %14s\n", "run (SIMD lanes)", "simulations", "wall (s)",
-              "CPU (s)", "CPU/sim (us)");
+  std::printf("%-34s %12s %10s %10s %14s\n", "run (SIMD lanes)", "simulations", "wall (s)", "CPU (s)",
+              "CPU/sim (us)");
   const BuiltInTrial trial = make_built_in_trial();
   for (std::size_t mc : {1000u, 10000u, 100000u, 1000000u}) {
     std::vector<Analysis> one = {monte_carlo_analysis({PerturbationFamily::both, 10.0}, mc)};
     const Timing t = run(trial, one, threads, true);
-    std::printf("%-34s %12zu %10.3f %10.3f %14.2f\n", "0.872 s flight, Monte Carlo", mc, t.wall_s,
-                t.cpu_s, 1e6 * t.cpu_s / static_cast<double>(mc));
+    std::printf("%-34s %12zu %10.3f %10.3f %14.2f\n", "0.872 s flight, Monte Carlo", mc, t.wall_s, t.cpu_s,
+                1e6 * t.cpu_s / static_cast<double>(mc));
   }
   std::printf("peak resident memory after 1M simulations: %ld KiB\n", peak_rss_kib());
   for (double seconds : {0.5, 1.0, 2.0, 4.0}) {

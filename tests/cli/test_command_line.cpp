@@ -66,8 +66,7 @@ TEST_CASE("every bad command line exits 2 with one line naming the problem", "[c
       {"inspect", {"file is required"}},
       {"diagnose --body " + body + " --imu " + imu_missing + " --json /no/such/folder/r.json",
        {"--json", "does not exist"}},
-      {"diagnose --body " + body + " --imu " + imu_missing + " --plot " + body,
-       {"--plot", "not a folder"}},
+      {"diagnose --body " + body + " --imu " + imu_missing + " --plot " + body, {"--plot", "not a folder"}},
       {"diagnose --body " + body + " --imu " + imu_missing + " --threads 0", {"--threads", "0"}},
       {"diagnose --body " + body + " --imus x.csv", {"unknown option --imus", "did you mean --imu?"}},
   };

@@ -48,9 +48,9 @@ inline std::string shared_data_dir() {
 }  // namespace aloft::test
 
 // Skips the rest of a test case, saying why, when ../shared is not there.
-#define ALOFT_REQUIRE_SHARED_DATA(dir_var)                                        \
-  const std::string dir_var = aloft::test::shared_data_dir();                      \
-  if (dir_var.empty()) {                                                           \
+#define ALOFT_REQUIRE_SHARED_DATA(dir_var)                                           \
+  const std::string dir_var = aloft::test::shared_data_dir();                        \
+  if (dir_var.empty()) {                                                             \
     WARN("skipped: ../shared/data not found (" ALOFT_SHARED_DIR "); test needs it"); \
-    return;                                                                        \
+    return;                                                                          \
   }

@@ -62,7 +62,9 @@ std::string whole_or_why(const fs::path& path) {
   return "";
 }
 
-bool is_temporary(const fs::path& path) { return path.filename().string().find(".tmp.") != std::string::npos; }
+bool is_temporary(const fs::path& path) {
+  return path.filename().string().find(".tmp.") != std::string::npos;
+}
 
 pid_t spawn(const std::vector<std::string>& args) {
   const pid_t pid = ::fork();
@@ -129,7 +131,8 @@ TEST_CASE("study and diagnose outputs are never left truncated by SIGKILL", "[co
 
   SECTION("aloft study") {
     const fs::path out = dir / "study";
-    const std::vector<std::string> args = {aloft, "study", "--out", out.string(), "--mc-samples", "500", "--threads", "2"};
+    const std::vector<std::string> args = {aloft,          "study", "--out",     out.string(),
+                                           "--mc-samples", "500",   "--threads", "2"};
     const double full = run_to_end_seconds(args);
     for (int k = 0; k < 10; ++k) {
       fs::remove_all(out);
@@ -138,9 +141,11 @@ TEST_CASE("study and diagnose outputs are never left truncated by SIGKILL", "[co
   }
   SECTION("aloft diagnose --json --plot") {
     const fs::path out = dir / "diagnose";
-    const std::vector<std::string> args = {aloft, "diagnose", "--body", (dir / "body.json").string(),
-                                           "--imu", (dir / "imu.csv").string(),
-                                           "--json", (out / "report.json").string(), "--plot", (out / "plots").string()};
+    const std::vector<std::string> args = {aloft,    "diagnose",
+                                           "--body", (dir / "body.json").string(),
+                                           "--imu",  (dir / "imu.csv").string(),
+                                           "--json", (out / "report.json").string(),
+                                           "--plot", (out / "plots").string()};
     fs::create_directories(out);
     const double full = run_to_end_seconds(args);
     for (int k = 0; k < 10; ++k) {

@@ -56,7 +56,8 @@ TEST_CASE("progress is reported and ends at the total", "[common][parallel_for]"
     last_done = done;
     last_total = total;
   };
-  parallel_for(64, 2, [](std::size_t) { std::this_thread::sleep_for(std::chrono::milliseconds(2)); }, progress);
+  parallel_for(
+      64, 2, [](std::size_t) { std::this_thread::sleep_for(std::chrono::milliseconds(2)); }, progress);
   CHECK(last_done == 64);
   CHECK(last_total == 64);
 }

@@ -80,8 +80,12 @@ int main() {
   }
   const float right_deg = rms_da_deg(gyro.truth);
   const float wrong_deg = rms_da_deg(wrong);
-  out.text("consumer: RMS DA true tensor ").fixed(right_deg, 4).text(" deg, wrong tensor ")
-      .fixed(wrong_deg, 4).text(" deg").line();
+  out.text("consumer: RMS DA true tensor ")
+      .fixed(right_deg, 4)
+      .text(" deg, wrong tensor ")
+      .fixed(wrong_deg, 4)
+      .text(" deg")
+      .line();
   const bool pass = right_deg >= 0.0f && right_deg < 0.01f && wrong_deg > 0.3f;
   aloft::port::exit_with_status(pass ? 0 : 1);
 }

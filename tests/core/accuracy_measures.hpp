@@ -18,13 +18,12 @@ namespace aloft_test {
 using aloft::Quat;
 using aloft::Vec3;
 
-
 template <typename S>
 aloft::InertiaTensor<S> principal_inertia(double i1, double i2, double i3,
                                           const Quat<double>& axes = Quat<double>::Identity()) {
   aloft::InertiaTensor<S> inertia;
-  const aloft::Status s = aloft::InertiaTensor<S>::make_from_principal(
-      Vec3<S>(S(i1), S(i2), S(i3)), axes.cast<S>(), inertia);
+  const aloft::Status s =
+      aloft::InertiaTensor<S>::make_from_principal(Vec3<S>(S(i1), S(i2), S(i3)), axes.cast<S>(), inertia);
   ALOFT_REQUIRE(s == aloft::Status::ok);
   return inertia;
 }
@@ -41,8 +40,7 @@ double symmetric_top_orientation_error(const aloft_test::SymmetricTop& top) {
   for (int k = 1; k <= 1000; ++k) {
     ALOFT_REQUIRE(integrator.step(state, dt) == aloft::Status::ok);
     const double t = k * 1e-3;
-    const double err = aloft::angle_between(state.orientation.template cast<double>(),
-                                            top.orientation(t));
+    const double err = aloft::angle_between(state.orientation.template cast<double>(), top.orientation(t));
     if (err > worst) worst = err;
   }
   return worst;
@@ -54,10 +52,8 @@ double symmetric_top_orientation_error(const aloft_test::SymmetricTop& top) {
 // sample (Rk4Integrator::step_principal); otherwise Rk4Integrator::step on body states.
 template <typename S>
 double asymmetric_top_direction_error(const aloft_test::AsymmetricTop& top,
-                                      const Quat<double>& principal_to_body,
-                                      bool principal_loop) {
-  const aloft::Rk4Integrator<S> integrator(
-      principal_inertia<S>(top.i1, top.i2, top.i3, principal_to_body));
+                                      const Quat<double>& principal_to_body, bool principal_loop) {
+  const aloft::Rk4Integrator<S> integrator(principal_inertia<S>(top.i1, top.i2, top.i3, principal_to_body));
   aloft::RigidBodyState<S> state;
   state.omega_body = (principal_to_body * top.omega(0.0)).cast<S>();
   aloft::PrincipalState<S> principal = integrator.frame().to_principal(state);
@@ -70,8 +66,7 @@ double asymmetric_top_direction_error(const aloft_test::AsymmetricTop& top,
       ALOFT_REQUIRE(integrator.step(state, S(1e-3)) == aloft::Status::ok);
     }
     const Vec3<double> exact = principal_to_body * top.omega(k * 1e-3);
-    const double err =
-        aloft::deviation_angle<double>(state.omega_body.template cast<double>(), exact);
+    const double err = aloft::deviation_angle<double>(state.omega_body.template cast<double>(), exact);
     if (err > worst) worst = err;
   }
   return worst;
@@ -95,13 +90,11 @@ inline aloft_test::AsymmetricTop flipping_top() {
   return top;
 }
 
-
 // An asymmetric body in a tilted frame (full tensor), tumbling near the intermediate axis.
 inline aloft::InertiaTensor<double> tumbling_body() {
   aloft::InertiaTensor<double> inertia;
   const aloft::Status s = aloft::InertiaTensor<double>::make_from_principal(
-      Vec3<double>(0.012, 0.021, 0.030), aloft::quat_wxyz(0.9, 0.3, -0.2, 0.1).normalized(),
-      inertia);
+      Vec3<double>(0.012, 0.021, 0.030), aloft::quat_wxyz(0.9, 0.3, -0.2, 0.1).normalized(), inertia);
   ALOFT_REQUIRE(s == aloft::Status::ok);
   return inertia;
 }
@@ -144,8 +137,7 @@ double round_trip_error(const Integrator& integrator, const aloft::RigidBodyStat
     ALOFT_REQUIRE(integrator.step(state, 1e-3, aloft::TimeDirection::forward) == aloft::Status::ok);
   }
   for (int k = 0; k < 1000; ++k) {
-    ALOFT_REQUIRE(integrator.step(state, 1e-3, aloft::TimeDirection::backward) ==
-                  aloft::Status::ok);
+    ALOFT_REQUIRE(integrator.step(state, 1e-3, aloft::TimeDirection::backward) == aloft::Status::ok);
   }
   *rate_error = (state.omega_body - start.omega_body).norm() / start.omega_body.norm();
   return aloft::angle_between(state.orientation, start.orientation);

@@ -24,8 +24,7 @@ std::string sci(double value, int decimals) {
   return s.substr(0, e) + "e" + std::to_string(exponent);
 }
 
-void row(const std::string& check, const char* issue_bound, const std::string& measured,
-         double test_bound) {
+void row(const std::string& check, const char* issue_bound, const std::string& measured, double test_bound) {
   std::printf("| %s | %s | %s | %s |\n", check.c_str(), issue_bound, measured.c_str(),
               sci(test_bound, 0).c_str());
 }
@@ -45,8 +44,8 @@ template <typename S>
 double worst_asymmetric_top() {
   const aloft_test::AsymmetricTop top = aloft_test::flipping_top();
   double worst = 0.0;
-  for (const auto& frame : {aloft::Quat<double>::Identity(),
-                            aloft::quat_wxyz(0.8, 0.2, -0.5, 0.26).normalized()}) {
+  for (const auto& frame :
+       {aloft::Quat<double>::Identity(), aloft::quat_wxyz(0.8, 0.2, -0.5, 0.26).normalized()}) {
     worst = std::max(worst, aloft_test::asymmetric_top_direction_error<S>(top, frame, false));
   }
   return worst;
@@ -58,8 +57,8 @@ TEST_CASE("the README's accuracy table, measured", "[.accuracy_table]") {
   const aloft::InertiaTensor<double> inertia = aloft_test::tumbling_body();
   const aloft::RigidBodyState<double> start = aloft_test::tumbling_start(inertia);
   const aloft_test::Drift rk4 = aloft_test::invariant_drift(aloft::Rk4Integrator<double>(inertia), start);
-  const aloft_test::Drift split = aloft_test::invariant_drift(
-      aloft::SplittingIntegrator<double>(inertia, Order::fourth), start);
+  const aloft_test::Drift split =
+      aloft_test::invariant_drift(aloft::SplittingIntegrator<double>(inertia, Order::fourth), start);
   double rate_error = 0.0;
   const double rk4_trip =
       aloft_test::round_trip_error(aloft::Rk4Integrator<double>(inertia), start, &rate_error);
@@ -67,8 +66,8 @@ TEST_CASE("the README's accuracy table, measured", "[.accuracy_table]") {
       aloft_test::round_trip_error(aloft::SplittingIntegrator<double>(inertia), start, &rate_error);
 
   std::printf("| check | issue's bound | measured | test bound |\n| --- | --- | --- | --- |\n");
-  row("RK4 vs closed-form symmetric top, orientation, double", "1e-8 rad",
-      rad(worst_symmetric_top<double>()), Accuracy<double>::symmetric_top_orientation);
+  row("RK4 vs closed-form symmetric top, orientation, double", "1e-8 rad", rad(worst_symmetric_top<double>()),
+      Accuracy<double>::symmetric_top_orientation);
   row("RK4 vs symmetric top, float", "1e-4 rad", rad(worst_symmetric_top<float>()),
       Accuracy<float>::symmetric_top_orientation);
   row("RK4 vs Jacobi-elliptic asymmetric top (through an intermediate-axis flip, full "
@@ -80,8 +79,7 @@ TEST_CASE("the README's accuracy table, measured", "[.accuracy_table]") {
       sci(rk4.energy, 1) + " / " + sci(rk4.momentum, 1), Accuracy<double>::rk4_invariant_drift);
   row("splitting (4th-order Yoshida composition), ‖L‖ drift", "1e-13", sci(split.momentum, 1),
       Accuracy<double>::splitting_momentum_drift);
-  row("forward then backward, RK4, double", "1e-9 rad", rad(rk4_trip),
-      Accuracy<double>::rk4_round_trip);
+  row("forward then backward, RK4, double", "1e-9 rad", rad(rk4_trip), Accuracy<double>::rk4_round_trip);
   row("forward then backward, splitting (time-symmetric)", "round-off", rad(split_trip),
       Accuracy<double>::splitting_round_trip);
 }

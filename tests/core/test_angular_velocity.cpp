@@ -47,13 +47,11 @@ ALOFT_TEST_CASE("bad orientations and steps are refused", "[angular-velocity][ba
   Vec3<double> out(7.0, 7.0, 7.0);
   const Quat<double> id = Quat<double>::Identity();
   ALOFT_CHECK(aloft::omega_body_from_orientations(id, id, 0.0, out) == Status::non_positive_time_step);
-  ALOFT_CHECK(aloft::omega_body_from_orientations(id, id, -1e-3, out) ==
-              Status::non_positive_time_step);
-  ALOFT_CHECK(aloft::omega_body_from_orientations(id, id, std::nan(""), out) ==
-              Status::non_finite_input);
-  ALOFT_CHECK(aloft::omega_body_from_orientations(id, aloft::quat_wxyz(1.0, 1.0, 0.0, 0.0), 1e-3,
-                                                  out) == Status::non_unit_quaternion);
-  ALOFT_CHECK(aloft::omega_world_from_orientations(aloft::quat_wxyz(std::nan(""), 0.0, 0.0, 0.0),
-                                                   id, 1e-3, out) == Status::non_finite_input);
+  ALOFT_CHECK(aloft::omega_body_from_orientations(id, id, -1e-3, out) == Status::non_positive_time_step);
+  ALOFT_CHECK(aloft::omega_body_from_orientations(id, id, std::nan(""), out) == Status::non_finite_input);
+  ALOFT_CHECK(aloft::omega_body_from_orientations(id, aloft::quat_wxyz(1.0, 1.0, 0.0, 0.0), 1e-3, out) ==
+              Status::non_unit_quaternion);
+  ALOFT_CHECK(aloft::omega_world_from_orientations(aloft::quat_wxyz(std::nan(""), 0.0, 0.0, 0.0), id, 1e-3,
+                                                   out) == Status::non_finite_input);
   ALOFT_CHECK(out == Vec3<double>(7.0, 7.0, 7.0));
 }

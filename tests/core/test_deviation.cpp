@@ -66,13 +66,11 @@ ALOFT_TEST_CASE("a long float run keeps its mean square", "[deviation]") {
   ALOFT_CHECK(std::abs(stats.rms_relative_error() - 0.02f) < 1e-5f);
 }
 
-ALOFT_TEST_CASE("statistics refuse non-finite and zero measurements untouched",
-                "[deviation][bad-input]") {
+ALOFT_TEST_CASE("statistics refuse non-finite and zero measurements untouched", "[deviation][bad-input]") {
   aloft::DeviationStats<float> stats;
   ALOFT_REQUIRE(stats.add(Vec3<float>(1, 0, 0), Vec3<float>(0, 1, 0)) == Status::ok);
   const float rms = stats.rms_da();
-  ALOFT_CHECK(stats.add(Vec3<float>(std::nanf(""), 0, 0), Vec3<float>(0, 1, 0)) ==
-              Status::non_finite_input);
+  ALOFT_CHECK(stats.add(Vec3<float>(std::nanf(""), 0, 0), Vec3<float>(0, 1, 0)) == Status::non_finite_input);
   ALOFT_CHECK(stats.add(Vec3<float>(1, 0, 0), Vec3<float>(0, 0, 0)) == Status::zero_vector);
   ALOFT_CHECK(stats.count() == 1u);
   ALOFT_CHECK(std::abs(stats.rms_da() - rms) <= 0.0f);

@@ -20,16 +20,14 @@ ALOFT_TEST_CASE("RK4 follows the closed-form symmetric top", "[dynamics][exact]"
   }
 }
 
-ALOFT_TEST_CASE("fourth-order splitting follows the closed-form symmetric top",
-                "[dynamics][exact]") {
+ALOFT_TEST_CASE("fourth-order splitting follows the closed-form symmetric top", "[dynamics][exact]") {
   for (const auto& top : kCylinderTops) {
     ALOFT_CHECK(symmetric_top_orientation_error<double, aloft::SplittingIntegrator<double>>(top) <
                 aloft_test::Accuracy<double>::splitting_symmetric_top_orientation);
   }
 }
 
-ALOFT_TEST_CASE("the elliptic-function top is an exact solution of Euler's equations",
-                "[exact]") {
+ALOFT_TEST_CASE("the elliptic-function top is an exact solution of Euler's equations", "[exact]") {
   // Central differences of the exact rate against Euler's right-hand side.
   const aloft_test::AsymmetricTop top = flipping_top();
   const double h = 1e-5;

@@ -36,8 +36,7 @@ void check_principal_round_trip() {
   ALOFT_REQUIRE(aloft::InertiaTensor<S>::make_from_tensor(a.tensor(), b) == Status::ok);
   ALOFT_CHECK((b.principal_moments() - Vec3<S>(S(1), S(2.5), S(3))).norm() < S(1e-5));
   const Mat3<S> r = b.principal_axes().toRotationMatrix();
-  ALOFT_CHECK((r * b.principal_moments().asDiagonal() * r.transpose() - a.tensor()).norm() <
-              S(1e-5));
+  ALOFT_CHECK((r * b.principal_moments().asDiagonal() * r.transpose() - a.tensor()).norm() < S(1e-5));
   ALOFT_CHECK(r.determinant() > S(0.99));
   ALOFT_CHECK((a.tensor() * a.inverse() - Mat3<S>::Identity()).norm() < S(1e-5));
 }
@@ -83,13 +82,12 @@ ALOFT_TEST_CASE("invalid tensors are rejected and leave the target untouched", "
               Status::tensor_breaks_triangle_inequality);
   Mat3<double> not_finite = Mat3<double>::Identity();
   not_finite(1, 2) = std::nan("");
-  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_tensor(not_finite, target) ==
-              Status::non_finite_input);
-  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_principal(
-                  Vec3<double>(1, 1, 1), aloft::quat_wxyz(2.0, 0.0, 0.0, 0.0), target) ==
-              Status::non_unit_quaternion);
-  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_principal(
-                  Vec3<double>(1, -1, 1), Quat<double>::Identity(), target) ==
+  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_tensor(not_finite, target) == Status::non_finite_input);
+  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_principal(Vec3<double>(1, 1, 1),
+                                                                aloft::quat_wxyz(2.0, 0.0, 0.0, 0.0),
+                                                                target) == Status::non_unit_quaternion);
+  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_principal(Vec3<double>(1, -1, 1),
+                                                                Quat<double>::Identity(), target) ==
               Status::tensor_not_positive_definite);
   ALOFT_CHECK(aloft::InertiaTensor<double>::make_cylinder(-1.0, 0.1, 0.1, target) ==
               Status::invalid_dimension);
@@ -105,19 +103,17 @@ ALOFT_TEST_CASE("a flat plate sits on the triangle inequality and is accepted", 
   ALOFT_CHECK(aloft::InertiaTensor<float>::make_box(1.0f, 0.3f, 0.2f, 1e-9f, plate) == Status::ok);
 }
 
-ALOFT_TEST_CASE("a triangle slack admits measured moments of a flat body, and no more",
-                "[inertia]") {
+ALOFT_TEST_CASE("a triangle slack admits measured moments of a flat body, and no more", "[inertia]") {
   // The racquet of the real recordings: 0.0207 exceeds 0.01882 + 0.001391 by 1.2 % of the sum.
   const Vec3<double> racquet(0.01882, 0.001391, 0.0207);
   aloft::InertiaTensor<double> target;
-  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_principal(racquet, Quat<double>::Identity(),
-                                                                target) ==
+  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_principal(racquet, Quat<double>::Identity(), target) ==
               Status::tensor_breaks_triangle_inequality);
-  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_principal(racquet, Quat<double>::Identity(),
-                                                                target, 0.05) == Status::ok);
-  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_tensor(Mat3<double>(racquet.asDiagonal()),
-                                                             target, 0.011) ==
-              Status::tensor_breaks_triangle_inequality);
-  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_tensor(Mat3<double>(racquet.asDiagonal()),
-                                                             target, 0.013) == Status::ok);
+  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_principal(racquet, Quat<double>::Identity(), target,
+                                                                0.05) == Status::ok);
+  ALOFT_CHECK(
+      aloft::InertiaTensor<double>::make_from_tensor(Mat3<double>(racquet.asDiagonal()), target, 0.011) ==
+      Status::tensor_breaks_triangle_inequality);
+  ALOFT_CHECK(aloft::InertiaTensor<double>::make_from_tensor(Mat3<double>(racquet.asDiagonal()), target,
+                                                             0.013) == Status::ok);
 }

@@ -14,8 +14,7 @@ using aloft::Vec3;
 template <typename S, typename Integrator>
 void check_refusals() {
   aloft::InertiaTensor<S> inertia;
-  ALOFT_REQUIRE(aloft::InertiaTensor<S>::make_box(S(1), S(0.1), S(0.2), S(0.3), inertia) ==
-                Status::ok);
+  ALOFT_REQUIRE(aloft::InertiaTensor<S>::make_box(S(1), S(0.1), S(0.2), S(0.3), inertia) == Status::ok);
   const Integrator integrator(inertia);
   aloft::RigidBodyState<S> state;
   state.omega_body = Vec3<S>(S(1), S(2), S(3));

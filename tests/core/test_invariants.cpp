@@ -27,7 +27,7 @@ ALOFT_TEST_CASE("splitting keeps |L| to rounding and energy bounded", "[invarian
         invariant_drift(aloft::SplittingIntegrator<double>(inertia, order), tumbling_start(inertia));
     ALOFT_CHECK(drift.momentum < Accuracy::splitting_momentum_drift);
     ALOFT_CHECK(drift.energy < (order == Order::second ? Accuracy::splitting2_energy_drift
-                                                        : Accuracy::splitting4_energy_drift));
+                                                       : Accuracy::splitting4_energy_drift));
   }
 }
 

@@ -35,8 +35,8 @@ S worst_atan2_error() {
     const S scale = static_cast<S>(std::pow(10.0, 6.0 * random.uniform()));
     check(static_cast<S>(std::abs(random.uniform())) * scale, static_cast<S>(random.uniform()) * scale);
   }
-  const S angles[] = {S(1e-30), S(1e-12), S(1e-6), S(0.3926990817), S(0.7853981634),
-                      S(1.5707963268), S(2.0), S(3.14159), S(3.1415926)};
+  const S angles[] = {S(1e-30),        S(1e-12), S(1e-6),    S(0.3926990817), S(0.7853981634),
+                      S(1.5707963268), S(2.0),   S(3.14159), S(3.1415926)};
   for (S a : angles) {
     for (S da = S(-1e-5); da <= S(1e-5); da += S(1e-6)) {
       const S angle = a + da;
@@ -88,8 +88,7 @@ ALOFT_TEST_CASE("polynomial atan2 agrees with the C library's", "[deviation][lan
   ALOFT_CHECK(!(std::abs(aloft::nonnegative_atan2(0.0, 0.0)) > 0.0));
 }
 
-ALOFT_TEST_CASE("deviation angle of nearly parallel and nearly opposite vectors",
-                "[deviation][lanes]") {
+ALOFT_TEST_CASE("deviation angle of nearly parallel and nearly opposite vectors", "[deviation][lanes]") {
   const Vec3<double> a(1.0, 2.0, 3.0);
   const Vec3<double> b = a + Vec3<double>(1e-9, -2e-9, 0.5e-9);
   const double exact = std::atan2(a.cross(b).norm(), a.dot(b));

@@ -95,8 +95,7 @@ ALOFT_TEST_CASE("onboard check refuses bad samples and keeps its state", "[onboa
   ALOFT_CHECK(check.update(Vec3<double>(1, 1, 1), 0.0) == Status::non_positive_time_step);
   ALOFT_CHECK(check.update(Vec3<double>(1, 1, 1), -1e-3) == Status::non_positive_time_step);
   ALOFT_CHECK(check.update(Vec3<double>(1, 1, 1), nan) == Status::non_finite_input);
-  ALOFT_CHECK(check.update(Vec3<double>(1, 1, 1), Vec3<double>(0, nan, 0), 1e-3) ==
-              Status::non_finite_input);
+  ALOFT_CHECK(check.update(Vec3<double>(1, 1, 1), Vec3<double>(0, nan, 0), 1e-3) == Status::non_finite_input);
   ALOFT_CHECK(check.airborne_samples() == 20u);
   ALOFT_CHECK(check.overall().count() == count);
   ALOFT_CHECK(std::abs(check.overall().rms_da() - rms) <= 0.0);

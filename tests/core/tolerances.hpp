@@ -21,14 +21,14 @@ template <typename S>
 struct Accuracy;
 template <>
 struct Accuracy<double> {
-  static constexpr double symmetric_top_orientation = 5e-9;             // measured 1.5e-9
-  static constexpr double splitting_symmetric_top_orientation = 5e-8;   // measured 1.9e-8
-  static constexpr double asymmetric_top_direction = 5e-11;             // measured 1.5e-11
-  static constexpr double rk4_invariant_drift = 5e-11;      // measured 1.1e-11
-  static constexpr double splitting_momentum_drift = 6e-14;  // measured 2.0e-14
-  static constexpr double splitting2_energy_drift = 1e-5;    // measured 2.7e-6, bounded
-  static constexpr double splitting4_energy_drift = 1e-9;    // measured 3.1e-10, bounded
-  static constexpr double rk4_round_trip = 2e-11;            // measured 6.2e-12
+  static constexpr double symmetric_top_orientation = 5e-9;            // measured 1.5e-9
+  static constexpr double splitting_symmetric_top_orientation = 5e-8;  // measured 1.9e-8
+  static constexpr double asymmetric_top_direction = 5e-11;            // measured 1.5e-11
+  static constexpr double rk4_invariant_drift = 5e-11;                 // measured 1.1e-11
+  static constexpr double splitting_momentum_drift = 6e-14;            // measured 2.0e-14
+  static constexpr double splitting2_energy_drift = 1e-5;              // measured 2.7e-6, bounded
+  static constexpr double splitting4_energy_drift = 1e-9;              // measured 3.1e-10, bounded
+  static constexpr double rk4_round_trip = 2e-11;                      // measured 6.2e-12
   static constexpr double splitting_round_trip = 1e-11;  // measured 3.3e-12: rounding of 2000 steps
 };
 template <>

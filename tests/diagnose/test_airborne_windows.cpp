@@ -31,7 +31,8 @@ ImuLog log_with_flights(const std::vector<std::pair<double, double>>& flights, b
 
 TEST_CASE("airborne windows: each free fall, ended by a catch or a landing", "[session]") {
   for (bool spike : {false, true}) {
-    const std::vector<Segment> w = airborne_windows(log_with_flights({{2.0, 3.0}, {6.5, 7.4}, {10.0, 10.1}}, spike));
+    const std::vector<Segment> w =
+        airborne_windows(log_with_flights({{2.0, 3.0}, {6.5, 7.4}, {10.0, 10.1}}, spike));
     REQUIRE(w.size() == 2);  // the 0.1 s jolt is no throw
     CHECK(w[0].start_s == Approx(2.0).margin(0.011));
     CHECK(w[0].end_s == Approx(2.99).margin(0.011));

@@ -27,8 +27,8 @@ namespace {
 struct Scratch {
   fs::path dir;
   Scratch() {
-    dir = fs::temp_directory_path() / ("aloft_diagnose_test_" + std::to_string(::getpid()) + "_" +
-                                       std::to_string(counter()++));
+    dir = fs::temp_directory_path() /
+          ("aloft_diagnose_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter()++));
     fs::create_directories(dir);
   }
   ~Scratch() { fs::remove_all(dir); }

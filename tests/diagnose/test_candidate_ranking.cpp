@@ -53,12 +53,11 @@ Analysis ranked(std::vector<Candidate> candidates, bool gyro_input = true) {
 
 }  // namespace
 
-TEST_CASE("rank_candidates: a clear gain wins, best first, shrink against none",
-          "[candidate_ranking]") {
+TEST_CASE("rank_candidates: a clear gain wins, best first, shrink against none", "[candidate_ranking]") {
   const double gain = kVerdictMargin + penalty(Effect::gyro_bias) + 50.0;
-  const Analysis a = ranked({candidate(Effect::none, 2900.0, 0.10),
-                             candidate(Effect::gyro_scale, 2890.0, 0.098),
-                             candidate(Effect::gyro_bias, 2900.0 - gain, 0.05)});
+  const Analysis a =
+      ranked({candidate(Effect::none, 2900.0, 0.10), candidate(Effect::gyro_scale, 2890.0, 0.098),
+              candidate(Effect::gyro_bias, 2900.0 - gain, 0.05)});
   REQUIRE(a.candidates.size() == 3);
   CHECK(a.candidates.front().effect == Effect::gyro_bias);
   for (std::size_t i = 1; i < a.candidates.size(); ++i) {
@@ -73,29 +72,27 @@ TEST_CASE("rank_candidates: a clear gain wins, best first, shrink against none",
 TEST_CASE("rank_candidates: a gain within the margin is noise, and the verdict is none",
           "[candidate_ranking]") {
   const double gain = kVerdictMargin + penalty(Effect::gyro_bias) - 5.0;
-  const Analysis a = ranked({candidate(Effect::none, 2900.0, 0.10),
-                             candidate(Effect::gyro_bias, 2900.0 - gain, 0.099)});
+  const Analysis a =
+      ranked({candidate(Effect::none, 2900.0, 0.10), candidate(Effect::gyro_bias, 2900.0 - gain, 0.099)});
   CHECK(a.verdict.effect == Effect::none);
 }
 
-TEST_CASE("rank_candidates: an unphysical fit never wins, however well it scores",
-          "[candidate_ranking]") {
+TEST_CASE("rank_candidates: an unphysical fit never wins, however well it scores", "[candidate_ranking]") {
   Candidate drag = candidate(Effect::aero_torque, 1000.0, 0.01);
   drag.fit.theta(0) = -5.0;  // negative drag: energy gained
   const double gain = kVerdictMargin + penalty(Effect::gyro_bias) + 100.0;
-  const Analysis a = ranked({candidate(Effect::none, 2900.0, 0.10), drag,
-                             candidate(Effect::gyro_bias, 2900.0 - gain, 0.05)});
+  const Analysis a = ranked(
+      {candidate(Effect::none, 2900.0, 0.10), drag, candidate(Effect::gyro_bias, 2900.0 - gain, 0.05)});
   CHECK(a.verdict.effect == Effect::gyro_bias);
   for (const Candidate& c : a.candidates) {
     if (c.effect == Effect::aero_torque) CHECK_FALSE(c.physical);
   }
 }
 
-TEST_CASE("rank_candidates: a verdict names the effects a gyro cannot tell from it",
-          "[candidate_ranking]") {
+TEST_CASE("rank_candidates: a verdict names the effects a gyro cannot tell from it", "[candidate_ranking]") {
   const double gain = kVerdictMargin + penalty(Effect::inertia_axes) + 50.0;
-  const Analysis a = ranked({candidate(Effect::none, 2900.0, 0.10),
-                             candidate(Effect::inertia_axes, 2900.0 - gain, 0.05)});
+  const Analysis a =
+      ranked({candidate(Effect::none, 2900.0, 0.10), candidate(Effect::inertia_axes, 2900.0 - gain, 0.05)});
   REQUIRE(a.verdict.effect == Effect::inertia_axes);
   const auto& eq = a.verdict.equivalent;
   CHECK(std::find(eq.begin(), eq.end(), Effect::sensor_misalignment) != eq.end());

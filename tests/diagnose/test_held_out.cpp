@@ -24,8 +24,7 @@ std::vector<std::size_t> run_lengths(const SampleMask& m) {
 
 }  // namespace
 
-TEST_CASE("interleaved_folds: every sample judged exactly once, never by a fold that saw it",
-          "[held_out]") {
+TEST_CASE("interleaved_folds: every sample judged exactly once, never by a fold that saw it", "[held_out]") {
   for (std::size_t n : {20u, 99u, 1000u, 1234u}) {
     CAPTURE(n);
     const Folds folds = interleaved_folds(n);
@@ -55,6 +54,6 @@ TEST_CASE("all_samples and leading_samples", "[held_out]") {
   const SampleMask lead = leading_samples(200, 0.25, 10);
   CHECK(count(lead) == 50);
   CHECK(std::all_of(lead.begin(), lead.begin() + 50, [](char c) { return c == 1; }));
-  CHECK(count(leading_samples(200, 0.01, 30)) == 30);   // the minimum wins
-  CHECK(count(leading_samples(20, 0.5, 30)) == 20);     // never more than the flight
+  CHECK(count(leading_samples(200, 0.01, 30)) == 30);  // the minimum wins
+  CHECK(count(leading_samples(20, 0.5, 30)) == 20);    // never more than the flight
 }

@@ -8,12 +8,10 @@
 
 using namespace aloft::host::diagnose;
 
-TEST_CASE("minimise finds Rosenbrock's minimum at (1, 1) from the classic start",
-          "[levenberg_marquardt]") {
+TEST_CASE("minimise finds Rosenbrock's minimum at (1, 1) from the classic start", "[levenberg_marquardt]") {
   ArrowProblem rosenbrock;
   rosenbrock.shared_count = 2;
-  rosenbrock.residuals = [](int, const Eigen::VectorXd& x, const Eigen::VectorXd&,
-                            Eigen::VectorXd& r) {
+  rosenbrock.residuals = [](int, const Eigen::VectorXd& x, const Eigen::VectorXd&, Eigen::VectorXd& r) {
     r.resize(2);
     r << 10.0 * (x(1) - x(0) * x(0)), 1.0 - x(0);
   };
@@ -38,14 +36,12 @@ LeastSquaresOptions tight() {
 }
 
 // y = a exp(b t) + c_j for block j: shared (a, b), one local offset per block.
-ArrowProblem exponential_blocks(const std::vector<std::vector<double>>& data,
-                                const std::vector<double>& t) {
+ArrowProblem exponential_blocks(const std::vector<std::vector<double>>& data, const std::vector<double>& t) {
   ArrowProblem p;
   p.shared_count = 2;
   p.local_count = 1;
   p.block_count = static_cast<int>(data.size());
-  p.residuals = [data, t](int block, const Eigen::VectorXd& s, const Eigen::VectorXd& l,
-                          Eigen::VectorXd& r) {
+  p.residuals = [data, t](int block, const Eigen::VectorXd& s, const Eigen::VectorXd& l, Eigen::VectorXd& r) {
     r.resize(static_cast<Eigen::Index>(t.size()));
     for (std::size_t i = 0; i < t.size(); ++i) {
       r(static_cast<Eigen::Index>(i)) = s(0) * std::exp(s(1) * t[i]) + l(0) - data[block][i];
@@ -56,8 +52,7 @@ ArrowProblem exponential_blocks(const std::vector<std::vector<double>>& data,
 
 }  // namespace
 
-TEST_CASE("minimise recovers shared and per-block parameters of exact data",
-          "[levenberg_marquardt]") {
+TEST_CASE("minimise recovers shared and per-block parameters of exact data", "[levenberg_marquardt]") {
   const double a = 2.0, b = -1.3;
   const std::vector<double> offsets = {0.5, -0.25, 1.0};
   std::vector<double> t;
@@ -101,8 +96,7 @@ TEST_CASE("leave_one_block_out equals refitting without the block on a linear pr
     p.shared_count = 2;
     p.local_count = 1;
     p.block_count = static_cast<int>(d.size());
-    p.residuals = [d](int block, const Eigen::VectorXd& s, const Eigen::VectorXd& l,
-                      Eigen::VectorXd& r) {
+    p.residuals = [d](int block, const Eigen::VectorXd& s, const Eigen::VectorXd& l, Eigen::VectorXd& r) {
       r.resize(25);
       for (int i = 0; i < 25; ++i) {
         const double t = 0.1 * i;
@@ -113,8 +107,7 @@ TEST_CASE("leave_one_block_out equals refitting without the block on a linear pr
   };
   const std::vector<Eigen::VectorXd> zeros(4, Eigen::VectorXd::Zero(1));
   const LeastSquaresResult all = minimise(linear(data), Eigen::Vector2d(0.0, 0.0), zeros, tight());
-  const std::vector<Eigen::VectorXd> left_out =
-      leave_one_block_out(linear(data), all.shared, all.local);
+  const std::vector<Eigen::VectorXd> left_out = leave_one_block_out(linear(data), all.shared, all.local);
   REQUIRE(left_out.size() == 4);
   for (std::size_t j = 0; j < 4; ++j) {
     std::vector<std::vector<double>> rest = data;

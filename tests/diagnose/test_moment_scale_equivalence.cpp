@@ -76,7 +76,8 @@ TEST_CASE("no scale reproduces moments that change their order", "[equivalence]"
   CHECK_FALSE(scale_mimicking_moments(nominal, Eigen::Vector3d(0.0017, 0.0050, 0.0046)).has_value());
 }
 
-TEST_CASE("no scale reproduces the symmetric cylinder with moments that break its symmetry", "[equivalence]") {
+TEST_CASE("no scale reproduces the symmetric cylinder with moments that break its symmetry",
+          "[equivalence]") {
   // The seed paper's GF cylinder (symmetric about z) and a tensor whose transverse
   // moments differ by 6 %.
   const Eigen::Vector3d cylinder(0.01838, 0.01838, 0.02108);

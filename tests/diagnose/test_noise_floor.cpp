@@ -20,8 +20,8 @@ Flight noisy_flight(const Eigen::Vector3d& sigma, unsigned seed) {
     const double t = 0.001 * k;
     const Eigen::Vector3d smooth(3.0 * std::cos(6.0 * t), 2.0 * std::sin(6.0 * t), 8.0 + t);
     f.time_s.push_back(t);
-    f.omega.push_back(smooth + Eigen::Vector3d(sigma(0) * unit(random), sigma(1) * unit(random),
-                                               sigma(2) * unit(random)));
+    f.omega.push_back(
+        smooth + Eigen::Vector3d(sigma(0) * unit(random), sigma(1) * unit(random), sigma(2) * unit(random)));
     f.usable.push_back(1);
   }
   return f;
@@ -36,8 +36,7 @@ TEST_CASE("estimate_noise_floor returns the white noise's sigma per axis", "[noi
   for (int a = 0; a < 3; ++a) CHECK(floor.sigma(a) == Approx(sigma(a)).epsilon(0.1));
 }
 
-TEST_CASE("estimate_noise_floor allows for rates differenced from noisy poses",
-          "[noise_floor]") {
+TEST_CASE("estimate_noise_floor allows for rates differenced from noisy poses", "[noise_floor]") {
   // Rates e_k = (n_k+1 - n_k) / dt from pose noise n of sigma s: each rate has sigma
   // s sqrt(2) / dt, but neighbours are correlated; the estimate must still be that sigma.
   std::mt19937 random(11);
@@ -57,11 +56,10 @@ TEST_CASE("estimate_noise_floor allows for rates differenced from noisy poses",
   for (int a = 0; a < 3; ++a) CHECK(floor.sigma(a) == Approx(s * std::sqrt(2.0) / dt).epsilon(0.1));
 }
 
-TEST_CASE("estimate_noise_floor is not inflated by a time gap or unusable samples",
-          "[noise_floor]") {
+TEST_CASE("estimate_noise_floor is not inflated by a time gap or unusable samples", "[noise_floor]") {
   const Eigen::Vector3d sigma(0.02, 0.02, 0.02);
   Flight f = noisy_flight(sigma, 5);
-  for (std::size_t k = 1000; k < f.size(); ++k) f.time_s[k] += 0.5;  // 0.5 s of samples lost
+  for (std::size_t k = 1000; k < f.size(); ++k) f.time_s[k] += 0.5;                   // 0.5 s of samples lost
   for (std::size_t k = 300; k < 310; ++k) f.omega[k] += Eigen::Vector3d(50, 50, 50);  // glitch
   for (std::size_t k = 300; k < 310; ++k) f.usable[k] = 0;
   const NoiseFloor floor = estimate_noise_floor(f);

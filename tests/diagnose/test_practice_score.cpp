@@ -96,7 +96,8 @@ TEST_CASE("practice2 flights: compound, phone-like and sessions", "[practice2]")
         for (const auto& e : d.analysis.verdict.effects) said.push_back(effect_name(e.effect));
         if (said.empty()) said.push_back("none");
       } else {
-        const auto flights = flights_from_segments(log, body, read_segments_csv((dir / "segments.csv").string()));
+        const auto flights =
+            flights_from_segments(log, body, read_segments_csv((dir / "segments.csv").string()));
         if (kind == "phone") {
           said.push_back(effect_name(diagnose_flight(flights.front(), nominal).analysis.verdict.effect));
         } else {
@@ -118,9 +119,10 @@ TEST_CASE("practice2 flights: compound, phone-like and sessions", "[practice2]")
     ++total;
     std::string text;
     for (const auto& s : said) text += " " + s;
-    std::printf("%s %-8s %s ->%s %s\n", name.c_str(), kind.c_str(), answer["effects"].dump().c_str(), text.c_str(),
-                ok ? "ok" : "WRONG");
+    std::printf("%s %-8s %s ->%s %s\n", name.c_str(), kind.c_str(), answer["effects"].dump().c_str(),
+                text.c_str(), ok ? "ok" : "WRONG");
   }
-  for (const auto& [kind, s] : score) std::printf("practice2 %s: %d of %d\n", kind.c_str(), s.first, s.second);
+  for (const auto& [kind, s] : score)
+    std::printf("practice2 %s: %d of %d\n", kind.c_str(), s.first, s.second);
   CHECK(score["compound"].first >= 0.8 * score["compound"].second);
 }

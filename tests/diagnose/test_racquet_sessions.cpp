@@ -41,16 +41,16 @@ void print_session(const char* session, const SessionDiagnosis& d) {
     const std::vector<Candidate>& candidates = i == 0 ? d.pooled.candidates : s.candidates;
     for (const Candidate& c : candidates) {
       if (c.evaluated && !c.reference && c.effect != Effect::none) {
-        std::printf("   step %zu + %-20s held-out rel err %.4f -> %.4f (shrink %6.3f)\n", i + 1, effect_name(c.effect),
-                    s.heldout_rms_rel_err_before, c.heldout_rms_rel_err, c.shrink);
+        std::printf("   step %zu + %-20s held-out rel err %.4f -> %.4f (shrink %6.3f)\n", i + 1,
+                    effect_name(c.effect), s.heldout_rms_rel_err_before, c.heldout_rms_rel_err, c.shrink);
       }
     }
   }
   for (const FlightDiagnosis& f : d.flights) {
     if (!f.flip_period) continue;
     const FlipPeriod& p = *f.flip_period;
-    std::printf("   flight %s (%s): period %.3f s measured; first sample %.3f nominal", f.name.c_str(), f.comment.c_str(),
-                p.measured_s, p.nominal_s);
+    std::printf("   flight %s (%s): period %.3f s measured; first sample %.3f nominal", f.name.c_str(),
+                f.comment.c_str(), p.measured_s, p.nominal_s);
     if (p.diagnosed_s) std::printf(", %.3f diagnosed", *p.diagnosed_s);
     if (p.nominal_fitted_s) std::printf("; fitted start %.3f nominal", *p.nominal_fitted_s);
     if (p.diagnosed_fitted_s) std::printf(", %.3f diagnosed", *p.diagnosed_fitted_s);
@@ -58,7 +58,9 @@ void print_session(const char* session, const SessionDiagnosis& d) {
   }
 }
 
-bool in(const std::vector<Effect>& list, Effect e) { return std::find(list.begin(), list.end(), e) != list.end(); }
+bool in(const std::vector<Effect>& list, Effect e) {
+  return std::find(list.begin(), list.end(), e) != list.end();
+}
 
 SessionDiagnosis diagnose_named(const fs::path& root, const char* session, const Body& body) {
   const ImuLog log = read_imu_csv((root / session / "gyro.csv").string());

@@ -43,8 +43,7 @@ TEST_CASE("mark_saturated_samples marks the flat tops and only them", "[saturati
   }
 }
 
-TEST_CASE("mark_saturated_samples leaves an unclipped flight and short repeats alone",
-          "[saturation]") {
+TEST_CASE("mark_saturated_samples leaves an unclipped flight and short repeats alone", "[saturation]") {
   Flight free = swinging_flight(0.0);
   CHECK(mark_saturated_samples(free).samples == 0);
   // Two equal readings at the peak are a coincidence of rounding, not a flat top.

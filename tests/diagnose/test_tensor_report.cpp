@@ -42,7 +42,8 @@ Outcome run(const Case& c) {
   const auto session = aloft::generator::generate_phone_toss_session(spec, c.seed);
   static std::vector<std::vector<Flight>> keep;  // the diagnosis points into its flights
   keep.push_back(flights_from_segments(session.log, session.nominal, session.segments));
-  Outcome out{diagnose_session(keep.back(), NominalInertia::of(session.nominal.inertia), 2), session.true_ratios};
+  Outcome out{diagnose_session(keep.back(), NominalInertia::of(session.nominal.inertia), 2),
+              session.true_ratios};
   return out;
 }
 
@@ -59,14 +60,14 @@ bool names_moments(const Verdict& v) {
 
 void print(const Case& c, const Outcome& o) {
   const Analysis& a = o.diagnosis.pooled;
-  std::printf("%-10s %s (%zu effects) conf=%d  heldout rel %.4f -> %.4f", c.name, effect_name(a.verdict.effect),
-              a.verdict.effects.size(), a.verdict.confident, a.verdict.heldout_rms_rel_err_before,
-              a.verdict.heldout_rms_rel_err_after);
+  std::printf("%-10s %s (%zu effects) conf=%d  heldout rel %.4f -> %.4f", c.name,
+              effect_name(a.verdict.effect), a.verdict.effects.size(), a.verdict.confident,
+              a.verdict.heldout_rms_rel_err_before, a.verdict.heldout_rms_rel_err_after);
   if (a.tensor) {
     const TensorReport& t = *a.tensor;
     std::printf("  ratios %.4f [%.4f %.4f] %.4f [%.4f %.4f] truth %.4f %.4f consistent=%d", t.ratio_best(0),
-                t.ratio_low(0), t.ratio_high(0), t.ratio_best(1), t.ratio_low(1), t.ratio_high(1), o.truth(0), o.truth(1),
-                t.consistent_with_nominal);
+                t.ratio_low(0), t.ratio_high(0), t.ratio_best(1), t.ratio_low(1), t.ratio_high(1), o.truth(0),
+                o.truth(1), t.consistent_with_nominal);
   }
   std::printf("\n");
 }
@@ -75,9 +76,9 @@ void print(const Case& c, const Outcome& o) {
 
 TEST_CASE("phone tosses: tensor intervals, pooled verdicts and confidence", "[tensor]") {
   const std::vector<Case> cases = {
-      {"exact-a", 0, 1.0, 100, 6, 11},  {"exact-b", 0, 1.0, 100, 9, 12},  {"x+5%", 0, 1.05, 100, 8, 13},
-      {"z-5%", 2, 0.95, 100, 7, 14},    {"y+20%", 1, 1.2, 100, 6, 15},    {"x+20%", 0, 1.2, 100, 10, 16},
-      {"z-20%", 2, 0.8, 100, 6, 17},    {"y*2", 1, 2.0, 100, 8, 18},      {"y*4", 1, 4.0, 100, 6, 19},
+      {"exact-a", 0, 1.0, 100, 6, 11}, {"exact-b", 0, 1.0, 100, 9, 12}, {"x+5%", 0, 1.05, 100, 8, 13},
+      {"z-5%", 2, 0.95, 100, 7, 14},   {"y+20%", 1, 1.2, 100, 6, 15},   {"x+20%", 0, 1.2, 100, 10, 16},
+      {"z-20%", 2, 0.8, 100, 6, 17},   {"y*2", 1, 2.0, 100, 8, 18},     {"y*4", 1, 4.0, 100, 6, 19},
       {"y+5%", 1, 1.05, 100, 12, 20},
   };
   int covered = 0;
@@ -104,7 +105,8 @@ TEST_CASE("phone tosses: tensor intervals, pooled verdicts and confidence", "[te
 }
 
 TEST_CASE("phone tosses at 1 kHz, 5 flights: intervals within 3 %", "[tensor]") {
-  const std::vector<Case> cases = {{"1k-y+20%", 1, 1.2, 1000, 5, 31}, {"1k-x+5%", 0, 1.05, 1000, 5, 32},
+  const std::vector<Case> cases = {{"1k-y+20%", 1, 1.2, 1000, 5, 31},
+                                   {"1k-x+5%", 0, 1.05, 1000, 5, 32},
                                    {"1k-exact", 0, 1.0, 1000, 5, 33}};
   std::vector<double> half_widths;
   for (const Case& c : cases) {
@@ -112,7 +114,8 @@ TEST_CASE("phone tosses at 1 kHz, 5 flights: intervals within 3 %", "[tensor]") 
     print(c, o);
     REQUIRE(o.diagnosis.pooled.tensor);
     const TensorReport& t = *o.diagnosis.pooled.tensor;
-    for (int i = 0; i < 2; ++i) half_widths.push_back(0.5 * (t.ratio_high(i) - t.ratio_low(i)) / t.ratio_best(i));
+    for (int i = 0; i < 2; ++i)
+      half_widths.push_back(0.5 * (t.ratio_high(i) - t.ratio_low(i)) / t.ratio_best(i));
   }
   std::sort(half_widths.begin(), half_widths.end());
   const double median = half_widths[half_widths.size() / 2];

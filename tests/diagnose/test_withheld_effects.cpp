@@ -32,8 +32,8 @@ Eigen::Vector3d vec(const nlohmann::json& j) {
 }
 
 // The parameter checks of issue 5 for a verdict in the right class; empty when they hold.
-std::string parameter_problem(const std::string& truth_effect, const nlohmann::json& truth,
-                              Effect verdict, const EffectParameters& p) {
+std::string parameter_problem(const std::string& truth_effect, const nlohmann::json& truth, Effect verdict,
+                              const EffectParameters& p) {
   char text[200] = "";
   if (truth_effect == "gyro_bias") {
     const Eigen::Vector3d b = vec(truth["bias_rad_s"]);
@@ -46,25 +46,27 @@ std::string parameter_problem(const std::string& truth_effect, const nlohmann::j
   } else if (truth_effect == "clock_drift") {
     const double eps = truth["rate_error"].get<double>();
     const double fitted = verdict == Effect::gyro_scale ? p.vector.mean() : p.rate_error;
-    if (std::abs(fitted - eps) > 0.01) std::snprintf(text, sizeof text, "rate error %.4f vs %.4f", fitted, eps);
+    if (std::abs(fitted - eps) > 0.01)
+      std::snprintf(text, sizeof text, "rate error %.4f vs %.4f", fitted, eps);
   } else if (truth_effect == "inertia_axes" || truth_effect == "sensor_misalignment") {
     const double angle = truth["angle_deg"].get<double>();
     if (std::abs(p.angle_deg - angle) > 2.0)
       std::snprintf(text, sizeof text, "angle %.2f vs %.2f deg", p.angle_deg, angle);
   } else if (truth_effect == "aero_torque") {
     const double k = truth["k_N_m_s2"].get<double>();
-    if (std::abs(p.k_N_m_s2 - k) > 0.25 * k) std::snprintf(text, sizeof text, "k %.3g vs %.3g", p.k_N_m_s2, k);
+    if (std::abs(p.k_N_m_s2 - k) > 0.25 * k)
+      std::snprintf(text, sizeof text, "k %.3g vs %.3g", p.k_N_m_s2, k);
   } else if (truth_effect == "impulse") {
     const double t = truth["time_s"].get<double>();
-    if (std::abs(p.time_s - t) > 0.030) std::snprintf(text, sizeof text, "impulse at %.3f vs %.3f s", p.time_s, t);
+    if (std::abs(p.time_s - t) > 0.030)
+      std::snprintf(text, sizeof text, "impulse at %.3f vs %.3f s", p.time_s, t);
   }
   return text;
 }
 
 }  // namespace
 
-TEST_CASE("withheld effects: right class in >= 90 %, none for noise, parameters recovered",
-          "[withheld]") {
+TEST_CASE("withheld effects: right class in >= 90 %, none for noise, parameters recovered", "[withheld]") {
   int right = 0, total = 0, noise_flights = 0, noise_right = 0, parameter_failures = 0;
   int flagged = 0;  // right class, but the diagnosis itself says its parameters are not pinned
   int one_effect = 0, confident = 0, confident_right = 0, noise_confident = 0;
@@ -105,18 +107,22 @@ TEST_CASE("withheld effects: right class in >= 90 %, none for noise, parameters 
     parameter_failures += !problem.empty() && identifiable;
     std::string all_effects;
     for (const VerdictEffect& e : v.effects) all_effects += std::string(" ") + effect_name(e.effect);
-    std::printf("%-32s %-20s -> %-20s %s %s [%s ] %s\n", c.name.c_str(), g.truth.effect.c_str(), verdict.c_str(),
-                ok ? "ok   " : "WRONG", problem.c_str(), all_effects.c_str(), v.confident ? "confident" : "");
+    std::printf("%-32s %-20s -> %-20s %s %s [%s ] %s\n", c.name.c_str(), g.truth.effect.c_str(),
+                verdict.c_str(), ok ? "ok   " : "WRONG", problem.c_str(), all_effects.c_str(),
+                v.confident ? "confident" : "");
     if (!ok || !problem.empty()) {  // the ranking behind a miss, to see why
-      std::printf("    body %s, %zu samples, noise %.4f\n", g.truth.body.c_str(), flight.size(), d.noise.sigma.mean());
+      std::printf("    body %s, %zu samples, noise %.4f\n", g.truth.body.c_str(), flight.size(),
+                  d.noise.sigma.mean());
       for (const Candidate& k : d.analysis.candidates) {
-        std::printf("    %-20s score %12.1f shrink %6.3f %s\n", effect_name(k.effect), k.score, k.shrink, k.note.c_str());
+        std::printf("    %-20s score %12.1f shrink %6.3f %s\n", effect_name(k.effect), k.score, k.shrink,
+                    k.note.c_str());
       }
     }
   }
-  std::printf("withheld effects: %d of %d right (%.1f %%); none on %d of %d noise-only flights; "
-              "%d parameter misses; %d misses reported as not identifiable\n",
-              right, total, 100.0 * right / total, noise_right, noise_flights, parameter_failures, flagged);
+  std::printf(
+      "withheld effects: %d of %d right (%.1f %%); none on %d of %d noise-only flights; "
+      "%d parameter misses; %d misses reported as not identifiable\n",
+      right, total, 100.0 * right / total, noise_right, noise_flights, parameter_failures, flagged);
   std::printf("single effect named alone: %d of %d (%.1f %%); confident %d, right %d\n", one_effect, total,
               100.0 * one_effect / total, confident, confident_right);
   CHECK(total >= 60);
@@ -154,11 +160,11 @@ TEST_CASE("compound flights: both effects named on >= 80 %", "[compound]") {
     both += ok;
     confident += v.confident;
     confident_right += v.confident && ok;
-    std::printf("%-48s %-8s ->%s %s%s\n", c.name.c_str(), g.truth.body.c_str(), said.c_str(), ok ? "ok" : "MISSED",
-                v.confident ? " confident" : "");
+    std::printf("%-48s %-8s ->%s %s%s\n", c.name.c_str(), g.truth.body.c_str(), said.c_str(),
+                ok ? "ok" : "MISSED", v.confident ? " confident" : "");
   }
-  std::printf("compound flights: both named on %d of %d (%.1f %%); confident %d, of which right %d\n", both, total,
-              100.0 * both / total, confident, confident_right);
+  std::printf("compound flights: both named on %d of %d (%.1f %%); confident %d, of which right %d\n", both,
+              total, 100.0 * both / total, confident, confident_right);
   CHECK(total == 21);
   CHECK(both >= 0.8 * total);
   CHECK(confident_right >= 0.95 * confident);

@@ -73,8 +73,7 @@ TEST_CASE("examples/marker_plate.json poses a marker trial", "[examples]") {
   for (int k = 0; k < 3; ++k) CHECK(angle_between(poses.orientation[k], truth[k]) < 1e-9);
 }
 
-TEST_CASE("examples/imu_phone_box.json: its sensor rotation is what makes a diagnosis fit",
-          "[examples]") {
+TEST_CASE("examples/imu_phone_box.json: its sensor rotation is what makes a diagnosis fit", "[examples]") {
   const std::string body_path = examples + "/imu_phone_box.json";
   const Body body = aloft::host::read_body_file(body_path);
   // A torque-free flight of the body, logged by a gyro mounted as the body file says.
@@ -98,8 +97,8 @@ TEST_CASE("examples/imu_phone_box.json: its sensor rotation is what makes a diag
 
   const auto baseline_da = [&](const std::string& body_file) {
     const fs::path report = scratch() / "report.json";
-    const std::string command = std::string(ALOFT_PROGRAM) + " diagnose --body " + body_file +
-                                " --imu " + log.string() + " --json " + report.string() + " > /dev/null";
+    const std::string command = std::string(ALOFT_PROGRAM) + " diagnose --body " + body_file + " --imu " +
+                                log.string() + " --json " + report.string() + " > /dev/null";
     REQUIRE(WEXITSTATUS(std::system(command.c_str())) == 0);
     return nlohmann::json::parse(std::ifstream(report))["baseline"]["rms_da_deg"].get<double>();
   };

@@ -48,7 +48,8 @@ const std::string kMotSeed =
 
 const std::string kStoSeed =
     "states\nversion=1\ninDegrees=no\nendheader\n"
-    "time /jointset/free/free_coord_0/value /jointset/free/free_coord_1/value /jointset/free/free_coord_2/value "
+    "time /jointset/free/free_coord_0/value /jointset/free/free_coord_1/value "
+    "/jointset/free/free_coord_2/value "
     "/jointset/free/free_coord_3/value /jointset/free/free_coord_4/value /jointset/free/free_coord_5/value\n"
     "0 0.1 0.2 0.3 1 2 3\n0.01 0.11 0.21 0.31 1 2 3\n";
 
@@ -75,28 +76,35 @@ inline std::map<std::string, std::vector<Seed>> seed_corpus() {
   std::map<std::string, std::vector<Seed>> corpus;
   corpus["imu_csv"] = {
       {"plain.csv", "t,gx,gy,gz\n0,1,2,3\n0.001,4,5,6\n0.002,4.1,5.1,6.1\n"},
-      {"accel.csv", "gz, gy, gx, t, az, ay, ax\r\n3, 2, 1, 0.5, 9.8, 0, 0.1\r\n3, 2, 1, 0.6, 9.8, 0, 0.1\r\n"},
+      {"accel.csv",
+       "gz, gy, gx, t, az, ay, ax\r\n3, 2, 1, 0.5, 9.8, 0, 0.1\r\n3, 2, 1, 0.6, 9.8, 0, 0.1\r\n"},
       {"phyphox.csv",
-       "\"Time (s)\",\"Gyroscope x (rad/s)\",\"Gyroscope y (rad/s)\",\"Gyroscope z (rad/s)\",\"Absolute (rad/s)\"\n"
+       "\"Time (s)\",\"Gyroscope x (rad/s)\",\"Gyroscope y (rad/s)\",\"Gyroscope z (rad/s)\",\"Absolute "
+       "(rad/s)\"\n"
        "1.0E-2,1.5E-1,-2.0E-2,3.0E0,3.01E0\n2.0E-2,1.6E-1,-2.1E-2,3.1E0,3.11E0\n"}};
   corpus["segments"] = {
-      {"segments.csv", "segment, start, end, keep, comment\n0,,,false,warm-up\n1, 12.0, 13.0, , Intermediate axis\n"
-                       "2,18.65,19.84,true,\"fast, then slow\"\n3,25.2,26.25\n"}};
+      {"segments.csv",
+       "segment, start, end, keep, comment\n0,,,false,warm-up\n1, 12.0, 13.0, , Intermediate axis\n"
+       "2,18.65,19.84,true,\"fast, then slow\"\n3,25.2,26.25\n"}};
   corpus["trc"] = {{"markers.trc", kTrcSeed}};
   corpus["mot"] = {{"pose.mot", kMotSeed}, {"states.sto", kStoSeed}};
-  corpus["pose_csv"] = {{"pose.csv", "t,qw,qx,qy,qz,x,y,z,wx,wy,wz\n0,1,0,0,0,0.5,0.25,2,1,2,3\n"
-                                     "0.001,0.866025,0.5,0,0,0.5,0.25,2,1,2,3\n"}};
+  corpus["pose_csv"] = {{"pose.csv",
+                         "t,qw,qx,qy,qz,x,y,z,wx,wy,wz\n0,1,0,0,0,0.5,0.25,2,1,2,3\n"
+                         "0.001,0.866025,0.5,0,0,0.5,0.25,2,1,2,3\n"}};
   corpus["body_json"] = {
-      {"tensor.json", R"({"name": "box", "mass": 1.2, "inertia": {"tensor": [[0.01, 0, 0], [0, 0.02, 0], [0, 0, 0.025]]},
+      {"tensor.json",
+       R"({"name": "box", "mass": 1.2, "inertia": {"tensor": [[0.01, 0, 0], [0, 0.02, 0], [0, 0, 0.025]]},
  "markers": {"M1": [0.1, 0, 0], "M2": [0, 0.1, 0], "M3": [0, 0, 0.1]}, "imu": {"rotation": [1, 0, 0, 0]}})"},
       {"principal.json", R"({"inertia": {"principal": [1, 2, 2.5], "axes": [0.7071068, 0.7071068, 0, 0]}})"},
-      {"shape.json", R"({"mass": 10, "inertia": {"shape": {"cylinder": {"radius": 0.065, "height": 0.097}}}})"}};
+      {"shape.json",
+       R"({"mass": 10, "inertia": {"shape": {"cylinder": {"radius": 0.065, "height": 0.097}}}})"}};
   corpus["osim"] = {{"model.osim", kOsimSeed}};
   std::vector<Seed> c3d;
   for (Processor p : {Processor::intel, Processor::dec, Processor::mips}) {
     for (bool float_data : {false, true}) {
-      c3d.push_back({std::string(aloft::host::c3d::processor_name(p)) + (float_data ? "_float" : "_int") + ".c3d",
-                     c3d_seed(p, float_data, p == Processor::intel)});
+      c3d.push_back(
+          {std::string(aloft::host::c3d::processor_name(p)) + (float_data ? "_float" : "_int") + ".c3d",
+           c3d_seed(p, float_data, p == Processor::intel)});
     }
   }
   corpus["c3d"] = c3d;

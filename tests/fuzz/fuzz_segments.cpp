@@ -3,6 +3,7 @@
 #include "readers/segments.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  aloft::fuzz::read_input(data, size, ".csv", [](const std::string& path) { aloft::host::read_segments_csv(path); });
+  aloft::fuzz::read_input(data, size, ".csv",
+                          [](const std::string& path) { aloft::host::read_segments_csv(path); });
   return 0;
 }

@@ -42,8 +42,8 @@ struct TestFlight {
 TestFlight make_flight() {
   TestFlight f;
   REQUIRE(aloft::InertiaTensor<double>::make_from_principal(
-              {0.011, 0.019, 0.027}, aloft::quat_wxyz(0.9, 0.1, -0.3, 0.3).normalized(),
-              f.inertia) == aloft::Status::ok);
+              {0.011, 0.019, 0.027}, aloft::quat_wxyz(0.9, 0.1, -0.3, 0.3).normalized(), f.inertia) ==
+          aloft::Status::ok);
   const aloft::Rk4Integrator<double> truth(f.inertia);
   aloft::RigidBodyState<double> s;
   s.omega_body = {3.0, -7.0, 9.0};
@@ -56,7 +56,8 @@ TestFlight make_flight() {
     f.time.push_back(t);
     const aloft::Quat<double>& q = s.orientation;
     f.orientation.insert(f.orientation.end(), {q.w(), q.x(), q.y(), q.z()});
-    const aloft::Vec3<double> w = s.omega_body + aloft::Vec3<double>(noise(random), noise(random), noise(random));
+    const aloft::Vec3<double> w =
+        s.omega_body + aloft::Vec3<double>(noise(random), noise(random), noise(random));
     f.state_omega.insert(f.state_omega.end(), {w.x(), w.y(), w.z()});
     if (i + 1 < n) {
       const aloft::Vec3<double> ww = q * w;
@@ -79,13 +80,13 @@ aloft::Vec3<double> short_side(const aloft::Quat<double>& d) {
 }
 
 // The scalar reference of one pose-flight simulation: RMS DA (degrees), body and world.
-void reference_pose(const TestFlight& f, const aloft::InertiaTensor<double>& inertia,
-                    std::size_t k, double& body, double& world) {
+void reference_pose(const TestFlight& f, const aloft::InertiaTensor<double>& inertia, std::size_t k,
+                    double& body, double& world) {
   const aloft::Rk4Integrator<double> integrator(inertia);
   const std::size_t n = f.time.size();
   const auto q_at = [&](std::size_t i) {
-    return aloft::quat_wxyz(f.orientation[4 * i], f.orientation[4 * i + 1],
-                            f.orientation[4 * i + 2], f.orientation[4 * i + 3]);
+    return aloft::quat_wxyz(f.orientation[4 * i], f.orientation[4 * i + 1], f.orientation[4 * i + 2],
+                            f.orientation[4 * i + 3]);
   };
   const auto v3 = [](const std::vector<double>& v, std::size_t i) {
     return aloft::Vec3<double>(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
@@ -114,8 +115,7 @@ void reference_pose(const TestFlight& f, const aloft::InertiaTensor<double>& ine
   world = std::sqrt(sw / double(n - 1)) * kDegrees;
 }
 
-double reference_rate(const TestFlight& f, const aloft::InertiaTensor<double>& inertia,
-                      std::size_t k) {
+double reference_rate(const TestFlight& f, const aloft::InertiaTensor<double>& inertia, std::size_t k) {
   const std::size_t n = f.time.size();
   const auto v3 = [&](std::size_t i) {
     return aloft::Vec3<double>(f.state_omega[3 * i], f.state_omega[3 * i + 1], f.state_omega[3 * i + 2]);
@@ -138,7 +138,7 @@ double reference_rate(const TestFlight& f, const aloft::InertiaTensor<double>& i
 
 // Tensors a few per cent and degrees off the flight's, one per simulation.
 std::vector<aloft::InertiaTensor<double>> perturbed_tensors(const aloft::InertiaTensor<double>& nominal,
-                                                           int count) {
+                                                            int count) {
   std::vector<aloft::InertiaTensor<double>> out;
   std::mt19937 random(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -146,7 +146,8 @@ std::vector<aloft::InertiaTensor<double>> perturbed_tensors(const aloft::Inertia
     const aloft::Vec3<double> m = nominal.principal_moments().cwiseProduct(
         aloft::Vec3<double>(1 + 0.05 * u(random), 1 + 0.05 * u(random), 1 + 0.05 * u(random)));
     const aloft::Quat<double> axes =
-        nominal.principal_axes() * aloft::quat_exp(aloft::Vec3<double>(0.1 * u(random), 0.1 * u(random), 0.1 * u(random)));
+        nominal.principal_axes() *
+        aloft::quat_exp(aloft::Vec3<double>(0.1 * u(random), 0.1 * u(random), 0.1 * u(random)));
     aloft::InertiaTensor<double> t;
     REQUIRE(aloft::InertiaTensor<double>::make_from_principal(m, axes, t) == aloft::Status::ok);
     out.push_back(t);
@@ -212,8 +213,10 @@ TEST_CASE("the deviation angle in lanes is within 1e-9 rad of atan2", "[batch]")
         b[c][l] = (i % 2 == 0) ? u(random) : (i % 4 == 1 ? 1.0 : -1.0) * a[c][l] + 1e-6 * u(random);
       }
     }
-    const aloft::LaneVec3<Lanes> va{Lanes::load_unaligned(a[0]), Lanes::load_unaligned(a[1]), Lanes::load_unaligned(a[2])};
-    const aloft::LaneVec3<Lanes> vb{Lanes::load_unaligned(b[0]), Lanes::load_unaligned(b[1]), Lanes::load_unaligned(b[2])};
+    const aloft::LaneVec3<Lanes> va{Lanes::load_unaligned(a[0]), Lanes::load_unaligned(a[1]),
+                                    Lanes::load_unaligned(a[2])};
+    const aloft::LaneVec3<Lanes> vb{Lanes::load_unaligned(b[0]), Lanes::load_unaligned(b[1]),
+                                    Lanes::load_unaligned(b[2])};
     double da[L];
     aloft::lane_deviation_angle(va, vb).store_unaligned(da);
     for (int l = 0; l < L; ++l) {
@@ -221,6 +224,6 @@ TEST_CASE("the deviation angle in lanes is within 1e-9 rad of atan2", "[batch]")
       worst = std::max(worst, std::abs(da[l] - reference_da(x, y)));
     }
   }
-  CHECK(worst <= 1e-9);   // the bound
-  CHECK(worst < 1e-14);   // what fdlibm's polynomial gives
+  CHECK(worst <= 1e-9);  // the bound
+  CHECK(worst < 1e-14);  // what fdlibm's polynomial gives
 }

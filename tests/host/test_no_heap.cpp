@@ -25,9 +25,9 @@ S exercise_core() {
   REQUIRE(aloft::InertiaTensor<S>::make_box(S(1), S(0.1), S(0.2), S(0.3), box) == Status::ok);
   REQUIRE(aloft::InertiaTensor<S>::make_sphere(S(1), S(0.1), sphere) == Status::ok);
   REQUIRE(aloft::InertiaTensor<S>::make_from_tensor(box.tensor(), full) == Status::ok);
-  REQUIRE(aloft::InertiaTensor<S>::make_from_principal(
-              Vec3<S>(S(1), S(2), S(2.5)), aloft::quat_wxyz(S(0.8), S(0.6), S(0), S(0)),
-              principal) == Status::ok);
+  REQUIRE(aloft::InertiaTensor<S>::make_from_principal(Vec3<S>(S(1), S(2), S(2.5)),
+                                                       aloft::quat_wxyz(S(0.8), S(0.6), S(0), S(0)),
+                                                       principal) == Status::ok);
 
   aloft::RigidBodyState<S> a;
   a.omega_body = Vec3<S>(S(1), S(10), S(0.5));
@@ -42,8 +42,7 @@ S exercise_core() {
     Vec3<S> body = Vec3<S>::Zero();
     Vec3<S> world = Vec3<S>::Zero();
     REQUIRE(aloft::omega_body_from_orientations(before, a.orientation, S(1e-3), body) == Status::ok);
-    REQUIRE(aloft::omega_world_from_orientations(before, a.orientation, S(1e-3), world) ==
-            Status::ok);
+    REQUIRE(aloft::omega_world_from_orientations(before, a.orientation, S(1e-3), world) == Status::ok);
     REQUIRE(stats.add(body, a.omega_body) == Status::ok);
     sink += world.norm() + aloft::angle_between(a.orientation, b.orientation);
   }

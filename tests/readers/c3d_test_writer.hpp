@@ -95,8 +95,16 @@ inline std::vector<std::uint8_t> write_c3d_bytes(const C3dContent& c) {
     w.u8(body, 0);  // no description
     record(group_id, name, body);
   };
-  auto int_data = [&](int v) { std::vector<std::uint8_t> d; w.i16(d, v); return d; };
-  auto float_data = [&](float v) { std::vector<std::uint8_t> d; w.f32(d, v); return d; };
+  auto int_data = [&](int v) {
+    std::vector<std::uint8_t> d;
+    w.i16(d, v);
+    return d;
+  };
+  auto float_data = [&](float v) {
+    std::vector<std::uint8_t> d;
+    w.f32(d, v);
+    return d;
+  };
 
   std::size_t label_length = 1;
   for (const auto& l : c.labels) label_length = std::max(label_length, l.size());

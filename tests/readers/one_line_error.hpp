@@ -27,11 +27,11 @@ std::string error_message_of(Call&& call) {
 }  // namespace aloft::test
 
 // Expects the call to fail with a message holding each of the given fragments.
-#define CHECK_ONE_LINE_ERROR(call, ...)                                      \
-  do {                                                                       \
-    const std::string message_ = aloft::test::error_message_of([&] { call; }); \
-    for (const std::string& fragment_ : std::initializer_list<std::string>{__VA_ARGS__}) {                     \
-      INFO("message: " << message_);                                         \
-      CHECK(message_.find(fragment_) != std::string::npos);                  \
-    }                                                                        \
+#define CHECK_ONE_LINE_ERROR(call, ...)                                                    \
+  do {                                                                                     \
+    const std::string message_ = aloft::test::error_message_of([&] { call; });             \
+    for (const std::string& fragment_ : std::initializer_list<std::string>{__VA_ARGS__}) { \
+      INFO("message: " << message_);                                                       \
+      CHECK(message_.find(fragment_) != std::string::npos);                                \
+    }                                                                                      \
   } while (0)

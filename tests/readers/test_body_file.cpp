@@ -47,7 +47,9 @@ TEST_CASE("body file: unknown keys are named in a warning", "[readers][body]") {
   }
   SECTION("a file of known keys only: no warning") {
     WarningCapture warnings;
-    read_body_file(dir.write("k.json", R"({"name": "c", "mass": 2, "inertia": {"shape": {"cylinder": {"radius": 0.1, "height": 0.2}}},
+    read_body_file(dir.write(
+        "k.json",
+        R"({"name": "c", "mass": 2, "inertia": {"shape": {"cylinder": {"radius": 0.1, "height": 0.2}}},
         "markers": {"M1": [0, 0, 0.1]}, "imu": {"rotation": [1, 0, 0, 0]}})"));
     CHECK(warnings.messages().empty());
   }

@@ -62,7 +62,8 @@ TEST_CASE("C3D written in each processor format, integer and float, reads back",
       INFO("processor " << aloft::host::c3d::processor_name(p) << ", float " << float_data);
       const auto content = two_marker_trial(p, float_data);
       C3dDetails details;
-      const auto trial = read_c3d(dir.write("t.c3d", as_text(aloft::test::write_c3d_bytes(content))), &details);
+      const auto trial =
+          read_c3d(dir.write("t.c3d", as_text(aloft::test::write_c3d_bytes(content))), &details);
       CHECK(details.processor == aloft::host::c3d::processor_name(p));
       CHECK(details.float_data == float_data);
       CHECK(details.parameter_damage.empty());
@@ -103,8 +104,16 @@ TEST_CASE("c3d.org samples: the six versions of each trial give the same points"
     std::size_t points;
   };
   const std::vector<Trial> trials = {
-      {"sample01", {"Eb015pi.c3d", "Eb015vi.c3d", "Eb015si.c3d"}, {"Eb015pr.c3d", "Eb015vr.c3d", "Eb015sr.c3d"}, 450, 26},
-      {"sample02", {"pc_int.c3d", "DEC_INT.C3D", "sgi_int.c3d"}, {"pc_real.c3d", "Dec_real.c3d", "sgi_real.c3d"}, 89, 36},
+      {"sample01",
+       {"Eb015pi.c3d", "Eb015vi.c3d", "Eb015si.c3d"},
+       {"Eb015pr.c3d", "Eb015vr.c3d", "Eb015sr.c3d"},
+       450,
+       26},
+      {"sample02",
+       {"pc_int.c3d", "DEC_INT.C3D", "sgi_int.c3d"},
+       {"pc_real.c3d", "Dec_real.c3d", "sgi_real.c3d"},
+       89,
+       36},
   };
   for (const Trial& t : trials) {
     INFO(t.folder);

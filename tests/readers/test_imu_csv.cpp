@@ -32,12 +32,12 @@ TEST_CASE("plain IMU CSV: gyro only and with accelerometer", "[readers][imu]") {
 
 TEST_CASE("phyphox export is recognised by its header", "[readers][imu]") {
   ScratchDir dir;
-  const auto log = read_imu_csv(dir.write(
-      "p.csv",
-      "\"Time (s)\",\"Gyroscope x (rad/s)\",\"Gyroscope y (rad/s)\",\"Gyroscope z (rad/s)\","
-      "\"Absolute (rad/s)\"\n"
-      "6.394458331E-3,-1.361911744E-1,2.411512472E-2,-1.801915616E-1,2.271531952E-1\n"
-      "1.641445833E-2,-1.343524158E-1,1.744828187E-2,-1.812447757E-1,2.262845175E-1\n"));
+  const auto log = read_imu_csv(
+      dir.write("p.csv",
+                "\"Time (s)\",\"Gyroscope x (rad/s)\",\"Gyroscope y (rad/s)\",\"Gyroscope z (rad/s)\","
+                "\"Absolute (rad/s)\"\n"
+                "6.394458331E-3,-1.361911744E-1,2.411512472E-2,-1.801915616E-1,2.271531952E-1\n"
+                "1.641445833E-2,-1.343524158E-1,1.744828187E-2,-1.812447757E-1,2.262845175E-1\n"));
   CHECK(log.format == "phyphox");
   REQUIRE(log.time_s.size() == 2);
   CHECK(log.time_s[0] == 6.394458331e-3);
@@ -121,8 +121,8 @@ TEST_CASE("a window of an IMU log: the samples inside, or an empty-flight error"
   REQUIRE(window.time_s == std::vector<double>{1.0, 2.0});
   CHECK(window.gyro_rad_s[1].x() == 2.0);
   CHECK(window.accel_m_s2[0].x() == 1.0);
-  CHECK_ONE_LINE_ERROR(aloft::host::imu_window(log, 2.5, 2.9, "segment b"), log.path,
-                       "segment b", "holds 0 samples", "the log spans 0–3 s");
+  CHECK_ONE_LINE_ERROR(aloft::host::imu_window(log, 2.5, 2.9, "segment b"), log.path, "segment b",
+                       "holds 0 samples", "the log spans 0–3 s");
   CHECK_ONE_LINE_ERROR(aloft::host::imu_window(log, 5, 9, "segment c"), "holds 0 samples");
 }
 
@@ -133,7 +133,8 @@ TEST_CASE("every racquet flight lies inside its session's log", "[readers][imu][
     const auto log = read_imu_csv(folder + "/gyro.csv");
     for (const auto& segment : aloft::host::read_segments_csv(folder + "/segments.csv")) {
       INFO(session << " segment " << segment.name);
-      const auto flight = aloft::host::imu_window(log, segment.start_s, segment.end_s, "segment " + segment.name);
+      const auto flight =
+          aloft::host::imu_window(log, segment.start_s, segment.end_s, "segment " + segment.name);
       // About 100 Hz over about a second.
       CHECK(flight.time_s.size() > 70);
       CHECK(flight.time_s.size() < 150);

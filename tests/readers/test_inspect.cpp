@@ -58,9 +58,8 @@ TEST_CASE("inspect a TRC file: SPEC keys, occlusions, and the pose fit with --bo
   CHECK(summary["occluded_samples"] == 1);
   CHECK(summary["frames_with_fewer_than_3_markers"] == 1);
 
-  const auto body = dir.write(
-      "b.json",
-      R"({"name": "tri", "mass": 1, "inertia": {"principal": [1, 1, 1]},
+  const auto body = dir.write("b.json",
+                              R"({"name": "tri", "mass": 1, "inertia": {"principal": [1, 1, 1]},
           "markers": {"A": [0.1, 0, 0], "B": [0, 0.1, 0], "C": [0, 0, 0.1]}})");
   const auto fitted = inspect({trc, "--body", body});
   CHECK(fitted["pose_fit"]["posed_frames"] == 2);
@@ -91,14 +90,16 @@ TEST_CASE("inspect a C3D file: layout details", "[readers][inspect]") {
 TEST_CASE("inspect pose, IMU and segments files, told apart by content", "[readers][inspect]") {
   ScratchDir dir;
   // No telling extension: .txt for all.
-  const auto poses = inspect({dir.write("p.txt", "t,qw,qx,qy,qz,x,y,z\n0,1,0,0,0,0,0,0\n0.01,1,0,0,0,0,0,1\n0.02,1,0,0,0,0,0,2\n")});
+  const auto poses = inspect(
+      {dir.write("p.txt", "t,qw,qx,qy,qz,x,y,z\n0,1,0,0,0,0,0,0\n0.01,1,0,0,0,0,0,1\n0.02,1,0,0,0,0,0,2\n")});
   CHECK(poses["format"] == "pose_csv");
   CHECK(poses["frames"] == 3);
   CHECK(poses["rate_hz"].get<double>() == Approx(100.0));
   CHECK(poses["duration_s"].get<double>() == Approx(0.02));
   CHECK(poses["has_position"] == true);
 
-  const auto mot = inspect({dir.write("m.txt", "x\ninDegrees=yes\nendheader\ntime rx ry rz\n0 0 0 0\n0.5 1 2 3\n")});
+  const auto mot =
+      inspect({dir.write("m.txt", "x\ninDegrees=yes\nendheader\ntime rx ry rz\n0 0 0 0\n0.5 1 2 3\n")});
   CHECK(mot["format"] == "mot");
   CHECK(mot["rate_hz"].get<double>() == Approx(2.0));
 

@@ -78,8 +78,8 @@ Body markers_of_body_file(const std::string& path) {
   Body body;
   body.name = json.at("name").get<std::string>();
   for (const auto& [name, xyz] : json.at("markers").items()) {
-    body.markers_m[name] = Eigen::Vector3d(xyz.at(0).get<double>(), xyz.at(1).get<double>(),
-                                           xyz.at(2).get<double>());
+    body.markers_m[name] =
+        Eigen::Vector3d(xyz.at(0).get<double>(), xyz.at(1).get<double>(), xyz.at(2).get<double>());
   }
   return body;
 }
@@ -160,7 +160,8 @@ TEST_CASE("marker noise shows in the residual", "[readers][fit]") {
   CHECK(report.mean_rms_residual_m == Approx(0.245e-3).epsilon(0.15));
 }
 
-TEST_CASE("practice marker trials: poses fit to the marker noise, rates near the true ω0", "[readers][fit][shared]") {
+TEST_CASE("practice marker trials: poses fit to the marker noise, rates near the true ω0",
+          "[readers][fit][shared]") {
   ALOFT_REQUIRE_SHARED_DATA(data);
   std::ifstream truth_file(data + "/practice/truth.json");  // used to score, as its README says
   const nlohmann::json truth = nlohmann::json::parse(truth_file);
@@ -184,7 +185,8 @@ TEST_CASE("practice marker trials: poses fit to the marker noise, rates near the
   }
 }
 
-TEST_CASE("markers named by the body but missing from the file: one error naming them", "[readers][fit][bad]") {
+TEST_CASE("markers named by the body but missing from the file: one error naming them",
+          "[readers][fit][bad]") {
   Body body = four_marker_body();
   const KnownMotion motion;
   const MarkerTrial markers = motion.markers(body);

@@ -27,10 +27,10 @@ std::string mot(const std::string& header_extra, const std::string& names, const
 
 TEST_CASE(".mot free joint: body-fixed X-Y-Z Cardan angles in degrees", "[readers][mot]") {
   ScratchDir dir;
-  const auto trial = read_mot(dir.write(
-      "t.mot", mot("nRows=2\nnColumns=7\ninDegrees=yes\n",
-                   "time\tbox_rotX\tbox_rotY\tbox_rotZ\tbox_tx\tbox_ty\tbox_tz",
-                   "0.000\t90\t0\t0\t1\t2\t3\n0.004\t10\t20\t30\t0.1\t0.2\t0.3\n")));
+  const auto trial =
+      read_mot(dir.write("t.mot", mot("nRows=2\nnColumns=7\ninDegrees=yes\n",
+                                      "time\tbox_rotX\tbox_rotY\tbox_rotZ\tbox_tx\tbox_ty\tbox_tz",
+                                      "0.000\t90\t0\t0\t1\t2\t3\n0.004\t10\t20\t30\t0.1\t0.2\t0.3\n")));
   CHECK(trial.format == "mot");
   REQUIRE(trial.time_s.size() == 2);
   // 90° about x maps body y onto world z (q maps body to world).
@@ -51,15 +51,16 @@ TEST_CASE(".mot/.sto columns by name or by OpenSim's free-joint names", "[reader
                                     Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()) *
                                     Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
   SECTION("shuffled named columns, radians, .sto") {
-    const auto t = read_mot(dir.write("s.sto", mot("inDegrees=no\n", "ty rz time tx rx tz ry extra",
-                                                 "0 0.3 0 5 0.1 0 0.2 99\n")));
+    const auto t = read_mot(dir.write(
+        "s.sto", mot("inDegrees=no\n", "ty rz time tx rx tz ry extra", "0 0.3 0 5 0.1 0 0.2 99\n")));
     CHECK(t.format == "sto");
     CHECK(rotation_angle(t.orientation[0], expected) < 1e-12);
     CHECK(t.position_m[0].isApprox(Eigen::Vector3d(5, 0, 0)));
   }
   SECTION("OpenSim FreeJoint default coordinate names") {
     const auto t = read_mot(dir.write(
-        "c.mot", mot("inDegrees=no\n", "time free_coord_0 free_coord_1 free_coord_2 free_coord_3 free_coord_4 free_coord_5",
+        "c.mot", mot("inDegrees=no\n",
+                     "time free_coord_0 free_coord_1 free_coord_2 free_coord_3 free_coord_4 free_coord_5",
                      "0 0.1 0.2 0.3 1 2 3\n")));
     CHECK(rotation_angle(t.orientation[0], expected) < 1e-12);
     CHECK(t.position_m[0].isApprox(Eigen::Vector3d(1, 2, 3)));
@@ -74,18 +75,19 @@ TEST_CASE(".mot/.sto columns by name or by OpenSim's free-joint names", "[reader
     CHECK(t.position_m[0].isApprox(Eigen::Vector3d(1, 2, 3)));
   }
   SECTION("OpenSim 4 state paths: values read, speeds ignored") {
-    const auto t = read_mot(dir.write(
-        "v.sto", mot("inDegrees=no\n",
-                     "time /jointset/free/free_coord_0/value /jointset/free/free_coord_0/speed "
-                     "/jointset/free/free_coord_1/value /jointset/free/free_coord_2/value "
-                     "/jointset/free/free_coord_3/value /jointset/free/free_coord_4/value "
-                     "/jointset/free/free_coord_5/value",
-                     "0 0.1 9 0.2 0.3 1 2 3\n")));
+    const auto t = read_mot(
+        dir.write("v.sto", mot("inDegrees=no\n",
+                               "time /jointset/free/free_coord_0/value /jointset/free/free_coord_0/speed "
+                               "/jointset/free/free_coord_1/value /jointset/free/free_coord_2/value "
+                               "/jointset/free/free_coord_3/value /jointset/free/free_coord_4/value "
+                               "/jointset/free/free_coord_5/value",
+                               "0 0.1 9 0.2 0.3 1 2 3\n")));
     CHECK(rotation_angle(t.orientation[0], expected) < 1e-12);
     CHECK(t.position_m[0].isApprox(Eigen::Vector3d(1, 2, 3)));
   }
   SECTION("rotations only") {
-    const auto t = read_mot(dir.write("r.mot", mot("inDegrees=no\n", "time rx ry rz", "0 0.1 0.2 0.3\n1 0.1 0.2 0.3\n")));
+    const auto t = read_mot(
+        dir.write("r.mot", mot("inDegrees=no\n", "time rx ry rz", "0 0.1 0.2 0.3\n1 0.1 0.2 0.3\n")));
     CHECK(rotation_angle(t.orientation[1], expected) < 1e-12);
     CHECK(t.position_m.empty());
   }
@@ -94,9 +96,10 @@ TEST_CASE(".mot/.sto columns by name or by OpenSim's free-joint names", "[reader
 TEST_CASE("pose CSV: quaternions, optional position, extra columns ignored", "[readers][pose_csv]") {
   ScratchDir dir;
   // Sample 2 is 60° about x, given to 6 digits; sample 3 is -1, the identity again.
-  const auto t = read_pose_csv(dir.write(
-      "p.csv", "t,qw,qx,qy,qz,wx,wy,wz\n0,1,0,0,0,1,2,3\n0.001,0.866025,0.5,0,0,1,2,3\n"
-               "0.002,-1,0,0,0,1,2,3\n"));
+  const auto t =
+      read_pose_csv(dir.write("p.csv",
+                              "t,qw,qx,qy,qz,wx,wy,wz\n0,1,0,0,0,1,2,3\n0.001,0.866025,0.5,0,0,1,2,3\n"
+                              "0.002,-1,0,0,0,1,2,3\n"));
   CHECK(t.format == "pose_csv");
   REQUIRE(t.time_s.size() == 3);
   CHECK(t.position_m.empty());
@@ -123,7 +126,8 @@ TEST_CASE("bad pose files: one-line errors", "[readers][mot][pose_csv][bad]") {
     CHECK_ONE_LINE_ERROR(read_mot(p), p, "endheader");
   }
   SECTION("rows fewer than nRows") {
-    const auto p = dir.write("a.mot", mot("nRows=3\ninDegrees=yes\n", "time rx ry rz", "0 1 2 3\n0.1 1 2 3\n"));
+    const auto p =
+        dir.write("a.mot", mot("nRows=3\ninDegrees=yes\n", "time rx ry rz", "0 1 2 3\n0.1 1 2 3\n"));
     CHECK_ONE_LINE_ERROR(read_mot(p), p, "2 rows where nRows is 3", "truncated");
   }
   SECTION("truncated row") {

@@ -18,7 +18,8 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-std::string sto(const std::string& names, const std::string& rows, const std::string& header = "inDegrees=no\n") {
+std::string sto(const std::string& names, const std::string& rows,
+                const std::string& header = "inDegrees=no\n") {
   return "result\nversion=1\n" + header + "endheader\n" + names + "\n" + rows;
 }
 
@@ -29,12 +30,14 @@ Eigen::Matrix3d about(const Eigen::Vector3d& axis, double angle) {
 // An OpenSim 4 model with one joint, `joint_xml` (its frames and transform inside).
 std::string osim4(const std::string& joint_xml) {
   return "<?xml version=\"1.0\" encoding=\"UTF-8\" ?>\n<OpenSimDocument Version=\"40000\">\n"
-         "<Model name=\"m\"><JointSet name=\"jointset\"><objects>\n" + joint_xml +
-         "</objects></JointSet></Model></OpenSimDocument>\n";
+         "<Model name=\"m\"><JointSet name=\"jointset\"><objects>\n" +
+         joint_xml + "</objects></JointSet></Model></OpenSimDocument>\n";
 }
 
-std::string transform_axis(const std::string& name, const std::string& coordinate, const std::string& axis,
-                           const std::string& function = "<LinearFunction name=\"function\"><coefficients> 1 0</coefficients></LinearFunction>") {
+std::string transform_axis(
+    const std::string& name, const std::string& coordinate, const std::string& axis,
+    const std::string& function =
+        "<LinearFunction name=\"function\"><coefficients> 1 0</coefficients></LinearFunction>") {
   return "<TransformAxis name=\"" + name + "\"><coordinates>" + coordinate + "</coordinates><axis>" + axis +
          "</axis>" + function + "</TransformAxis>\n";
 }
@@ -45,8 +48,8 @@ std::string pelvis_joint(const std::string& frames = "", const std::string& pare
   return "<CustomJoint name=\"ground_pelvis\"><socket_parent_frame>" + parent +
          "</socket_parent_frame><socket_child_frame>pelvis</socket_child_frame>"
          "<coordinates><Coordinate name=\"tilt\"/><Coordinate name=\"list\"/><Coordinate name=\"rot\"/>"
-         "<Coordinate name=\"tx\"/><Coordinate name=\"ty\"/><Coordinate name=\"tz\"/></coordinates>" + frames +
-         "<SpatialTransform>" + transform_axis("rotation1", "tilt", "0 0 1") +
+         "<Coordinate name=\"tx\"/><Coordinate name=\"ty\"/><Coordinate name=\"tz\"/></coordinates>" +
+         frames + "<SpatialTransform>" + transform_axis("rotation1", "tilt", "0 0 1") +
          transform_axis("rotation2", "list", "1 0 0") + transform_axis("rotation3", "rot", "0 1 0") +
          transform_axis("translation1", "tx", "1 0 0") + transform_axis("translation2", "ty", "0 1 0") +
          transform_axis("translation3", "tz", "0 0 1") + "</SpatialTransform></CustomJoint>\n";
@@ -64,7 +67,8 @@ TEST_CASE("files without a free joint are refused, never read by column position
     CHECK_ONE_LINE_ERROR(read_mot(p), p + ":5:", "no free-joint pose", "state_0", "--pose-columns", "--osim");
   }
   SECTION("six muscle excitations") {
-    const auto p = dir.write("exc.sto", sto("time soleus gasmed tibant vasint recfem bfsh", "0 .1 .2 .3 .4 .5 .6\n"));
+    const auto p =
+        dir.write("exc.sto", sto("time soleus gasmed tibant vasint recfem bfsh", "0 .1 .2 .3 .4 .5 .6\n"));
     CHECK_ONE_LINE_ERROR(read_mot(p), p + ":5:", "no free-joint pose", "soleus");
   }
   SECTION("a slider's position, speed and actuator") {
@@ -91,7 +95,8 @@ TEST_CASE("files without a free joint are refused, never read by column position
 
 TEST_CASE("--pose-columns names the pose, with its rotation sequence", "[readers][mot][naming]") {
   ScratchDir dir;
-  const auto p = dir.write("q.sto", sto("time q1 q2 q3 q1_u q2_u q3_u x y z", "0 10 20 30 4 5 6 1 2 3\n", "inDegrees=yes\n"));
+  const auto p = dir.write(
+      "q.sto", sto("time q1 q2 q3 q1_u q2_u q3_u x y z", "0 10 20 30 4 5 6 1 2 3\n", "inDegrees=yes\n"));
   PoseNaming naming;
   naming.columns = {"q1", "q2", "q3", "x", "y", "z"};
   SECTION("default body-fixed x-y-z") {
@@ -158,7 +163,8 @@ TEST_CASE("--osim --joint: a CustomJoint's SpatialTransform order, against a han
     naming.osim_path = dir.write("o.osim", osim4(pelvis_joint(frames, "ground_offset")));
     const auto t = read_mot(p, naming);
     const Eigen::Matrix3d turn = about(Eigen::Vector3d::UnitZ(), kDeg * 90);
-    const Eigen::Matrix3d joint = about(Eigen::Vector3d::UnitZ(), 30 * kDeg) * about(Eigen::Vector3d::UnitX(), -20 * kDeg) *
+    const Eigen::Matrix3d joint = about(Eigen::Vector3d::UnitZ(), 30 * kDeg) *
+                                  about(Eigen::Vector3d::UnitX(), -20 * kDeg) *
                                   about(Eigen::Vector3d::UnitY(), 50 * kDeg);
     CHECK(t.orientation[0].toRotationMatrix().isApprox(turn * joint, 1e-12));
     CHECK(t.position_m[0].isApprox(Eigen::Vector3d(1, 0, 0) + turn * Eigen::Vector3d(0.1, 0.2, 0.3), 1e-12));
@@ -170,7 +176,8 @@ TEST_CASE("--osim --joint: a CustomJoint's SpatialTransform order, against a han
     naming.osim_path = dir.write("f.osim", osim4(joint));
     const auto t = read_mot(p, naming);
     const Eigen::Matrix3d expected = about(Eigen::Vector3d::UnitZ(), 2 * 30 * kDeg + 0.1) *
-                                     about(Eigen::Vector3d::UnitX(), -20 * kDeg) * about(Eigen::Vector3d::UnitY(), 50 * kDeg);
+                                     about(Eigen::Vector3d::UnitX(), -20 * kDeg) *
+                                     about(Eigen::Vector3d::UnitY(), 50 * kDeg);
     CHECK(t.orientation[0].toRotationMatrix().isApprox(expected, 1e-12));
   }
 }
@@ -183,23 +190,27 @@ TEST_CASE("--osim --joint: FreeJoint and OpenSim 3 layouts", "[readers][mot][nam
   const Eigen::Matrix3d xyz = about(Eigen::Vector3d::UnitX(), 0.1) * about(Eigen::Vector3d::UnitY(), 0.2) *
                               about(Eigen::Vector3d::UnitZ(), 0.3);
   SECTION("OpenSim 4 FreeJoint") {
-    naming.osim_path = dir.write("f.osim", osim4(
-        "<FreeJoint name=\"blockToGround\"><socket_parent_frame>/ground</socket_parent_frame>"
-        "<socket_child_frame>block</socket_child_frame><coordinates><Coordinate name=\"c0\"/><Coordinate name=\"c1\"/>"
-        "<Coordinate name=\"c2\"/><Coordinate name=\"c3\"/><Coordinate name=\"c4\"/><Coordinate name=\"c5\"/>"
-        "</coordinates></FreeJoint>"));
+    naming.osim_path = dir.write(
+        "f.osim", osim4("<FreeJoint name=\"blockToGround\"><socket_parent_frame>/ground</socket_parent_frame>"
+                        "<socket_child_frame>block</socket_child_frame><coordinates><Coordinate "
+                        "name=\"c0\"/><Coordinate name=\"c1\"/>"
+                        "<Coordinate name=\"c2\"/><Coordinate name=\"c3\"/><Coordinate "
+                        "name=\"c4\"/><Coordinate name=\"c5\"/>"
+                        "</coordinates></FreeJoint>"));
     const auto t = read_mot(p, naming);
     CHECK(t.orientation[0].toRotationMatrix().isApprox(xyz, 1e-12));
     CHECK(t.position_m[0].isApprox(Eigen::Vector3d(1, 2, 3)));
   }
   SECTION("OpenSim 3 FreeJoint inside its body, with a child location") {
-    naming.osim_path = dir.write("f3.osim",
+    naming.osim_path = dir.write(
+        "f3.osim",
         "<OpenSimDocument Version=\"30000\"><Model><BodySet><objects><Body name=\"block\"><Joint>"
         "<FreeJoint name=\"blockToGround\"><parent_body>ground</parent_body>"
         "<location_in_parent>0 0 0</location_in_parent><orientation_in_parent>0 0 0</orientation_in_parent>"
         "<location>0 0.5 0</location><orientation>0 0 0</orientation>"
         "<CoordinateSet><objects><Coordinate name=\"c0\"/><Coordinate name=\"c1\"/><Coordinate name=\"c2\"/>"
-        "<Coordinate name=\"c3\"/><Coordinate name=\"c4\"/><Coordinate name=\"c5\"/></objects></CoordinateSet>"
+        "<Coordinate name=\"c3\"/><Coordinate name=\"c4\"/><Coordinate "
+        "name=\"c5\"/></objects></CoordinateSet>"
         "</FreeJoint></Joint></Body></objects></BodySet></Model></OpenSimDocument>");
     const auto t = read_mot(p, naming);
     CHECK(t.orientation[0].toRotationMatrix().isApprox(xyz, 1e-12));
@@ -228,8 +239,10 @@ TEST_CASE("--osim --joint refuses what is not a free body", "[readers][mot][nami
   }
   SECTION("a spline") {
     std::string joint = pelvis_joint();
-    const std::string linear = "<LinearFunction name=\"function\"><coefficients> 1 0</coefficients></LinearFunction>";
-    joint.replace(joint.find(linear), linear.size(), "<SimmSpline name=\"function\"><x>0 1</x><y>0 1</y></SimmSpline>");
+    const std::string linear =
+        "<LinearFunction name=\"function\"><coefficients> 1 0</coefficients></LinearFunction>";
+    joint.replace(joint.find(linear), linear.size(),
+                  "<SimmSpline name=\"function\"><x>0 1</x><y>0 1</y></SimmSpline>");
     naming.osim_path = dir.write("s.osim", osim4(joint));
     CHECK_ONE_LINE_ERROR(read_mot(p, naming), naming.osim_path, "SimmSpline");
   }

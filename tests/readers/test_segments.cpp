@@ -9,14 +9,14 @@ using aloft::test::ScratchDir;
 
 TEST_CASE("segments: keep=false rows skipped, spaces trimmed, comments kept", "[readers][segments]") {
   ScratchDir dir;
-  const auto segments = read_segments_csv(dir.write(
-      "s.csv",
-      "segment, start, end, keep, comment\n"
-      "0, 4.8, 6.2, false, Not a trial\n"
-      " 1 , 12.0 , 13.0 , , Intermediate axis rotation\n"
-      "2,18.65,19.84,true,fast, then slow\n"
-      "3,20,21,\" FALSE\",\"quoted, with comma\"\n"
-      "4,25.2,26.25"));  // no keep/comment cells, no final newline
+  const auto segments =
+      read_segments_csv(dir.write("s.csv",
+                                  "segment, start, end, keep, comment\n"
+                                  "0, 4.8, 6.2, false, Not a trial\n"
+                                  " 1 , 12.0 , 13.0 , , Intermediate axis rotation\n"
+                                  "2,18.65,19.84,true,fast, then slow\n"
+                                  "3,20,21,\" FALSE\",\"quoted, with comma\"\n"
+                                  "4,25.2,26.25"));  // no keep/comment cells, no final newline
   REQUIRE(segments.size() == 3);
   CHECK(segments[0].name == "1");
   CHECK(segments[0].start_s == 12.0);
@@ -30,13 +30,12 @@ TEST_CASE("segments: keep=false rows skipped, spaces trimmed, comments kept", "[
 TEST_CASE("segments: a keep=false row is skipped before its cells are read", "[readers][segments]") {
   ScratchDir dir;
   // phyphox users leave start and end blank on rows they do not keep (SPEC §3).
-  const auto segments = read_segments_csv(dir.write(
-      "s.csv",
-      "segment,start,end,keep,comment\n"
-      "0,,,false,warm-up\n"
-      "1,1.0,2.0,true,\n"
-      "x, later , ?, FALSE, dropped, with a comma\n"
-      "2,3.0,4.0\n"));
+  const auto segments = read_segments_csv(dir.write("s.csv",
+                                                    "segment,start,end,keep,comment\n"
+                                                    "0,,,false,warm-up\n"
+                                                    "1,1.0,2.0,true,\n"
+                                                    "x, later , ?, FALSE, dropped, with a comma\n"
+                                                    "2,3.0,4.0\n"));
   REQUIRE(segments.size() == 2);
   CHECK(segments[0].name == "1");
   CHECK(segments[1].name == "2");

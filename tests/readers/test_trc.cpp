@@ -17,11 +17,14 @@ namespace {
 std::string trc(const std::string& units, int frames, const std::string& rows,
                 const std::string& names = "Frame#\tTime\tA\t\t\tB\t\t") {
   return "PathFileType\t4\t(X/Y/Z)\tt.trc\n"
-         "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n"
-         "100.00\t100.00\t" + std::to_string(frames) + "\t2\t" + units + "\t100.00\t1\t" + std::to_string(frames) + "\n" +
-         names + "\n"
+         "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames"
+         "\n"
+         "100.00\t100.00\t" +
+         std::to_string(frames) + "\t2\t" + units + "\t100.00\t1\t" + std::to_string(frames) + "\n" + names +
+         "\n"
          "\t\tX1\tY1\tZ1\tX2\tY2\tZ2\n"
-         "\n" + rows;
+         "\n" +
+         rows;
 }
 
 const std::string kTwoRows =
@@ -46,7 +49,8 @@ TEST_CASE("TRC: units to metres, empty cells occluded, header fields", "[readers
   const auto m = read_trc(dir.write("m.trc", trc("m", 2, kTwoRows)));
   CHECK(m.positions_m[0][1].isApprox(Eigen::Vector3d(4, 5, 6)));
   // Some writers mark an occluded marker with NaN rather than empty cells.
-  const auto nan_row = read_trc(dir.write("n.trc", trc("mm", 2, "1\t0\t1\t2\t3\tNaN\tNaN\tNaN\n2\t0.01\t1\t2\t3\t4\t5\t6\n")));
+  const auto nan_row =
+      read_trc(dir.write("n.trc", trc("mm", 2, "1\t0\t1\t2\t3\tNaN\tNaN\tNaN\n2\t0.01\t1\t2\t3\t4\t5\t6\n")));
   CHECK_FALSE(nan_row.positions_m[0][1].allFinite());
 }
 
@@ -83,15 +87,18 @@ TEST_CASE("bad TRC files: one-line errors", "[readers][trc][bad]") {
     CHECK_ONE_LINE_ERROR(read_trc(p), p + ":4:", "NumMarkers");
   }
   SECTION("truncated in a row") {
-    const auto p = dir.write("t.trc", trc("mm", 2, "1\t0.00\t1.0\t2.0\t3.0\t4.0\t5.0\t6.0\n2\t0.01\t1.5\t2."));
+    const auto p =
+        dir.write("t.trc", trc("mm", 2, "1\t0.00\t1.0\t2.0\t3.0\t4.0\t5.0\t6.0\n2\t0.01\t1.5\t2."));
     CHECK_ONE_LINE_ERROR(read_trc(p), p + ":8:", "truncated");
   }
   SECTION("half a marker") {
-    const auto p = dir.write("h.trc", trc("mm", 2, "1\t0.00\t1.0\t\t3.0\t4.0\t5.0\t6.0\n2\t0.01\t1\t2\t3\t4\t5\t6\n"));
+    const auto p =
+        dir.write("h.trc", trc("mm", 2, "1\t0.00\t1.0\t\t3.0\t4.0\t5.0\t6.0\n2\t0.01\t1\t2\t3\t4\t5\t6\n"));
     CHECK_ONE_LINE_ERROR(read_trc(p), p + ":7:", "marker A", "some of X, Y, Z");
   }
   SECTION("not a number") {
-    const auto p = dir.write("x.trc", trc("mm", 2, "1\t0.00\t1.0\t2.0\t3.0\t4.0\tfive\t6.0\n2\t0.01\t1\t2\t3\t4\t5\t6\n"));
+    const auto p = dir.write(
+        "x.trc", trc("mm", 2, "1\t0.00\t1.0\t2.0\t3.0\t4.0\tfive\t6.0\n2\t0.01\t1\t2\t3\t4\t5\t6\n"));
     CHECK_ONE_LINE_ERROR(read_trc(p), p + ":7:", "B Y", "'five'");
   }
   SECTION("duplicated time") {
@@ -103,7 +110,8 @@ TEST_CASE("bad TRC files: one-line errors", "[readers][trc][bad]") {
     CHECK_ONE_LINE_ERROR(read_trc(p), p + ":8:", "goes back");
   }
   SECTION("infinite coordinate") {
-    const auto p = dir.write("i.trc", trc("mm", 2, "1\t0.00\t1\t2\tinf\t4\t5\t6\n2\t0.01\t1\t2\t3\t4\t5\t6\n"));
+    const auto p =
+        dir.write("i.trc", trc("mm", 2, "1\t0.00\t1\t2\tinf\t4\t5\t6\n2\t0.01\t1\t2\t3\t4\t5\t6\n"));
     CHECK_ONE_LINE_ERROR(read_trc(p), p + ":7:", "A Z", "infinite");
   }
   SECTION("no frames") {
@@ -112,8 +120,7 @@ TEST_CASE("bad TRC files: one-line errors", "[readers][trc][bad]") {
   }
 }
 
-TEST_CASE("TRC header cells separated by repeated tabs are read as OpenSim reads them",
-          "[readers][trc]") {
+TEST_CASE("TRC header cells separated by repeated tabs are read as OpenSim reads them", "[readers][trc]") {
   ScratchDir dir;
   // The Rajagopal pipeline's layout: two tabs between the header cells of lines 2 and 3.
   const std::string doubled =
@@ -121,7 +128,8 @@ TEST_CASE("TRC header cells separated by repeated tabs are read as OpenSim reads
       "DataRate\t\tCameraRate\t\tNumFrames\t\tNumMarkers\t\tUnits\n"
       "100\t\t100\t\t2\t\t2\t\tmm\n"
       "Frame#\tTime\tA\t\t\tB\t\t\n"
-      "\t\tX1\tY1\tZ1\tX2\tY2\tZ2\n\n" + kTwoRows;
+      "\t\tX1\tY1\tZ1\tX2\tY2\tZ2\n\n" +
+      kTwoRows;
   const auto trial = read_trc(dir.write("d.trc", doubled));
   CHECK(trial.rate_hz == 100.0);
   CHECK(trial.units_in_file == "mm");
@@ -129,8 +137,7 @@ TEST_CASE("TRC header cells separated by repeated tabs are read as OpenSim reads
   CHECK(trial.positions_m[0][1].isApprox(Eigen::Vector3d(4e-3, 5e-3, 6e-3)));
 }
 
-TEST_CASE("TRC whose NumFrames disagrees with its rows: the rows present, with a warning",
-          "[readers][trc]") {
+TEST_CASE("TRC whose NumFrames disagrees with its rows: the rows present, with a warning", "[readers][trc]") {
   ScratchDir dir;
   SECTION("NumFrames claims more") {
     aloft::host::WarningCapture warnings;

@@ -55,9 +55,9 @@ TEST_CASE("simulate writes t,qw,qx,qy,qz,wx,wy,wz from 0 to the duration inclusi
   for (const std::string& body : bodies) {
     write_text(dir / "body.json", body);
     fs::remove(dir / "out.csv");
-    const Run run = run_aloft("simulate --body " + (dir / "body.json").string() +
-                              " --w0 3,-4,12 --q0 1,0,0,0 --duration 0.5 --rate 200 --out " +
-                              (dir / "out.csv").string());
+    const Run run =
+        run_aloft("simulate --body " + (dir / "body.json").string() +
+                  " --w0 3,-4,12 --q0 1,0,0,0 --duration 0.5 --rate 200 --out " + (dir / "out.csv").string());
     REQUIRE(run.exit_code == 0);
     std::string header;
     const auto rows = read_csv_rows(dir / "out.csv", &header);
@@ -74,15 +74,13 @@ TEST_CASE("simulate writes t,qw,qx,qy,qz,wx,wy,wz from 0 to the duration inclusi
   }
 }
 
-TEST_CASE("measured moments slightly off the triangle inequality run with a warning",
-          "[simulate]") {
+TEST_CASE("measured moments slightly off the triangle inequality run with a warning", "[simulate]") {
   // The racquet of ../shared/data/real: 0.0207 > 0.01882 + 0.001391 by 1.2 % of the sum.
   const fs::path dir = scratch_dir();
   write_text(dir / "body.json", R"({"inertia":{"principal":[0.01882,0.001391,0.0207]}})");
   fs::remove(dir / "out.csv");
   const Run run = run_aloft("simulate --body " + (dir / "body.json").string() +
-                            " --w0 0.1,10,0.1 --duration 0.1 --rate 100 --out " +
-                            (dir / "out.csv").string());
+                            " --w0 0.1,10,0.1 --duration 0.1 --rate 100 --out " + (dir / "out.csv").string());
   CHECK(run.exit_code == 0);
   CHECK(run.err.find("warning") != std::string::npos);
   CHECK(run.err.find("1.2 %") != std::string::npos);
@@ -102,8 +100,7 @@ TEST_CASE("simulate refuses bad input with one line and writes nothing", "[simul
       {R"({"inertia":{"tensor":[[1,0.5,0],[0,1,0],[0,0,1]]}})", "--w0 1,2,3", "not symmetric"},
       {R"({"inertia":{"principal":[1,1,3]}})", "--w0 1,2,3", "triangle inequality"},
       {R"({"inertia":{"principal":[1,-1,1]}})", "--w0 1,2,3", "positive definite"},
-      {R"({"inertia":{"principal":[1,2,2.5],"shape":{"sphere":{"radius":1}}}})", "--w0 1,2,3",
-       "exactly one"},
+      {R"({"inertia":{"principal":[1,2,2.5],"shape":{"sphere":{"radius":1}}}})", "--w0 1,2,3", "exactly one"},
       {R"({"inertia":{"shape":{"sphere":{"radius":1}}}})", "--w0 1,2,3", "needs \"mass\""},
       {R"({"mass":1,"inertia":{"shape":{"cone":{"radius":1}}}})", "--w0 1,2,3", "unknown shape"},
       {R"({"inertia":{"principal":[1,2,2.5],"axes":[2,0,0,0]}})", "--w0 1,2,3", "unit quaternion"},

@@ -13,9 +13,9 @@ namespace {
 
 double worst_orientation_error(const TrajectoryRequest& request, const aloft_test::SymmetricTop& top) {
   aloft::InertiaTensor<double> inertia;
-  REQUIRE(aloft::InertiaTensor<double>::make_from_principal(
-              Eigen::Vector3d(top.it, top.it, top.i3), Eigen::Quaterniond::Identity(), inertia) ==
-          aloft::Status::ok);
+  REQUIRE(aloft::InertiaTensor<double>::make_from_principal(Eigen::Vector3d(top.it, top.it, top.i3),
+                                                            Eigen::Quaterniond::Identity(),
+                                                            inertia) == aloft::Status::ok);
   const auto samples = aloft::host::simulate_trajectory(inertia, request);
   REQUIRE(samples.size() == 1001);
   double worst = 0.0;
@@ -48,8 +48,7 @@ TEST_CASE("samples far apart are reached in sub-steps of at most 1 ms", "[simula
                                      Eigen::Quaterniond::Identity()};
   aloft::InertiaTensor<double> inertia;
   REQUIRE(aloft::InertiaTensor<double>::make_from_principal(
-              Eigen::Vector3d(0.5, 0.5, 1.0), Eigen::Quaterniond::Identity(), inertia) ==
-          aloft::Status::ok);
+              Eigen::Vector3d(0.5, 0.5, 1.0), Eigen::Quaterniond::Identity(), inertia) == aloft::Status::ok);
   TrajectoryRequest request;
   request.initial.omega_body = top.omega0;
   request.duration_s = 1.0;

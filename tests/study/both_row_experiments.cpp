@@ -110,9 +110,9 @@ std::vector<Variant> both_variants(const InertiaTensor<double>& gf) {
   };
   // Moments first (paired with the moments analysis), then axes from `axes_of`, then an
   // optional change of the tensor's components.
-  const auto both_variant = [&](std::function<Eigen::Matrix3d(SimulationRandom&)> axes_of,
-                                std::function<Eigen::Matrix3d(const Eigen::Matrix3d&,
-                                                              const Eigen::Vector3d&)> tensor_of) -> Draw {
+  const auto both_variant =
+      [&](std::function<Eigen::Matrix3d(SimulationRandom&)> axes_of,
+          std::function<Eigen::Matrix3d(const Eigen::Matrix3d&, const Eigen::Vector3d&)> tensor_of) -> Draw {
     return [=](SimulationRandom& r) {
       const Eigen::Vector3d m = moment_factors(r, 10.0);
       return from_tensor(tensor_of(axes_of(r), m));

@@ -72,8 +72,7 @@ RmsDaByFrame odeint_rms_da_deg(const StudyFlight& f, const TorqueFreeBody& body,
   double body_sq = 0.0, world_sq = 0.0;
   const auto add = [&](const Eigen::Quaterniond& from, const Eigen::Quaterniond& to, std::size_t j) {
     const double b = aloft::deviation_angle(rotation_axis_between(from, to), f.measured_omega_body[j]);
-    const double w =
-        aloft::deviation_angle(world_rotation_axis_between(from, to), f.measured_omega_world[j]);
+    const double w = aloft::deviation_angle(world_rotation_axis_between(from, to), f.measured_omega_world[j]);
     body_sq += b * b;
     world_sq += w * w;
   };

@@ -18,9 +18,9 @@ namespace {
 
 aloft::InertiaTensor<double> compound_pendulum() {
   aloft::InertiaTensor<double> cp;
-  REQUIRE(aloft::InertiaTensor<double>::make_from_principal(
-              Eigen::Vector3d(203.3e-4, 155.0e-4, 192.5e-4), Eigen::Quaterniond::Identity(), cp) ==
-          aloft::Status::ok);
+  REQUIRE(aloft::InertiaTensor<double>::make_from_principal(Eigen::Vector3d(203.3e-4, 155.0e-4, 192.5e-4),
+                                                            Eigen::Quaterniond::Identity(),
+                                                            cp) == aloft::Status::ok);
   return cp;
 }
 
@@ -37,8 +37,8 @@ TEST_CASE("without marker noise the GF model matches the throw from every part o
   REQUIRE(trial.flight.samples() == 873);
   REQUIRE(trial.flight.measured_omega_body.size() == 872);
   const aloft::InertiaTensor<double> cp = compound_pendulum();
-  for (std::size_t k : {std::size_t(0), std::size_t(1), std::size_t(436), std::size_t(871),
-                        std::size_t(872)}) {
+  for (std::size_t k :
+       {std::size_t(0), std::size_t(1), std::size_t(436), std::size_t(871), std::size_t(872)}) {
     INFO("seeded at sample " << k);
     // Only resampling error remains: a few thousandths of a degree, in either frame.
     const RmsDaByFrame gf = full_flight_rms_da_deg(trial.flight, trial.body.inertia, k);
@@ -56,7 +56,7 @@ TEST_CASE("without marker noise the GF model matches the throw from every part o
 // consecutive orientations (aloft::omega_body_from_orientations), rotated into world axes
 // by the interval's first orientation for the world frame, DA, RMS.
 RmsDaByFrame reference_rms_da_deg(const StudyFlight& f, const aloft::InertiaTensor<double>& inertia,
-                            std::size_t k) {
+                                  std::size_t k) {
   const aloft::Rk4Integrator<double> integrator(inertia);
   const std::size_t n = f.samples();
   std::vector<Eigen::Quaterniond> q(n);
@@ -79,9 +79,8 @@ RmsDaByFrame reference_rms_da_deg(const StudyFlight& f, const aloft::InertiaTens
     REQUIRE(aloft::omega_body_from_orientations(q[j], q[j + 1], f.time_s[j + 1] - f.time_s[j], w) ==
             aloft::Status::ok);
     const double body = aloft::deviation_angle(w, f.measured_omega_body[j]);
-    const double world =
-        aloft::deviation_angle(Eigen::Vector3d(q[j] * w),
-                               Eigen::Vector3d(f.orientation[j] * f.measured_omega_body[j]));
+    const double world = aloft::deviation_angle(Eigen::Vector3d(q[j] * w),
+                                                Eigen::Vector3d(f.orientation[j] * f.measured_omega_body[j]));
     body_sq += body * body;
     world_sq += world * world;
   }

@@ -31,8 +31,8 @@ TEST_CASE("moment draws are uniform within the bound, each moment on its own") {
     SimulationRandom random(7, 0, static_cast<std::uint64_t>(i));
     const auto drawn = draw_perturbed_inertia(gf, {PerturbationFamily::moments, 10.0}, random);
     // The tensor stays diagonal: the axes are untouched.
-    CHECK(std::abs(drawn.tensor()(0, 1)) + std::abs(drawn.tensor()(0, 2)) +
-              std::abs(drawn.tensor()(1, 2)) < 1e-15);
+    CHECK(std::abs(drawn.tensor()(0, 1)) + std::abs(drawn.tensor()(0, 2)) + std::abs(drawn.tensor()(1, 2)) <
+          1e-15);
     const double change_z = drawn.tensor()(2, 2) / nominal(2) - 1.0;
     CHECK(std::abs(change_z) <= 0.1 + 1e-12);
     lowest = std::min(lowest, change_z);
@@ -105,8 +105,8 @@ TEST_CASE("cardan axes draws: three independent angles, each uniform within the 
   const double to_deg = 180.0 / M_PI;
   for (int i = 0; i < n; ++i) {
     SimulationRandom random(13, 0, static_cast<std::uint64_t>(i));
-    const auto drawn = draw_perturbed_inertia(
-        gf, {PerturbationFamily::axes, 10.0, AxesSampler::cardan}, random);
+    const auto drawn =
+        draw_perturbed_inertia(gf, {PerturbationFamily::axes, 10.0, AxesSampler::cardan}, random);
     CHECK((drawn.principal_moments() - gf.principal_moments()).norm() < 1e-15);
     // Back to the three angles of R = Rx(a) Ry(b) Rz(c).
     const Eigen::Matrix3d r = drawn.principal_axes().toRotationMatrix();

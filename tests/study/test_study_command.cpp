@@ -30,8 +30,8 @@ void check_summary(const json& s) {
 
 TEST_CASE("the default study writes the files of SPEC §5, and the same seed gives the same numbers") {
   ScratchDir scratch;
-  const auto r = run_aloft(scratch, "study --mc-samples 120 --seed 5 --threads 2 --out '" +
-                                        scratch.path("a") + "'");
+  const auto r =
+      run_aloft(scratch, "study --mc-samples 120 --seed 5 --threads 2 --out '" + scratch.path("a") + "'");
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   CHECK(r.out.find("paper") != std::string::npos);  // the side-by-side table
@@ -102,8 +102,8 @@ TEST_CASE("the default study writes the files of SPEC §5, and the same seed giv
   CHECK(read_file(scratch.path("a/figure.svg")).find("<svg") != std::string::npos);
 
   // Same seed, other thread count: the same simulations, to the last digit.
-  const auto again = run_aloft(scratch, "study --mc-samples 120 --seed 5 --threads 1 --out '" +
-                                            scratch.path("b") + "'");
+  const auto again =
+      run_aloft(scratch, "study --mc-samples 120 --seed 5 --threads 1 --out '" + scratch.path("b") + "'");
   REQUIRE(again.exit_code == 0);
   CHECK(read_file(scratch.path("b/rms_da.csv")) == rms);
   const json other = json::parse(read_file(scratch.path("b/results.json")));
@@ -111,8 +111,8 @@ TEST_CASE("the default study writes the files of SPEC §5, and the same seed giv
   CHECK(other["monte_carlo"] == results["monte_carlo"]);
 
   // Another seed draws other Monte Carlo tensors (the trial and the models stay).
-  const auto reseeded = run_aloft(scratch, "study --mc-samples 120 --seed 6 --threads 2 --out '" +
-                                               scratch.path("c") + "'");
+  const auto reseeded =
+      run_aloft(scratch, "study --mc-samples 120 --seed 6 --threads 2 --out '" + scratch.path("c") + "'");
   REQUIRE(reseeded.exit_code == 0);
   const json third = json::parse(read_file(scratch.path("c/results.json")));
   CHECK(third["models"] == results["models"]);
@@ -159,17 +159,19 @@ TEST_CASE("the throw and the axes sampler are options, recorded in results.json"
   CHECK(results.at("axes_sampler") == "cardan");
   CHECK(results.at("models").at("GF").at("simulations").get<int>() == 501);
   const json& w = trial.at("initial_omega_body_rad_s");
-  const double rate = std::sqrt(w[0].get<double>() * w[0].get<double>() +
-                                w[1].get<double>() * w[1].get<double>() +
-                                w[2].get<double>() * w[2].get<double>());
+  const double rate =
+      std::sqrt(w[0].get<double>() * w[0].get<double>() + w[1].get<double>() * w[1].get<double>() +
+                w[2].get<double>() * w[2].get<double>());
   CHECK(rate == Approx(2.0 * M_PI));
   CHECK(w[2].get<double>() == Approx(2.0 * M_PI * std::cos(80.0 * M_PI / 180.0)));
 }
 
 TEST_CASE("the paper-body throw gives GF and CP rows near the paper's, as calibrated") {
   ScratchDir scratch;
-  const auto r = run_aloft(scratch, "study --throw paper-body --frame body --mc-samples 10 "
-                                    "--threads 2 --out '" + scratch.path("o") + "'");
+  const auto r = run_aloft(scratch,
+                           "study --throw paper-body --frame body --mc-samples 10 "
+                           "--threads 2 --out '" +
+                               scratch.path("o") + "'");
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const json results = json::parse(read_file(scratch.path("o/results.json")));
@@ -201,14 +203,15 @@ TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing 
     CHECK(r.err.find("imu.csv") != std::string::npos);
   }
   SECTION("a body file that does not exist") {
-    const auto r = run_aloft(scratch, "study --body '" + scratch.path("none.json") +
-                                          "' --poses x.csv --out '" + out + "'");
+    const auto r = run_aloft(
+        scratch, "study --body '" + scratch.path("none.json") + "' --poses x.csv --out '" + out + "'");
     CHECK(r.exit_code != 0);
     CHECK(count_lines(r.err) == 1);
     CHECK(r.err.find("none.json") != std::string::npos);
   }
   SECTION("a flight too short to study") {
-    const std::string imu = scratch.write("imu.csv", "t,gx,gy,gz\n0,1,2,3\n0.01,1,2,3\n0.02,1,2,3\n0.5,1,2,3\n");
+    const std::string imu =
+        scratch.write("imu.csv", "t,gx,gy,gz\n0,1,2,3\n0.01,1,2,3\n0.02,1,2,3\n0.5,1,2,3\n");
     const std::string segments = scratch.write("segments.csv", "segment,start,end\n1,0.1,0.4\n");
     const auto r = run_aloft(scratch, "study --body '" + body + "' --imu '" + imu + "' --segments '" +
                                           segments + "' --out '" + out + "'");
@@ -239,8 +242,8 @@ TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing 
   }
   SECTION("a throw option with a recording") {
     const std::string imu = scratch.write("imu.csv", "t,gx,gy,gz\n0,1,2,3\n0.01,1,2,3\n0.02,1,2,3\n");
-    const auto r = run_aloft(scratch, "study --body '" + body + "' --imu '" + imu +
-                                          "' --spin-rate 2 --out '" + out + "'");
+    const auto r = run_aloft(
+        scratch, "study --body '" + body + "' --imu '" + imu + "' --spin-rate 2 --out '" + out + "'");
     CHECK(r.exit_code == 2);
     CHECK(count_lines(r.err) == 1);
   }
@@ -252,8 +255,8 @@ TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing 
   }
   SECTION("the world frame of an IMU recording, which has no orientation") {
     const std::string imu = scratch.write("imu.csv", "t,gx,gy,gz\n0,1,2,3\n0.01,1,2,3\n0.02,1,2,3\n");
-    const auto r = run_aloft(scratch, "study --body '" + body + "' --imu '" + imu +
-                                          "' --frame world --out '" + out + "'");
+    const auto r = run_aloft(
+        scratch, "study --body '" + body + "' --imu '" + imu + "' --frame world --out '" + out + "'");
     CHECK(r.exit_code == 2);
     CHECK(count_lines(r.err) == 1);
   }
@@ -291,10 +294,9 @@ TEST_CASE("the study runs on every racquet flight of both sessions") {
     INFO(s.session);
     ScratchDir scratch;
     const std::string dir = racquet + "/" + s.session;
-    const auto r = run_aloft(scratch, "study --body '" + body + "' --imu '" + dir +
-                                          "/gyro.csv' --segments '" + dir +
-                                          "/segments.csv' --mc-samples 100 --out '" +
-                                          scratch.path("out") + "'");
+    const auto r =
+        run_aloft(scratch, "study --body '" + body + "' --imu '" + dir + "/gyro.csv' --segments '" + dir +
+                               "/segments.csv' --mc-samples 100 --out '" + scratch.path("out") + "'");
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     const json results = json::parse(read_file(scratch.path("out/results.json")));

@@ -15,8 +15,7 @@ namespace {
 
 double median_of(const Analysis& a) { return summarise(a.values(DaFrame::body)).median; }
 
-const Analysis& find(const std::vector<Analysis>& analyses, PerturbationFamily family,
-                     double bound) {
+const Analysis& find(const std::vector<Analysis>& analyses, PerturbationFamily family, double bound) {
   for (const Analysis& a : analyses) {
     if (a.monte_carlo && a.perturbation.family == family && a.perturbation.bound == bound) return a;
   }
@@ -35,8 +34,7 @@ TEST_CASE("the built-in study: CP far above GF, medians grow with the bound, bot
               Eigen::Vector3d(paper::kCompoundPendulumKgM2[0], paper::kCompoundPendulumKgM2[1],
                               paper::kCompoundPendulumKgM2[2]),
               Eigen::Quaterniond::Identity(), cp) == aloft::Status::ok);
-  std::vector<Analysis> analyses = {model_analysis("GF", trial.body.inertia),
-                                    model_analysis("CP", cp)};
+  std::vector<Analysis> analyses = {model_analysis("GF", trial.body.inertia), model_analysis("CP", cp)};
   for (Analysis& a : paper_monte_carlo_analyses(paper::kMonteCarloSimulations)) analyses.push_back(a);
   RunSettings settings;
   settings.seed = seed;

@@ -24,8 +24,8 @@ TEST_CASE("the resampler reproduces a constant body rate exactly, on uneven knot
 }
 
 TEST_CASE("the right Jacobian and its inverse are inverses, also near zero") {
-  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0.3, -1.2, 0.7), Eigen::Vector3d(1e-5, 2e-5, 0.0),
-                                  Eigen::Vector3d(2.5, 0.1, 0.0)}) {
+  for (const Eigen::Vector3d& p :
+       {Eigen::Vector3d(0.3, -1.2, 0.7), Eigen::Vector3d(1e-5, 2e-5, 0.0), Eigen::Vector3d(2.5, 0.1, 0.0)}) {
     const Eigen::Matrix3d product = so3_right_jacobian(p) * so3_right_jacobian_inverse(p);
     CHECK((product - Eigen::Matrix3d::Identity()).norm() < 1e-12);
   }
@@ -41,8 +41,7 @@ TEST_CASE("250 Hz poses of the torque-free throw resampled to 1 kHz follow the t
   SyntheticThrowSettings settings;
   settings.marker_noise_m = 0.0;
   const SyntheticThrow truth = make_synthetic_throw(settings);
-  const ResampledPoses r =
-      resample_poses(truth.true_poses.time_s, truth.true_poses.orientation, 1000.0);
+  const ResampledPoses r = resample_poses(truth.true_poses.time_s, truth.true_poses.orientation, 1000.0);
   REQUIRE(r.time_s.size() == 873);
   CHECK(r.time_s.back() == Approx(0.872));
   // The truth at 1 kHz, integrated finely.

@@ -35,8 +35,8 @@ aloft::port::ReportWriter out;
 
 }  // namespace
 
-Registration::Registration(TestFunction function, const char* name, const char* tags,
-                           const char* file, int line) {
+Registration::Registration(TestFunction function, const char* name, const char* tags, const char* file,
+                           int line) {
   if (test_case_count == ALOFT_MAX_TEST_CASES) {
     registry_overflowed = true;
     return;
@@ -57,8 +57,10 @@ void abandon_test_case() { std::longjmp(test_case_exit, 1); }
 
 int run_all_test_cases() {
   if (registry_overflowed) {
-    out.text("more than ").integer(ALOFT_MAX_TEST_CASES)
-        .text(" test cases: raise ALOFT_MAX_TEST_CASES").line();
+    out.text("more than ")
+        .integer(ALOFT_MAX_TEST_CASES)
+        .text(" test cases: raise ALOFT_MAX_TEST_CASES")
+        .line();
     return 2;
   }
   if (test_case_count == 0) {
@@ -78,14 +80,27 @@ int run_all_test_cases() {
     const bool passed = checks_failed == failures_before;
     if (!passed) ++failed_cases;
     const std::uint64_t ms = elapsed * 1000u / aloft::port::ticks_per_second();
-    out.text(passed ? "[  OK  ] " : "[FAILED] ").text(test.name).text(" ").text(test.tags)
-        .text(" (").integer(static_cast<std::int64_t>(checks_evaluated - checks_before))
-        .text(" checks, ").integer(static_cast<std::int64_t>(ms)).text(" ms)").line();
+    out.text(passed ? "[  OK  ] " : "[FAILED] ")
+        .text(test.name)
+        .text(" ")
+        .text(test.tags)
+        .text(" (")
+        .integer(static_cast<std::int64_t>(checks_evaluated - checks_before))
+        .text(" checks, ")
+        .integer(static_cast<std::int64_t>(ms))
+        .text(" ms)")
+        .line();
   }
   out.text(failed_cases == 0 ? "PASSED: " : "FAILED: ")
-      .integer(test_case_count - failed_cases).text(" of ").integer(test_case_count)
-      .text(" test cases passed, ").integer(checks_evaluated).text(" checks evaluated, ")
-      .integer(checks_failed).text(" failed").line();
+      .integer(test_case_count - failed_cases)
+      .text(" of ")
+      .integer(test_case_count)
+      .text(" test cases passed, ")
+      .integer(checks_evaluated)
+      .text(" checks evaluated, ")
+      .integer(checks_failed)
+      .text(" failed")
+      .line();
   return failed_cases == 0 ? 0 : 1;
 }
 

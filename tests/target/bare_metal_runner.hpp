@@ -15,8 +15,7 @@ namespace aloft_test_runner {
 using TestFunction = void (*)();
 
 struct Registration {
-  Registration(TestFunction function, const char* name, const char* tags, const char* file,
-               int line);
+  Registration(TestFunction function, const char* name, const char* tags, const char* file, int line);
 };
 
 // Counts one evaluated check; records a failure when it did not hold. Returns passed.
@@ -32,22 +31,22 @@ int run_all_test_cases();
 
 #define ALOFT_RUNNER_CONCAT_(a, b) a##b
 #define ALOFT_RUNNER_CONCAT(a, b) ALOFT_RUNNER_CONCAT_(a, b)
-#define ALOFT_RUNNER_TEST_CASE_(function, name, tags)                                   \
-  static void function();                                                               \
-  static const ::aloft_test_runner::Registration ALOFT_RUNNER_CONCAT(function, _entry){ \
-      function, name, tags, __FILE__, __LINE__};                                        \
+#define ALOFT_RUNNER_TEST_CASE_(function, name, tags)                                                        \
+  static void function();                                                                                    \
+  static const ::aloft_test_runner::Registration ALOFT_RUNNER_CONCAT(function, _entry){function, name, tags, \
+                                                                                       __FILE__, __LINE__};  \
   static void function()
 
 #define ALOFT_TEST_CASE(name, tags) \
   ALOFT_RUNNER_TEST_CASE_(ALOFT_RUNNER_CONCAT(aloft_test_case_, __COUNTER__), name, tags)
 
 #define ALOFT_CHECK(...) \
-  static_cast<void>(::aloft_test_runner::check(static_cast<bool>(__VA_ARGS__), __FILE__, __LINE__, #__VA_ARGS__))
+  static_cast<void>(     \
+      ::aloft_test_runner::check(static_cast<bool>(__VA_ARGS__), __FILE__, __LINE__, #__VA_ARGS__))
 
-#define ALOFT_REQUIRE(...)                                                                    \
-  do {                                                                                        \
-    if (!::aloft_test_runner::check(static_cast<bool>(__VA_ARGS__), __FILE__, __LINE__,       \
-                                    #__VA_ARGS__)) {                                          \
-      ::aloft_test_runner::abandon_test_case();                                               \
-    }                                                                                         \
+#define ALOFT_REQUIRE(...)                                                                               \
+  do {                                                                                                   \
+    if (!::aloft_test_runner::check(static_cast<bool>(__VA_ARGS__), __FILE__, __LINE__, #__VA_ARGS__)) { \
+      ::aloft_test_runner::abandon_test_case();                                                          \
+    }                                                                                                    \
   } while (0)

@@ -10,13 +10,12 @@ namespace aloft {
 
 // Body axes: log(q_k^-1 q_{k+1}) / dt, what a body-mounted gyro reports (SPEC §1).
 template <typename Scalar>
-inline Status omega_body_from_orientations(const Quat<Scalar>& q_k, const Quat<Scalar>& q_next,
-                                           Scalar dt, Vec3<Scalar>& omega_out) {
+inline Status omega_body_from_orientations(const Quat<Scalar>& q_k, const Quat<Scalar>& q_next, Scalar dt,
+                                           Vec3<Scalar>& omega_out) {
   Status s = validate_step(dt);
   if (s != Status::ok) return s;
   if (!is_unit(q_k) || !is_unit(q_next)) {
-    return (all_finite(q_k) && all_finite(q_next)) ? Status::non_unit_quaternion
-                                                   : Status::non_finite_input;
+    return (all_finite(q_k) && all_finite(q_next)) ? Status::non_unit_quaternion : Status::non_finite_input;
   }
   omega_out = quat_log(Quat<Scalar>(q_k.conjugate() * q_next)) / dt;
   return Status::ok;
@@ -24,13 +23,12 @@ inline Status omega_body_from_orientations(const Quat<Scalar>& q_k, const Quat<S
 
 // World axes: log(q_{k+1} q_k^-1) / dt.
 template <typename Scalar>
-inline Status omega_world_from_orientations(const Quat<Scalar>& q_k, const Quat<Scalar>& q_next,
-                                            Scalar dt, Vec3<Scalar>& omega_out) {
+inline Status omega_world_from_orientations(const Quat<Scalar>& q_k, const Quat<Scalar>& q_next, Scalar dt,
+                                            Vec3<Scalar>& omega_out) {
   Status s = validate_step(dt);
   if (s != Status::ok) return s;
   if (!is_unit(q_k) || !is_unit(q_next)) {
-    return (all_finite(q_k) && all_finite(q_next)) ? Status::non_unit_quaternion
-                                                   : Status::non_finite_input;
+    return (all_finite(q_k) && all_finite(q_next)) ? Status::non_unit_quaternion : Status::non_finite_input;
   }
   omega_out = quat_log(Quat<Scalar>(q_next * q_k.conjugate())) / dt;
   return Status::ok;

@@ -29,12 +29,12 @@ namespace aloft {
 // A flight in plain arrays (n samples).
 template <typename Scalar>
 struct FlightArrays {
-  std::size_t samples = 0;                     // n >= 2
-  const Scalar* time_s = nullptr;              // n, increasing
-  const Scalar* orientation_wxyz = nullptr;    // 4n (body to world); null: a rate flight
-  const Scalar* state_omega_body = nullptr;    // 3n: the rate a simulation seeded at k starts with
-  const Scalar* measured_body = nullptr;       // 3(n-1) for a pose flight, 3n for a rate flight
-  const Scalar* measured_world = nullptr;      // 3(n-1) for a pose flight, or null
+  std::size_t samples = 0;                   // n >= 2
+  const Scalar* time_s = nullptr;            // n, increasing
+  const Scalar* orientation_wxyz = nullptr;  // 4n (body to world); null: a rate flight
+  const Scalar* state_omega_body = nullptr;  // 3n: the rate a simulation seeded at k starts with
+  const Scalar* measured_body = nullptr;     // 3(n-1) for a pose flight, 3n for a rate flight
+  const Scalar* measured_world = nullptr;    // 3(n-1) for a pose flight, or null
 };
 
 // One simulation: its seed sample and its tensor in principal form.
@@ -48,8 +48,7 @@ struct FlightSimulation {
 
 // The simulation of `inertia` seeded at sample k.
 template <typename Scalar>
-inline FlightSimulation<Scalar> flight_simulation(const InertiaTensor<Scalar>& inertia,
-                                                  std::size_t k) {
+inline FlightSimulation<Scalar> flight_simulation(const InertiaTensor<Scalar>& inertia, std::size_t k) {
   FlightSimulation<Scalar> sim;
   sim.seed_sample = k;
   const Quat<Scalar>& a = inertia.principal_axes();

@@ -17,8 +17,7 @@ namespace aloft {
 // in double, 2e-7 in float), the same the SIMD lanes and the firmware use.
 template <typename Scalar>
 inline Scalar deviation_angle(const Vec3<Scalar>& a, const Vec3<Scalar>& b) {
-  return lane_deviation_angle(LaneVec3<Scalar>{a.x(), a.y(), a.z()},
-                              LaneVec3<Scalar>{b.x(), b.y(), b.z()});
+  return lane_deviation_angle(LaneVec3<Scalar>{a.x(), a.y(), a.z()}, LaneVec3<Scalar>{b.x(), b.y(), b.z()});
 }
 
 // |simulated - measured| / |measured|; infinite when measured is zero.

@@ -22,8 +22,8 @@ inline Vec3<Scalar> angular_acceleration(const InertiaTensor<Scalar>& inertia,
 // rotates back; loops that take many steps keep the rate in principal axes instead
 // (aloft/principal_dynamics.hpp, as the onboard check does).
 template <typename Scalar>
-inline Vec3<Scalar> body_rate_rk4_step(const InertiaTensor<Scalar>& inertia,
-                                       const Vec3<Scalar>& omega_body, Scalar h) {
+inline Vec3<Scalar> body_rate_rk4_step(const InertiaTensor<Scalar>& inertia, const Vec3<Scalar>& omega_body,
+                                       Scalar h) {
   const PrincipalFrame<Scalar> frame(inertia);
   const Vec3<Scalar> w = frame.rate_to_principal(omega_body);
   return frame.rate_to_body(

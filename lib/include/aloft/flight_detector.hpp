@@ -23,8 +23,7 @@ struct FlightDetectorSettings {
 template <typename Scalar>
 class FlightDetector {
  public:
-  explicit FlightDetector(const FlightDetectorSettings<Scalar>& settings = {})
-      : settings_(settings) {}
+  explicit FlightDetector(const FlightDetectorSettings<Scalar>& settings = {}) : settings_(settings) {}
 
   // Feeds one accelerometer sample (m/s², sensor axes); returns the phase after it.
   // A non-finite sample is ignored (the phase stays as it was).
@@ -41,8 +40,7 @@ class FlightDetector {
       case FlightPhase::airborne:
         if (a2 > land * land) phase_ = FlightPhase::landed;
         break;
-      case FlightPhase::landed:
-        break;
+      case FlightPhase::landed: break;
     }
     return phase_;
   }

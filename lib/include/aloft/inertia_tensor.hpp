@@ -59,8 +59,7 @@ class InertiaTensor {
 
   // From principal moments (any order) and the rotation mapping the principal frame
   // into the body frame (identity: principal axes are body axes).
-  static Status make_from_principal(const Vec3<Scalar>& moments, const Quat<Scalar>& axes,
-                                    InertiaTensor& out,
+  static Status make_from_principal(const Vec3<Scalar>& moments, const Quat<Scalar>& axes, InertiaTensor& out,
                                     Scalar triangle_slack = relative_tolerance()) {
     if (!all_finite(moments) || !all_finite(axes)) return Status::non_finite_input;
     if (!is_unit(axes)) return Status::non_unit_quaternion;
@@ -82,8 +81,7 @@ class InertiaTensor {
     const Scalar r2 = radius * radius;
     const Scalar transverse = mass * (Scalar(3) * r2 + height * height) / Scalar(12);
     const Scalar axial = mass * r2 / Scalar(2);
-    return make_from_principal(Vec3<Scalar>(transverse, transverse, axial),
-                               Quat<Scalar>::Identity(), out);
+    return make_from_principal(Vec3<Scalar>(transverse, transverse, axial), Quat<Scalar>::Identity(), out);
   }
 
   // Solid homogeneous box with edge lengths x, y, z along the body axes.
@@ -92,8 +90,7 @@ class InertiaTensor {
       return Status::invalid_dimension;
     }
     const Scalar k = mass / Scalar(12);
-    return make_from_principal(Vec3<Scalar>(k * (y * y + z * z), k * (x * x + z * z),
-                                            k * (x * x + y * y)),
+    return make_from_principal(Vec3<Scalar>(k * (y * y + z * z), k * (x * x + z * z), k * (x * x + y * y)),
                                Quat<Scalar>::Identity(), out);
   }
 
@@ -108,9 +105,7 @@ class InertiaTensor {
   Scalar kinetic_energy(const Vec3<Scalar>& omega_body) const {
     return Scalar(0.5) * omega_body.dot(tensor_ * omega_body);
   }
-  Vec3<Scalar> angular_momentum(const Vec3<Scalar>& omega_body) const {
-    return tensor_ * omega_body;
-  }
+  Vec3<Scalar> angular_momentum(const Vec3<Scalar>& omega_body) const { return tensor_ * omega_body; }
 
  private:
   static bool positive(Scalar v) { return std::isfinite(v) && v > Scalar(0); }
@@ -126,8 +121,7 @@ class InertiaTensor {
   }
 
   // Stores moments ascending with their axes (columns of r), keeping the frame right-handed.
-  static void sort_principal(const Vec3<Scalar>& moments, const Mat3<Scalar>& r,
-                             InertiaTensor& out) {
+  static void sort_principal(const Vec3<Scalar>& moments, const Mat3<Scalar>& r, InertiaTensor& out) {
     int order[3] = {0, 1, 2};
     for (int i = 0; i < 3; ++i) {
       for (int j = i + 1; j < 3; ++j) {

@@ -25,17 +25,16 @@ inline T atan_reduced(const T& u, double /*precision tag*/) {
   const T z = u * u;
   const T w = z * z;
   // Even and odd halves of the series, evaluated apart to halve the dependency chain.
-  const T s1 = z * (T(3.33333333333329318027e-01) +
-                    w * (T(1.42857142725034663711e-01) +
-                         w * (T(9.09088713343650656196e-02) +
-                              w * (T(6.66107313738753120669e-02) +
-                                   w * (T(4.97687799461593236017e-02) +
-                                        w * T(1.62858201153657823623e-02))))));
+  const T s1 =
+      z * (T(3.33333333333329318027e-01) +
+           w * (T(1.42857142725034663711e-01) +
+                w * (T(9.09088713343650656196e-02) +
+                     w * (T(6.66107313738753120669e-02) +
+                          w * (T(4.97687799461593236017e-02) + w * T(1.62858201153657823623e-02))))));
   const T s2 = w * (T(-1.99999999998764832476e-01) +
                     w * (T(-1.11111104054623557880e-01) +
                          w * (T(-7.69187620504482999495e-02) +
-                              w * (T(-5.83357013379057348645e-02) +
-                                   w * T(-3.65315727442169155270e-02)))));
+                              w * (T(-5.83357013379057348645e-02) + w * T(-3.65315727442169155270e-02)))));
   return u - u * (s1 + s2);
 }
 
@@ -63,8 +62,7 @@ inline T nonnegative_atan2(const T& y, const T& x) {
   const auto upper = lo > T(Scalar(0.41421356237309504880)) * hi;
   const T denominator = select(upper, lo + hi, hi);
   // (0, 0) gives 0, as std::atan2 does, rather than 0/0.
-  const T u = select(upper, lo - hi, lo) /
-              select(denominator > T(Scalar(0)), denominator, T(Scalar(1)));
+  const T u = select(upper, lo - hi, lo) / select(denominator > T(Scalar(0)), denominator, T(Scalar(1)));
   T a = detail::atan_reduced(u, Scalar(0));
   a = select(upper, a + T(Scalar(0.78539816339744830962)), a);
   a = select(steep, T(Scalar(1.57079632679489661923)) - a, a);

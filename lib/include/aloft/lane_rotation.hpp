@@ -16,8 +16,7 @@ namespace aloft {
 
 // vec(a^-1 b) on the short side, times direction: the rate axis in a's axes.
 template <typename T>
-inline LaneVec3<T> lane_body_rotation_axis(const LaneQuat<T>& a, const LaneQuat<T>& b,
-                                           const T& direction) {
+inline LaneVec3<T> lane_body_rotation_axis(const LaneQuat<T>& a, const LaneQuat<T>& b, const T& direction) {
   const T w = a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
   const T s = select(w < T(LaneScalar<T>(0)), -direction, direction);
   return {s * (a.w * b.x - b.w * a.x - (a.y * b.z - a.z * b.y)),
@@ -27,8 +26,7 @@ inline LaneVec3<T> lane_body_rotation_axis(const LaneQuat<T>& a, const LaneQuat<
 
 // vec(b a^-1) on the short side, times direction: the rate axis in world axes.
 template <typename T>
-inline LaneVec3<T> lane_world_rotation_axis(const LaneQuat<T>& a, const LaneQuat<T>& b,
-                                            const T& direction) {
+inline LaneVec3<T> lane_world_rotation_axis(const LaneQuat<T>& a, const LaneQuat<T>& b, const T& direction) {
   const T w = a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
   const T s = select(w < T(LaneScalar<T>(0)), -direction, direction);
   return {s * (a.w * b.x - b.w * a.x + (a.y * b.z - a.z * b.y)),

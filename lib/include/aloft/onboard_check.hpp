@@ -36,7 +36,7 @@ struct OnboardCheckSettings {
 // What one seeded simulation has accumulated so far.
 template <typename Scalar>
 struct SeedReport {
-  std::uint32_t seed_number = 0;   // 0 for the first seed of the flight, then 1, 2, ...
+  std::uint32_t seed_number = 0;       // 0 for the first seed of the flight, then 1, 2, ...
   std::uint32_t seeded_at_sample = 0;  // airborne sample index it was seeded from
   bool live = false;
   DeviationStats<Scalar> stats;

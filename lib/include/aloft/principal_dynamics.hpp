@@ -39,8 +39,7 @@ inline EulerCoefficients<T> euler_coefficients(const T& i1, const T& i2, const T
 
 // dw/dt in principal axes.
 template <typename T>
-inline LaneVec3<T> principal_angular_acceleration(const EulerCoefficients<T>& c,
-                                                  const LaneVec3<T>& w) {
+inline LaneVec3<T> principal_angular_acceleration(const EulerCoefficients<T>& c, const LaneVec3<T>& w) {
   return {c.c1 * (w.y * w.z), c.c2 * (w.z * w.x), c.c3 * (w.x * w.y)};
 }
 
@@ -85,8 +84,7 @@ inline LaneQuat<T> rk4_sum(const LaneQuat<T>& k1, const LaneQuat<T>& k2, const L
 // One classical RK4 step of the body rate alone, principal axes (h may be negative, and
 // differ from lane to lane).
 template <typename T>
-inline LaneVec3<T> principal_rate_rk4_step(const EulerCoefficients<T>& c, const LaneVec3<T>& w0,
-                                           const T& h) {
+inline LaneVec3<T> principal_rate_rk4_step(const EulerCoefficients<T>& c, const LaneVec3<T>& w0, const T& h) {
   const T half = T(LaneScalar<T>(0.5)) * h;
   const LaneVec3<T> k1 = principal_angular_acceleration(c, w0);
   const LaneVec3<T> k2 = principal_angular_acceleration(c, detail::plus_scaled(w0, half, k1));
@@ -101,8 +99,8 @@ inline LaneVec3<T> principal_rate_rk4_step(const EulerCoefficients<T>& c, const 
 // rather than the whole state back into body axes, so the rounding of that rotation
 // touches only the small part that changed.
 template <typename T>
-inline void principal_rk4_increments(const EulerCoefficients<T>& c, const PrincipalState<T>& s,
-                                     const T& h, LaneQuat<T>& dq, LaneVec3<T>& dw) {
+inline void principal_rk4_increments(const EulerCoefficients<T>& c, const PrincipalState<T>& s, const T& h,
+                                     LaneQuat<T>& dq, LaneVec3<T>& dw) {
   using Scalar = LaneScalar<T>;
   const T half = T(Scalar(0.5)) * h;
   const T quarter = T(Scalar(0.25)) * h;  // half a step times the folded 1/2 of dq/dt
@@ -154,8 +152,7 @@ inline LaneQuat<T> normalized(const LaneQuat<T>& q) {
 
 // One classical RK4 step of orientation and rate, the quaternion renormalised after it.
 template <typename T>
-inline void principal_rk4_step(const EulerCoefficients<T>& c, PrincipalState<T>& s,
-                               const T& h) {
+inline void principal_rk4_step(const EulerCoefficients<T>& c, PrincipalState<T>& s, const T& h) {
   LaneQuat<T> dq;
   LaneVec3<T> dw;
   principal_rk4_increments(c, s, h, dq, dw);

@@ -16,8 +16,7 @@ class PrincipalFrame {
  public:
   PrincipalFrame() : PrincipalFrame(InertiaTensor<Scalar>()) {}
   explicit PrincipalFrame(const InertiaTensor<Scalar>& inertia)
-      : coefficients_(euler_coefficients(inertia.principal_moments().x(),
-                                         inertia.principal_moments().y(),
+      : coefficients_(euler_coefficients(inertia.principal_moments().x(), inertia.principal_moments().y(),
                                          inertia.principal_moments().z())),
         to_body_(inertia.principal_axes()),
         to_body_matrix_(inertia.principal_axes().toRotationMatrix()) {}

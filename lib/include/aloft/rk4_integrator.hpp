@@ -12,8 +12,7 @@ namespace aloft {
 template <typename Scalar>
 class Rk4Integrator {
  public:
-  explicit Rk4Integrator(const InertiaTensor<Scalar>& inertia)
-      : inertia_(inertia), frame_(inertia) {}
+  explicit Rk4Integrator(const InertiaTensor<Scalar>& inertia) : inertia_(inertia), frame_(inertia) {}
 
   const InertiaTensor<Scalar>& inertia() const { return inertia_; }
 

@@ -48,14 +48,12 @@ inline bool all_finite(const Vec3<Scalar>& v) {
 
 template <typename Scalar>
 inline bool all_finite(const Quat<Scalar>& q) {
-  return std::isfinite(q.w()) && std::isfinite(q.x()) && std::isfinite(q.y()) &&
-         std::isfinite(q.z());
+  return std::isfinite(q.w()) && std::isfinite(q.x()) && std::isfinite(q.y()) && std::isfinite(q.z());
 }
 
 template <typename Scalar>
 inline bool is_unit(const Quat<Scalar>& q) {
-  return all_finite(q) &&
-         std::abs(q.squaredNorm() - Scalar(1)) <= UnitTolerance<Scalar>::norm_squared;
+  return all_finite(q) && std::abs(q.squaredNorm() - Scalar(1)) <= UnitTolerance<Scalar>::norm_squared;
 }
 
 // Exponential map: the unit quaternion of rotation vector r (axis * angle, radians).

@@ -7,17 +7,17 @@
 namespace aloft {
 
 // [[nodiscard]]: a status dropped on the floor is a check skipped; the compiler says so.
-enum class [[nodiscard]] Status : std::uint8_t {
-  ok = 0,
-  non_finite_input,          // a NaN or infinite number was given
-  non_positive_time_step,    // dt <= 0 (direction is a separate argument)
-  non_unit_quaternion,       // |q| differs from 1 beyond rounding of a stored quaternion
-  tensor_not_symmetric,      // I != I^T beyond rounding
-  tensor_not_positive_definite,
-  tensor_breaks_triangle_inequality,  // some principal moment exceeds the sum of the other two
-  invalid_dimension,         // a mass, length or rate that must be positive is not
-  zero_vector,               // a direction was asked of a zero vector
-  not_airborne,              // the onboard check is waiting for release or has landed
+enum class [[nodiscard]] Status : std::uint8_t{
+    ok = 0,
+    non_finite_input,        // a NaN or infinite number was given
+    non_positive_time_step,  // dt <= 0 (direction is a separate argument)
+    non_unit_quaternion,     // |q| differs from 1 beyond rounding of a stored quaternion
+    tensor_not_symmetric,    // I != I^T beyond rounding
+    tensor_not_positive_definite,
+    tensor_breaks_triangle_inequality,  // some principal moment exceeds the sum of the other two
+    invalid_dimension,                  // a mass, length or rate that must be positive is not
+    zero_vector,                        // a direction was asked of a zero vector
+    not_airborne,                       // the onboard check is waiting for release or has landed
 };
 
 // One short English phrase per status, for logs and the host program's messages.
@@ -29,8 +29,7 @@ constexpr const char* describe(Status s) {
     case Status::non_unit_quaternion: return "quaternion is not of unit length";
     case Status::tensor_not_symmetric: return "inertia tensor is not symmetric";
     case Status::tensor_not_positive_definite: return "inertia tensor is not positive definite";
-    case Status::tensor_breaks_triangle_inequality:
-      return "principal moments break the triangle inequality";
+    case Status::tensor_breaks_triangle_inequality: return "principal moments break the triangle inequality";
     case Status::invalid_dimension: return "a mass, length or rate is not positive";
     case Status::zero_vector: return "zero vector has no direction";
     case Status::not_airborne: return "not airborne";

@@ -6,7 +6,7 @@
 
 namespace aloft_example {
 
-constexpr int live_simulations = 8;       // K
+constexpr int live_simulations = 8;          // K
 constexpr unsigned seed_every_samples = 10;  // N
 
 template <typename Scalar>

@@ -52,9 +52,13 @@ std::uint64_t calibration_ticks() {
 int main() {
   aloft::port::init();
   aloft::port::ReportWriter out;
-  out.text("aloft example firmware: onboard check, K = ").integer(live_simulations)
-      .text(", N = ").integer(aloft_example::seed_every_samples).text(", flight ")
-      .text(aloft_example::recorded_flight_source).line();
+  out.text("aloft example firmware: onboard check, K = ")
+      .integer(live_simulations)
+      .text(", N = ")
+      .integer(aloft_example::seed_every_samples)
+      .text(", flight ")
+      .text(aloft_example::recorded_flight_source)
+      .line();
   out.text("calibration_instructions ").integer(2 * calibration_turns).line();
   out.text("calibration_ticks ").integer(static_cast<std::int64_t>(calibration_ticks())).line();
 
@@ -73,11 +77,9 @@ int main() {
   for (unsigned i = 0; i < recorded_flight_samples; ++i) {
     if (i == first_steady_sample) steady_start = aloft::port::ticks();
     const aloft_example::GyroSample& sample = recorded_flight[i];
-    const float dt =
-        i == 0 ? 0.0f : static_cast<float>(sample.t_us - recorded_flight[i - 1].t_us) * 1e-6f;
+    const float dt = i == 0 ? 0.0f : static_cast<float>(sample.t_us - recorded_flight[i - 1].t_us) * 1e-6f;
 #if !defined(ALOFT_EXAMPLE_WITHOUT_ALOFT)
-    const aloft::Status s =
-        check->update(Eigen::Map<const aloft::Vec3<float>>(sample.omega_rad_s), dt);
+    const aloft::Status s = check->update(Eigen::Map<const aloft::Vec3<float>>(sample.omega_rad_s), dt);
     if (s != aloft::Status::ok) {
       out.text("sample ").integer(i + 1).text(": ").text(aloft::describe(s)).line();
       return 1;

@@ -14,7 +14,7 @@ struct GyroSample {
   float omega_rad_s[3];  // gyro axes = body axes
 };
 
-extern const char recorded_flight_source[];   // which trial the data came from
+extern const char recorded_flight_source[];       // which trial the data came from
 extern const float recorded_inertia_kg_m2[3][3];  // body axes, about the centre of mass
 extern const GyroSample recorded_flight[];
 extern const unsigned recorded_flight_samples;

@@ -30,8 +30,8 @@ class ReportWriter {
     *--p = '\0';
     const bool negative = value < 0;
     // Work with the magnitude in unsigned arithmetic, so INT64_MIN is printed right.
-    std::uint64_t magnitude = negative ? std::uint64_t(0) - static_cast<std::uint64_t>(value)
-                                       : static_cast<std::uint64_t>(value);
+    std::uint64_t magnitude =
+        negative ? std::uint64_t(0) - static_cast<std::uint64_t>(value) : static_cast<std::uint64_t>(value);
     do {
       *--p = static_cast<char>('0' + magnitude % 10u);
       magnitude /= 10u;
@@ -62,8 +62,10 @@ class ReportWriter {
     }
     // Integer and fraction parts separately, so large values keep their integer digits.
     std::uint32_t whole = static_cast<std::uint32_t>(magnitude);
-    std::uint32_t fraction = trailing_zeros > 0 ? 0u : static_cast<std::uint32_t>(
-        (magnitude - static_cast<float>(whole)) * static_cast<float>(scale) + 0.5f);
+    std::uint32_t fraction =
+        trailing_zeros > 0 ? 0u
+                           : static_cast<std::uint32_t>(
+                                 (magnitude - static_cast<float>(whole)) * static_cast<float>(scale) + 0.5f);
     if (fraction >= scale) {
       fraction -= scale;
       ++whole;

@@ -8,8 +8,7 @@ namespace {
 
 Eigen::Matrix3d solid_box(double mass, double x, double y, double z) {
   const double k = mass / 12.0;
-  return Eigen::Vector3d(k * (y * y + z * z), k * (x * x + z * z), k * (x * x + y * y))
-      .asDiagonal();
+  return Eigen::Vector3d(k * (y * y + z * z), k * (x * x + z * z), k * (x * x + y * y)).asDiagonal();
 }
 
 Eigen::Matrix3d solid_cylinder_z(double mass, double radius, double height) {
@@ -21,8 +20,7 @@ Eigen::Matrix3d solid_cylinder_z(double mass, double radius, double height) {
 }  // namespace
 
 const std::vector<std::string>& body_names() {
-  static const std::vector<std::string> names = {"cylinder", "disc", "box", "tilted_box",
-                                                 "racquet"};
+  static const std::vector<std::string> names = {"cylinder", "disc", "box", "tilted_box", "racquet"};
   return names;
 }
 

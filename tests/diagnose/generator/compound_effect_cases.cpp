@@ -6,8 +6,9 @@ namespace aloft::generator {
 
 std::vector<FlightCase> compound_effect_cases() {
   // Moments before axes: a compound flight turns the re-weighted tensor.
-  const std::vector<std::string> classes = {"inertia_moments", "inertia_axes", "aero_torque", "internal_damping",
-                                            "impulse",         "gyro_bias",    "gyro_scale"};
+  const std::vector<std::string> classes = {"inertia_moments",  "inertia_axes", "aero_torque",
+                                            "internal_damping", "impulse",      "gyro_bias",
+                                            "gyro_scale"};
   const std::vector<std::string> bodies = {"box", "tilted_box", "racquet", "disc"};
   std::vector<FlightCase> cases;
   std::uint64_t seed = 20261123;

@@ -55,8 +55,8 @@ void write_trc(std::ostream& out, const host::MarkerTrial& trial, const std::str
   out << "PathFileType\t4\t(X/Y/Z)\t" << file_name << '\n';
   out << "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\t"
          "OrigDataStartFrame\tOrigNumFrames\n";
-  out << rate << '\t' << rate << '\t' << frames << '\t' << markers << "\tmm\t" << rate << "\t1\t"
-      << frames << '\n';
+  out << rate << '\t' << rate << '\t' << frames << '\t' << markers << "\tmm\t" << rate << "\t1\t" << frames
+      << '\n';
   out << "Frame#\tTime";
   for (const auto& name : trial.marker_names) out << '\t' << name << "\t\t";
   out << "\n\t";
@@ -89,9 +89,8 @@ std::string write_flight(const GeneratedFlight& flight, const std::string& dir) 
                                 [&](std::ostream& out) { write_imu_csv(out, flight.imu); });
   } else {
     data_file = "markers.trc";
-    host::write_file_atomically((folder / data_file).string(), [&](std::ostream& out) {
-      write_trc(out, flight.markers, data_file);
-    });
+    host::write_file_atomically((folder / data_file).string(),
+                                [&](std::ostream& out) { write_trc(out, flight.markers, data_file); });
   }
   nlohmann::json truth = truth_to_json(flight.truth);
   truth["seed"] = flight.seed;

@@ -83,8 +83,7 @@ Throw draw_throw(const BodyModel& body, const FlightSpec& spec, SeededRandom& rn
   q.normalize();
   t.orientation0 = Eigen::Quaterniond(q(0), q(1), q(2), q(3));  // uniform on SO(3)
   t.com0_m = Eigen::Vector3d(rng.uniform(-0.1, 0.1), rng.uniform(0.9, 1.2), rng.uniform(-0.1, 0.1));
-  t.velocity0_m_s =
-      Eigen::Vector3d(rng.uniform(1.5, 3.0), rng.uniform(2.5, 4.5), rng.uniform(-1.5, 1.5));
+  t.velocity0_m_s = Eigen::Vector3d(rng.uniform(1.5, 3.0), rng.uniform(2.5, 4.5), rng.uniform(-1.5, 1.5));
   // Six markers on the body's surface ellipsoid, spread out (no two within 40 % of the
   // mean semi-axis), as a marker set is designed for a well-conditioned pose fit.
   const double min_gap = 0.4 * body.marker_semi_axes_m.mean();
@@ -185,11 +184,9 @@ InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, con
     Eigen::Vector3d moments;
     for (int attempt = 0;; ++attempt) {
       if (attempt > 10000) throw std::logic_error("no valid moment perturbation for " + body.name);
-      for (int i = 0; i < 3; ++i)
-        moments(i) = p.moments(i) * (1.0 + rng.signed_uniform(0.05, 0.20));
+      for (int i = 0; i < 3; ++i) moments(i) = p.moments(i) * (1.0 + rng.signed_uniform(0.05, 0.20));
       moments *= p.moments.sum() / moments.sum();
-      const double largest_change =
-          (moments.cwiseQuotient(p.moments).array() - 1.0).abs().maxCoeff();
+      const double largest_change = (moments.cwiseQuotient(p.moments).array() - 1.0).abs().maxCoeff();
       // Keep 0.5 % of slack on the triangle inequality so the body stays physical.
       const double slack = 0.005 * moments.sum();
       const bool physical = moments(0) + slack <= moments(1) + moments(2) &&
@@ -211,8 +208,7 @@ InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, con
   } else if (effect == "aero_torque") {
     // d ln|L|/dt = -k |w| 2E / |L|² at release: pick k for a 4-12 % fall of |L|.
     const double fall = rng.uniform(0.04, 0.12);
-    e.physics.aero_k_N_m_s2 =
-        fall * l0.squaredNorm() / (thrown.duration_s * w0.norm() * 2.0 * energy0);
+    e.physics.aero_k_N_m_s2 = fall * l0.squaredNorm() / (thrown.duration_s * w0.norm() * 2.0 * energy0);
     e.params = {{"k_N_m_s2", e.physics.aero_k_N_m_s2}};
   } else if (effect == "internal_damping") {
     e.physics.rotor_inertia_kg_m2 = rng.uniform(0.08, 0.15) * p.moments(0);
@@ -243,8 +239,7 @@ InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, con
     e.params = {{"scale_error", to_json(e.scale_error)}};
   } else if (effect == "sensor_misalignment") {
     e.imu_to_body = draw_misrotation(p, rng);
-    e.params = {{"angle_deg", rotation_angle_deg(e.imu_to_body)},
-                {"rotation", to_json(e.imu_to_body)}};
+    e.params = {{"angle_deg", rotation_angle_deg(e.imu_to_body)}, {"rotation", to_json(e.imu_to_body)}};
   } else if (effect == "clock_drift") {
     e.rate_error = rng.signed_uniform(0.01, 0.05);
     e.params = {{"rate_error", e.rate_error}};
@@ -257,7 +252,8 @@ InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, con
 // `scale_mimics_moments`: the gyro's axes are the body's principal axes and the three
 // moments differ, where a non-uniform gyro scale reproduces wrong moments that keep their
 // order exactly (not the reverse; and never on a body of revolution).
-std::vector<std::string> equivalent_class(const std::string& effect, DataKind kind, bool scale_mimics_moments = false) {
+std::vector<std::string> equivalent_class(const std::string& effect, DataKind kind,
+                                          bool scale_mimics_moments = false) {
   std::vector<std::string> out = {effect};
   if (kind == DataKind::imu) {
     if (effect == "inertia_moments" && scale_mimics_moments) out.push_back("gyro_scale");
@@ -270,9 +266,8 @@ std::vector<std::string> equivalent_class(const std::string& effect, DataKind ki
 }
 
 std::string nominal_body_json(const BodyModel& body, const Throw& thrown, DataKind kind) {
-  json j = {{"name", body.name},
-            {"mass", body.mass_kg},
-            {"inertia", {{"tensor", to_json(body.inertia_kg_m2)}}}};
+  json j = {
+      {"name", body.name}, {"mass", body.mass_kg}, {"inertia", {{"tensor", to_json(body.inertia_kg_m2)}}}};
   if (kind == DataKind::markers) {
     json markers = json::object();
     for (std::size_t i = 0; i < thrown.markers_m.size(); ++i) {
@@ -343,7 +338,8 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
       std::find(names.begin(), names.end(), spec.second_effect) == names.end()) {
     throw std::invalid_argument("unknown effect '" + spec.second_effect + "'");
   }
-  if (spec.data == DataKind::markers && (is_sensor_effect(spec.effect) || is_sensor_effect(spec.second_effect))) {
+  if (spec.data == DataKind::markers &&
+      (is_sensor_effect(spec.effect) || is_sensor_effect(spec.second_effect))) {
     throw std::invalid_argument("sensor effect '" + spec.effect + "' needs IMU data");
   }
   const BodyModel body = body_model(spec.body);
@@ -407,16 +403,14 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
     s.kinetic_energy_J = dynamics.kinetic_energy(states[k]);
     s.angular_momentum_world = states[k].orientation * dynamics.angular_momentum(states[k]);
     if (spec.data == DataKind::markers) {
-      s.com_position_m =
-          thrown.com0_m + thrown.velocity0_m_s * s.t_s + 0.5 * kGravity * s.t_s * s.t_s;
+      s.com_position_m = thrown.com0_m + thrown.velocity0_m_s * s.t_s + 0.5 * kGravity * s.t_s * s.t_s;
     }
   }
   // How big the dissipative effects turned out, from the truth, for reports and tests.
   const bool compound = !spec.second_effect.empty() && spec.second_effect != "none";
   if (spec.effect == "aero_torque" && !compound) {
-    effect.params["L_drop_fraction"] =
-        1.0 - f.true_samples.back().angular_momentum_world.norm() /
-                  f.true_samples.front().angular_momentum_world.norm();
+    effect.params["L_drop_fraction"] = 1.0 - f.true_samples.back().angular_momentum_world.norm() /
+                                                 f.true_samples.front().angular_momentum_world.norm();
   }
   if (spec.effect == "internal_damping" && !compound) {
     effect.params["energy_loss_fraction"] =
@@ -443,8 +437,7 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
         const Eigen::Vector3d& w = states[k].omega_body;
         const Eigen::Vector3d w_dot = dynamics.shell_angular_acceleration(true_time[k], states[k]);
         const Eigen::Vector3d a = w_dot.cross(r) + w.cross(w.cross(r));
-        log.accel_m_s2.push_back(body_to_sensor * a +
-                                 noise_rng.normal_vector(spec.accel_noise_m_s2));
+        log.accel_m_s2.push_back(body_to_sensor * a + noise_rng.normal_vector(spec.accel_noise_m_s2));
       }
     }
   } else {
@@ -494,7 +487,8 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
                        (principal.axes.cwiseAbs().array() > 1.0 - 1e-9).count() == 3;
   const bool distinct = symmetry_axis_index(principal.moments, 1e-6) < 0 &&
                         principal.moments(2) - principal.moments(0) > 1e-6 * principal.moments(2);
-  const bool mimics = aligned && distinct && effect.imu_to_body.angularDistance(Eigen::Quaterniond::Identity()) < 1e-12;
+  const bool mimics =
+      aligned && distinct && effect.imu_to_body.angularDistance(Eigen::Quaterniond::Identity()) < 1e-12;
   t.equivalent = equivalent_class(spec.effect, spec.data, mimics);
   t.effects = {spec.effect};
   t.equivalents = {t.equivalent};
@@ -512,9 +506,8 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
 }
 
 json truth_to_json(const FlightTruth& truth) {
-  json j = {{"kind", to_string(truth.kind)},  {"body", truth.body},
-            {"duration_s", truth.duration_s}, {"w0", to_json(truth.omega0_body)},
-            {"effect", truth.effect},         {"params", truth.params},
+  json j = {{"kind", to_string(truth.kind)},    {"body", truth.body},     {"duration_s", truth.duration_s},
+            {"w0", to_json(truth.omega0_body)}, {"effect", truth.effect}, {"params", truth.params},
             {"equivalent", truth.equivalent}};
   if (truth.onset_s) j["onset_s"] = *truth.onset_s;
   if (truth.effects.size() > 1) {

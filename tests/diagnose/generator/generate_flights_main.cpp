@@ -53,7 +53,8 @@ void write_logged(const GeneratedFlight& flight, const std::string& segments_csv
   nlohmann::json truth = truth_to_json(flight.truth);
   truth["seed"] = seed;
   all[name] = truth;
-  std::cout << name << "/imu.csv + segments.csv  " << flight.truth.effect << " on " << flight.truth.body << "\n";
+  std::cout << name << "/imu.csv + segments.csv  " << flight.truth.effect << " on " << flight.truth.body
+            << "\n";
 }
 
 void write_phone_like(const std::string& out, nlohmann::json& all) {
@@ -100,13 +101,12 @@ int main(int argc, char** argv) {
     nlohmann::json all = nlohmann::json::object();
     for (const FlightCase& c : cases) {
       const GeneratedFlight flight = generate_flight(c.spec, c.seed);
-      const std::string data_file =
-          write_flight(flight, (std::filesystem::path(out_dir) / c.name).string());
+      const std::string data_file = write_flight(flight, (std::filesystem::path(out_dir) / c.name).string());
       nlohmann::json truth = truth_to_json(flight.truth);
       truth["seed"] = c.seed;
       all[c.name] = truth;
-      std::cout << c.name << "/" << data_file << "  " << flight.truth.effect << " on "
-                << flight.truth.body << "\n";
+      std::cout << c.name << "/" << data_file << "  " << flight.truth.effect << " on " << flight.truth.body
+                << "\n";
     }
     aloft::host::write_file_atomically((std::filesystem::path(out_dir) / "truth.json").string(),
                                        [&](std::ostream& o) { o << all.dump(1) << '\n'; });

@@ -31,7 +31,8 @@ LongSessionLog make_long_session_log(const LongSessionSpec& spec, std::uint64_t 
       session.body_json = flight.body_json;
     }
     const double noise = flight_spec.gyro_noise_rad_s;
-    for (int k = 0; k < static_cast<int>(std::lround(spec.rest_s * kRate)); ++k) append(rest_noise.normal_vector(noise));
+    for (int k = 0; k < static_cast<int>(std::lround(spec.rest_s * kRate)); ++k)
+      append(rest_noise.normal_vector(noise));
     host::Segment segment;
     segment.name = "throw" + std::to_string(i + 1);
     segment.start_s = static_cast<double>(tick) / kRate;
@@ -52,7 +53,8 @@ void write_long_session_log(const LongSessionLog& session, const std::string& di
                               [&](std::ostream& out) { write_imu_csv(out, session.log); });
   host::write_file_atomically((folder / "segments.csv").string(), [&](std::ostream& out) {
     out << "segment,start,end,keep,comment\n" << std::fixed << std::setprecision(6);
-    for (const host::Segment& s : session.segments) out << s.name << ',' << s.start_s << ',' << s.end_s << ",true,\n";
+    for (const host::Segment& s : session.segments)
+      out << s.name << ',' << s.start_s << ',' << s.end_s << ",true,\n";
   });
 }
 

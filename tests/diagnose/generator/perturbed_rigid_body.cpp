@@ -14,8 +14,7 @@ constexpr double kPi = 3.14159265358979323846;
 Eigen::Vector4d quaternion_rate(const Eigen::Vector4d& q, const Eigen::Vector3d& w) {
   const double x = q(0), y = q(1), z = q(2), s = q(3);
   return 0.5 * Eigen::Vector4d(s * w.x() + y * w.z() - z * w.y(), s * w.y() + z * w.x() - x * w.z(),
-                               s * w.z() + x * w.y() - y * w.x(),
-                               -x * w.x() - y * w.y() - z * w.z());
+                               s * w.z() + x * w.y() - y * w.x(), -x * w.x() - y * w.y() - z * w.z());
 }
 
 }  // namespace
@@ -71,10 +70,10 @@ void PerturbedRigidBody::rk4_step(double t, double h, FlightState& s) const {
   const Eigen::Vector3d w0 = s.omega_body;
   const Eigen::Vector3d r0 = s.rotor_omega_body;
   const Derivative k1 = derivative(t, q0, w0, r0);
-  const Derivative k2 = derivative(t + 0.5 * h, q0 + 0.5 * h * k1.q_dot, w0 + 0.5 * h * k1.w_dot,
-                                   r0 + 0.5 * h * k1.wr_dot);
-  const Derivative k3 = derivative(t + 0.5 * h, q0 + 0.5 * h * k2.q_dot, w0 + 0.5 * h * k2.w_dot,
-                                   r0 + 0.5 * h * k2.wr_dot);
+  const Derivative k2 =
+      derivative(t + 0.5 * h, q0 + 0.5 * h * k1.q_dot, w0 + 0.5 * h * k1.w_dot, r0 + 0.5 * h * k1.wr_dot);
+  const Derivative k3 =
+      derivative(t + 0.5 * h, q0 + 0.5 * h * k2.q_dot, w0 + 0.5 * h * k2.w_dot, r0 + 0.5 * h * k2.wr_dot);
   const Derivative k4 = derivative(t + h, q0 + h * k3.q_dot, w0 + h * k3.w_dot, r0 + h * k3.wr_dot);
   Eigen::Vector4d q = q0 + h / 6.0 * (k1.q_dot + 2.0 * (k2.q_dot + k3.q_dot) + k4.q_dot);
   s.orientation.coeffs() = q / q.norm();
@@ -139,8 +138,7 @@ double PerturbedRigidBody::kinetic_energy(const FlightState& s) const {
   return e;
 }
 
-Eigen::Vector3d PerturbedRigidBody::shell_angular_acceleration(double t,
-                                                               const FlightState& s) const {
+Eigen::Vector3d PerturbedRigidBody::shell_angular_acceleration(double t, const FlightState& s) const {
   return derivative(t, s.orientation.coeffs(), s.omega_body, s.rotor_omega_body).w_dot;
 }
 

@@ -27,7 +27,7 @@ std::vector<FlightCase> phone_like_flight_cases() {
 }
 
 std::vector<SessionCase> phone_like_session_cases() {
-  const char* effects[] = {"none",      "inertia_moments", "inertia_axes", "gyro_bias",
+  const char* effects[] = {"none",       "inertia_moments",     "inertia_axes", "gyro_bias",
                            "gyro_scale", "sensor_misalignment", "clock_drift"};
   const auto& bodies = body_names();
   std::vector<SessionCase> cases;

@@ -12,7 +12,7 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-constexpr double kStep_s = 0.0002;   // integration and filter grid (5 kHz)
+constexpr double kStep_s = 0.0002;  // integration and filter grid (5 kHz)
 constexpr double kRest_s = 1.5;
 constexpr double kSpinUp_s = 0.1;
 

@@ -27,23 +27,23 @@
 namespace aloft::generator {
 
 struct PhoneTossSpec {
-  int off_axis = 1;             // body axis whose true moment is off (0 x, 1 y, 2 z)
-  double moment_factor = 1.0;   // true moment / nominal moment on that axis
-  int tosses = 0;               // 0: drawn in [6, 12]
+  int off_axis = 1;            // body axis whose true moment is off (0 x, 1 y, 2 z)
+  double moment_factor = 1.0;  // true moment / nominal moment on that axis
+  int tosses = 0;              // 0: drawn in [6, 12]
   double rate_hz = 100.0;
-  double cutoff_hz = 25.0;      // <= 0: no filter
+  double cutoff_hz = 25.0;  // <= 0: no filter
   double noise_rad_s = 0.01;
   double quantum_rad_s = 0.00107;  // 0: not quantised
-  double jitter = 0.02;         // relative timestamp jitter
+  double jitter = 0.02;            // relative timestamp jitter
 };
 
 struct PhoneTossSession {
-  host::Body nominal;           // what the diagnosis is told
-  host::ImuLog log;             // the whole session
+  host::Body nominal;                   // what the diagnosis is told
+  host::ImuLog log;                     // the whole session
   std::vector<host::Segment> segments;  // release to catch of each toss
   Eigen::Vector3d true_moments_xyz = Eigen::Vector3d::Zero();
   Eigen::Vector2d true_ratios = Eigen::Vector2d::Zero();  // Iy/Ix, Iz/Ix
-  std::vector<int> flips;       // sign changes of w_x per toss
+  std::vector<int> flips;                                 // sign changes of w_x per toss
 };
 
 // Deterministic in (spec, seed). Throws std::invalid_argument for a factor that would

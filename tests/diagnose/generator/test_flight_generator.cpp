@@ -30,8 +30,7 @@ namespace {
 
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
-FlightSpec make_spec(const std::string& body, const std::string& effect,
-                     DataKind kind = DataKind::imu) {
+FlightSpec make_spec(const std::string& body, const std::string& effect, DataKind kind = DataKind::imu) {
   FlightSpec s;
   s.body = body;
   s.effect = effect;
@@ -53,16 +52,14 @@ std::vector<Eigen::Vector3d> noise_of(const GeneratedFlight& f, const Eigen::Vec
   std::vector<Eigen::Vector3d> out;
   const Eigen::Matrix3d to_sensor = f.true_imu_to_body.conjugate().toRotationMatrix();
   for (std::size_t k = 0; k < f.imu.gyro_rad_s.size(); ++k) {
-    const Eigen::Vector3d clean = (Eigen::Vector3d::Ones() + scale_error)
-                                      .cwiseProduct(to_sensor * f.true_samples[k].omega_body) +
-                                  bias;
+    const Eigen::Vector3d clean =
+        (Eigen::Vector3d::Ones() + scale_error).cwiseProduct(to_sensor * f.true_samples[k].omega_body) + bias;
     out.push_back(f.imu.gyro_rad_s[k] - clean);
   }
   return out;
 }
 
-double max_difference(const std::vector<Eigen::Vector3d>& a,
-                      const std::vector<Eigen::Vector3d>& b) {
+double max_difference(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b) {
   REQUIRE(a.size() == b.size());
   double worst = 0.0;
   for (std::size_t k = 0; k < a.size(); ++k) worst = std::max(worst, (a[k] - b[k]).norm());
@@ -88,8 +85,7 @@ double unexplained_rms(const std::vector<double>& t, const std::vector<Eigen::Ve
   };
   const auto residual = [&](const std::vector<Eigen::Vector3d>& sim) {
     Eigen::VectorXd r(3 * sim.size());
-    for (std::size_t k = 0; k < sim.size(); ++k)
-      r.segment<3>(Eigen::Index(3 * k)) = clean[k] - sim[k];
+    for (std::size_t k = 0; k < sim.size(); ++k) r.segment<3>(Eigen::Index(3 * k)) = clean[k] - sim[k];
     return r;
   };
   Eigen::Vector3d w0 = clean.front();
@@ -186,8 +182,7 @@ TEST_CASE("a torque-free flight conserves energy and angular momentum and matche
   }
 }
 
-TEST_CASE("the initial rate is generic: 5-15 rad/s, at least 20 degrees from principal axes",
-          "[generator]") {
+TEST_CASE("the initial rate is generic: 5-15 rad/s, at least 20 degrees from principal axes", "[generator]") {
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     const std::string body = body_names()[seed % body_names().size()];
     const GeneratedFlight f = generate_flight(make_spec(body, "none"), seed);
@@ -203,8 +198,7 @@ TEST_CASE("the initial rate is generic: 5-15 rad/s, at least 20 degrees from pri
   }
 }
 
-TEST_CASE("aero_torque makes |L| and energy fall by the documented fraction",
-          "[generator][physics]") {
+TEST_CASE("aero_torque makes |L| and energy fall by the documented fraction", "[generator][physics]") {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     const std::string body = body_names()[seed % body_names().size()];
     CAPTURE(body, seed);
@@ -215,8 +209,8 @@ TEST_CASE("aero_torque makes |L| and energy fall by the documented fraction",
       REQUIRE(s[k].kinetic_energy_J < s[k - 1].kinetic_energy_J);
     }
     const double drop = f.truth.params.at("L_drop_fraction").get<double>();
-    CHECK(drop == Approx(1.0 - s.back().angular_momentum_world.norm() /
-                                   s.front().angular_momentum_world.norm()));
+    CHECK(drop ==
+          Approx(1.0 - s.back().angular_momentum_world.norm() / s.front().angular_momentum_world.norm()));
     // k is set from the initial decay rate for a 4-12 % fall; the rate slows as |w| does.
     CHECK(drop > 0.03);
     CHECK(drop < 0.125);
@@ -237,8 +231,7 @@ TEST_CASE("aero damping torque of the generator follows tau = -k |w| w", "[gener
   const auto states = body.sample(s0, times);
   for (std::size_t n = 0; n < times.size(); ++n) {
     CHECK(states[n].omega_body.norm() == Approx(w0 / (1.0 + k * w0 * times[n] / i)).epsilon(1e-10));
-    CHECK(states[n].omega_body.normalized().dot(s0.omega_body.normalized()) ==
-          Approx(1.0).epsilon(1e-12));
+    CHECK(states[n].omega_body.normalized().dot(s0.omega_body.normalized()) == Approx(1.0).epsilon(1e-12));
   }
 }
 
@@ -261,8 +254,7 @@ TEST_CASE("internal damping keeps |L| and dissipates energy", "[generator][physi
   }
 }
 
-TEST_CASE("an impulse changes the angular momentum by the impulse at time_s",
-          "[generator][physics]") {
+TEST_CASE("an impulse changes the angular momentum by the impulse at time_s", "[generator][physics]") {
   for (double pulse : {0.0, 0.003}) {
     FlightSpec spec = make_spec("box", "impulse");
     spec.impulse_duration_s = pulse;
@@ -325,11 +317,10 @@ TEST_CASE("gyro_scale, sensor_misalignment and clock_drift apply SPEC 4's sensor
   }
   CHECK(s.maxCoeff() - s.minCoeff() >= 0.03);
   CHECK(max_difference(noise_of(scaled, Eigen::Vector3d::Zero(), s), reference_noise) < 1e-12);
-  CHECK(max_difference(noise_of(scaled, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()),
-                       reference_noise) > 0.1);
+  CHECK(max_difference(noise_of(scaled, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()), reference_noise) >
+        0.1);
 
-  const GeneratedFlight turned =
-      generate_flight(make_spec("tilted_box", "sensor_misalignment"), 33);
+  const GeneratedFlight turned = generate_flight(make_spec("tilted_box", "sensor_misalignment"), 33);
   const Eigen::Quaterniond r = quat(turned.truth.params.at("rotation"));
   const double angle = turned.truth.params.at("angle_deg").get<double>();
   CHECK(angle >= 3.0);
@@ -339,8 +330,8 @@ TEST_CASE("gyro_scale, sensor_misalignment and clock_drift apply SPEC 4's sensor
   // The nominal body the diagnosis gets has no sensor rotation.
   CHECK(aloft::angle_between(Eigen::Quaterniond::Identity(), turned.body.imu_to_body) < 1e-12);
   // Measured = R^T w + noise: the noise left after that model is the reference noise.
-  CHECK(max_difference(noise_of(turned, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()),
-                       reference_noise) < 1e-12);
+  CHECK(max_difference(noise_of(turned, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()), reference_noise) <
+        1e-12);
   for (std::size_t k = 0; k < turned.imu.gyro_rad_s.size(); k += 97) {
     const Eigen::Vector3d expected = r.conjugate() * turned.true_samples[k].omega_body;
     CHECK((turned.imu.gyro_rad_s[k] - expected - reference_noise[k]).norm() < 1e-12);
@@ -351,12 +342,11 @@ TEST_CASE("gyro_scale, sensor_misalignment and clock_drift apply SPEC 4's sensor
   CHECK(std::abs(eps) >= 0.01);
   CHECK(std::abs(eps) <= 0.05);
   for (std::size_t k = 0; k < drifted.imu.time_s.size(); ++k) {
-    REQUIRE(drifted.imu.time_s[k] ==
-            Approx(drifted.true_samples[k].t_s * (1.0 + eps)).margin(1e-12));
+    REQUIRE(drifted.imu.time_s[k] == Approx(drifted.true_samples[k].t_s * (1.0 + eps)).margin(1e-12));
     REQUIRE(drifted.imu.time_s[k] == Approx(k * 1e-3).margin(1e-12));
   }
-  CHECK(max_difference(noise_of(drifted, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()),
-                       reference_noise) < 1e-12);
+  CHECK(max_difference(noise_of(drifted, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()), reference_noise) <
+        1e-12);
   CHECK(drifted.truth.equivalent == std::vector<std::string>{"clock_drift", "gyro_scale"});
   CHECK(turned.truth.equivalent == std::vector<std::string>{"inertia_axes", "sensor_misalignment"});
 }
@@ -366,8 +356,7 @@ TEST_CASE("inertia effects change the true tensor, not the nominal body", "[gene
     CAPTURE(body);
     const GeneratedFlight plain = generate_flight(make_spec(body, "none"), 8);
     const GeneratedFlight moments = generate_flight(make_spec(body, "inertia_moments"), 8);
-    const GeneratedFlight axes =
-        generate_flight(make_spec(body, "inertia_axes", DataKind::markers), 8);
+    const GeneratedFlight axes = generate_flight(make_spec(body, "inertia_axes", DataKind::markers), 8);
     // Same nominal body whatever the effect.
     CHECK((moments.body.inertia.tensor() - plain.body.inertia.tensor()).norm() == 0.0);
     CHECK((axes.body.inertia.tensor() - plain.body.inertia.tensor()).norm() == 0.0);
@@ -382,16 +371,15 @@ TEST_CASE("inertia effects change the true tensor, not the nominal body", "[gene
     CHECK(change <= 0.45);
     // principal_kg_m2 is along the nominal principal axes.
     const Eigen::Matrix3d v = plain.body.inertia.principal_axes().toRotationMatrix();
-    CHECK((v.transpose() * moments.true_inertia_kg_m2 * v - Eigen::Matrix3d(m_true.asDiagonal()))
-              .norm() < 1e-12 * nominal.norm());
+    CHECK((v.transpose() * moments.true_inertia_kg_m2 * v - Eigen::Matrix3d(m_true.asDiagonal())).norm() <
+          1e-12 * nominal.norm());
 
     const Eigen::Quaterniond r = quat(axes.truth.params.at("rotation"));
     const double angle = axes.truth.params.at("angle_deg").get<double>();
     CHECK(angle >= 3.0);
     CHECK(angle <= 15.0);
     const Eigen::Matrix3d rm = r.toRotationMatrix();
-    CHECK((rm * nominal * rm.transpose() - axes.true_inertia_kg_m2).norm() <
-          1e-12 * nominal.norm());
+    CHECK((rm * nominal * rm.transpose() - axes.true_inertia_kg_m2).norm() < 1e-12 * nominal.norm());
     // The same moments, and the rotation really moves the tensor (for a body of
     // revolution it tilts the symmetry axis rather than spinning about it).
     aloft::InertiaTensor<double> turned;
@@ -401,8 +389,7 @@ TEST_CASE("inertia effects change the true tensor, not the nominal body", "[gene
     // degenerate tensor such as the cylinder's.)
     CHECK((turned.principal_moments() - plain.body.inertia.principal_moments()).norm() <
           1e-9 * nominal.norm());
-    CHECK((axes.true_inertia_kg_m2 - nominal).norm() >
-          0.5 * angle * kDegree * (m_nom(2) - m_nom(0)) / 2.0);
+    CHECK((axes.true_inertia_kg_m2 - nominal).norm() > 0.5 * angle * kDegree * (m_nom(2) - m_nom(0)) / 2.0);
     CHECK(axes.truth.equivalent == std::vector<std::string>{"inertia_axes"});
   }
 }
@@ -414,8 +401,7 @@ TEST_CASE("from a gyro alone, principal axes turned by R read as a sensor turned
   // nominal tensor I seen through a sensor whose sensor->body rotation is R^T.
   const Eigen::Matrix3d nominal = body_model("box").inertia_kg_m2;
   const Eigen::Matrix3d r =
-      Eigen::AngleAxisd(9 * kDegree, Eigen::Vector3d(0.2, -0.7, 0.4).normalized())
-          .toRotationMatrix();
+      Eigen::AngleAxisd(9 * kDegree, Eigen::Vector3d(0.2, -0.7, 0.4).normalized()).toRotationMatrix();
   FlightPhysics turned_axes, plain;
   turned_axes.inertia_kg_m2 = r * nominal * r.transpose();
   plain.inertia_kg_m2 = nominal;
@@ -478,8 +464,7 @@ TEST_CASE("the accelerometer reads the free-fall specific force at the sensor's 
     // w' by central difference of the true rate (error ~1e-6 at 1 kHz), an independent
     // estimate of the tangential term.
     const double dt = f.true_samples[k + 1].t_s - f.true_samples[k - 1].t_s;
-    const Eigen::Vector3d w_dot =
-        (f.true_samples[k + 1].omega_body - f.true_samples[k - 1].omega_body) / dt;
+    const Eigen::Vector3d w_dot = (f.true_samples[k + 1].omega_body - f.true_samples[k - 1].omega_body) / dt;
     const Eigen::Vector3d& w = f.true_samples[k].omega_body;
     const Eigen::Vector3d expected = w_dot.cross(r) + w.cross(w.cross(r));
     sum_sq += (f.imu.accel_m_s2[k] - expected).squaredNorm();
@@ -525,8 +510,7 @@ TEST_CASE("markers follow the rigid body with 0.2 mm noise and sparse occlusions
     const auto& last = f.true_samples.back();
     const double t = last.t_s;
     const Eigen::Vector3d v0 =
-        (last.com_position_m - first.com_position_m + 0.5 * Eigen::Vector3d(0, 9.81, 0) * t * t) /
-        t;
+        (last.com_position_m - first.com_position_m + 0.5 * Eigen::Vector3d(0, 9.81, 0) * t * t) / t;
     const Eigen::Vector3d mid =
         first.com_position_m + v0 * (t / 2) - 0.5 * Eigen::Vector3d(0, 9.81, 0) * t * t / 4;
     CHECK((f.true_samples[f.true_samples.size() / 2].com_position_m - mid).norm() < 0.01);
@@ -570,11 +554,9 @@ TEST_CASE("the withheld flights are pinned: the same numbers on every build", "[
   const GeneratedFlight f = generate_flight(first.spec, first.seed);
   CHECK(f.truth.body == "cylinder");
   CHECK(f.truth.duration_s == Approx(1.0502186731127212).epsilon(1e-12));
-  CHECK((f.truth.omega0_body -
-         Eigen::Vector3d(-3.957449436067295, -3.2670090306119093, -4.204625870753106))
+  CHECK((f.truth.omega0_body - Eigen::Vector3d(-3.957449436067295, -3.2670090306119093, -4.204625870753106))
             .norm() < 1e-12);
-  CHECK((f.imu.gyro_rad_s.front() - Eigen::Vector3d(-3.943956, -3.249400, -4.174068)).norm() <
-        2e-6);
+  CHECK((f.imu.gyro_rad_s.front() - Eigen::Vector3d(-3.943956, -3.249400, -4.174068)).norm() < 2e-6);
 }
 
 TEST_CASE("bad specs are refused", "[generator]") {
@@ -586,20 +568,17 @@ TEST_CASE("bad specs are refused", "[generator]") {
                   std::invalid_argument);
 }
 
-TEST_CASE("written files round trip: body.json, imu.csv, markers.trc, truth.json",
-          "[generator][files]") {
+TEST_CASE("written files round trip: body.json, imu.csv, markers.trc, truth.json", "[generator][files]") {
   TempDir dir("aloft_generator_files");
   FlightSpec imu_spec = make_spec("tilted_box", "gyro_bias");
   imu_spec.accelerometer = true;
   const GeneratedFlight imu = generate_flight(imu_spec, 3);
   CHECK(write_flight(imu, (dir.path / "imu").string()) == "imu.csv");
-  const GeneratedFlight mocap =
-      generate_flight(make_spec("racquet", "inertia_axes", DataKind::markers), 3);
+  const GeneratedFlight mocap = generate_flight(make_spec("racquet", "inertia_axes", DataKind::markers), 3);
   CHECK(write_flight(mocap, (dir.path / "mocap").string()) == "markers.trc");
 
   // body.json reads back through the project's reader as the same nominal body.
-  const aloft::host::Body body =
-      aloft::host::read_body_file((dir.path / "mocap" / "body.json").string());
+  const aloft::host::Body body = aloft::host::read_body_file((dir.path / "mocap" / "body.json").string());
   CHECK((body.inertia.tensor() - mocap.body.inertia.tensor()).norm() < 1e-15);
   CHECK(body.markers_m.size() == 6);
   CHECK((body.markers_m.at("M3") - mocap.body.markers_m.at("M3")).norm() < 1e-15);
@@ -617,10 +596,8 @@ TEST_CASE("written files round trip: body.json, imu.csv, markers.trc, truth.json
       REQUIRE(k < imu.imu.time_s.size());
       REQUIRE(std::stod(cells[0]) == Approx(imu.imu.time_s[k]).margin(5e-7));
       for (int i = 0; i < 3; ++i) {
-        REQUIRE(std::stod(cells[std::size_t(1 + i)]) ==
-                Approx(imu.imu.gyro_rad_s[k](i)).margin(5e-7));
-        REQUIRE(std::stod(cells[std::size_t(4 + i)]) ==
-                Approx(imu.imu.accel_m_s2[k](i)).margin(5e-7));
+        REQUIRE(std::stod(cells[std::size_t(1 + i)]) == Approx(imu.imu.gyro_rad_s[k](i)).margin(5e-7));
+        REQUIRE(std::stod(cells[std::size_t(4 + i)]) == Approx(imu.imu.accel_m_s2[k](i)).margin(5e-7));
       }
       ++k;
     }
@@ -670,9 +647,7 @@ TEST_CASE("written files round trip: body.json, imu.csv, markers.trc, truth.json
   CHECK(truth.at("equivalent") == nlohmann::json::array({"gyro_bias"}));
   CHECK(truth.at("seed") == 3);
   CHECK(truth.at("kind") == "imu");
-  CHECK(
-      (vec(truth.at("params").at("bias_rad_s")) - vec(imu.truth.params.at("bias_rad_s"))).norm() ==
-      0.0);
+  CHECK((vec(truth.at("params").at("bias_rad_s")) - vec(imu.truth.params.at("bias_rad_s"))).norm() == 0.0);
   CHECK((vec(truth.at("w0")) - imu.truth.omega0_body).norm() == 0.0);
 }
 
@@ -685,8 +660,7 @@ TEST_CASE("the TRC header is laid out like the practice data's", "[generator][fi
   }
   std::ifstream theirs_in(practice);
   std::ostringstream ours_out;
-  write_trc(ours_out, generate_flight(make_spec("box", "none", DataKind::markers), 2).markers,
-            "markers.trc");
+  write_trc(ours_out, generate_flight(make_spec("box", "none", DataKind::markers), 2).markers, "markers.trc");
   std::istringstream ours_in(ours_out.str());
   std::string theirs, ours;
   for (int row = 0; row < 6; ++row) {
@@ -701,8 +675,7 @@ TEST_CASE("the TRC header is laid out like the practice data's", "[generator][fi
   }
 }
 
-TEST_CASE("the withheld-effect list covers every effect, body and data kind",
-          "[generator][withheld]") {
+TEST_CASE("the withheld-effect list covers every effect, body and data kind", "[generator][withheld]") {
   const auto cases = withheld_effect_cases();
   CHECK(cases.size() >= 60);
   std::map<std::string, int> per_effect;
@@ -735,8 +708,7 @@ TEST_CASE("the withheld-effect list covers every effect, body and data kind",
   CHECK(cases.back().name == "markers_impulse_2");
 }
 
-TEST_CASE("every withheld flight's truth is within the documented ranges",
-          "[generator][withheld]") {
+TEST_CASE("every withheld flight's truth is within the documented ranges", "[generator][withheld]") {
   for (const auto& c : withheld_effect_cases()) {
     CAPTURE(c.name);
     const GeneratedFlight f = generate_flight(c.spec, c.seed);
@@ -792,8 +764,7 @@ TEST_CASE("every withheld flight's effect is visible above the noise", "[generat
     }
   }
   if (!std::getenv("ALOFT_GENERATOR_VERBOSE")) return;
-  for (const auto& [effect, rms] : weakest)
-    WARN(effect << ": weakest unexplained rms " << rms << " rad/s");
+  for (const auto& [effect, rms] : weakest) WARN(effect << ": weakest unexplained rms " << rms << " rad/s");
 }
 
 TEST_CASE("verdicts are scored with issue 5's thresholds", "[generator][score]") {
@@ -814,9 +785,7 @@ TEST_CASE("verdicts are scored with issue 5's thresholds", "[generator][score]")
   const FlightTruth bias = truth_of("gyro_bias");
   const Eigen::Vector3d b = vec(bias.params.at("bias_rad_s"));
   const Eigen::Vector3d off = b.unitOrthogonal() * b.norm();
-  const auto bias_json = [](const Eigen::Vector3d& v) {
-    return json{{"bias_rad_s", {v.x(), v.y(), v.z()}}};
-  };
+  const auto bias_json = [](const Eigen::Vector3d& v) { return json{{"bias_rad_s", {v.x(), v.y(), v.z()}}}; };
   CHECK(score_verdict(bias, verdict("gyro_bias", bias_json(b + 0.19 * off))).params_right);
   CHECK_FALSE(score_verdict(bias, verdict("gyro_bias", bias_json(b + 0.21 * off))).params_right);
   CHECK_FALSE(score_verdict(bias, verdict("gyro_bias", json::object())).params_right);
@@ -824,25 +793,20 @@ TEST_CASE("verdicts are scored with issue 5's thresholds", "[generator][score]")
 
   const FlightTruth drift = truth_of("clock_drift");
   const double eps = drift.params.at("rate_error").get<double>();
-  CHECK(score_verdict(drift,
-                      verdict("gyro_scale", {{"scale_error", {eps + 0.009, eps, eps - 0.009}}}))
+  CHECK(score_verdict(drift, verdict("gyro_scale", {{"scale_error", {eps + 0.009, eps, eps - 0.009}}}))
             .params_right);
   CHECK_FALSE(
-      score_verdict(drift, verdict("gyro_scale", {{"scale_error", {eps + 0.011, eps, eps}}}))
-          .params_right);
+      score_verdict(drift, verdict("gyro_scale", {{"scale_error", {eps + 0.011, eps, eps}}})).params_right);
   CHECK(score_verdict(drift, verdict("clock_drift", {{"rate_error", eps - 0.009}})).params_right);
   const FlightTruth scale = truth_of("gyro_scale");
   CHECK_FALSE(score_verdict(scale, verdict("clock_drift", {{"rate_error", 0.0}})).class_right);
 
   const FlightTruth axes = truth_of("inertia_axes");
   const double angle = axes.params.at("angle_deg").get<double>();
-  CHECK(score_verdict(axes, verdict("sensor_misalignment", {{"angle_deg", angle + 1.9}}))
-            .params_right);
-  CHECK_FALSE(
-      score_verdict(axes, verdict("inertia_axes", {{"angle_deg", angle - 2.1}})).params_right);
+  CHECK(score_verdict(axes, verdict("sensor_misalignment", {{"angle_deg", angle + 1.9}})).params_right);
+  CHECK_FALSE(score_verdict(axes, verdict("inertia_axes", {{"angle_deg", angle - 2.1}})).params_right);
   const FlightTruth mocap_axes = truth_of("inertia_axes", DataKind::markers);
-  CHECK_FALSE(score_verdict(mocap_axes, verdict("sensor_misalignment", {{"angle_deg", angle}}))
-                  .class_right);
+  CHECK_FALSE(score_verdict(mocap_axes, verdict("sensor_misalignment", {{"angle_deg", angle}})).class_right);
 
   const FlightTruth aero = truth_of("aero_torque");
   const double k = aero.params.at("k_N_m_s2").get<double>();

@@ -10,9 +10,8 @@ namespace {
 using nlohmann::json;
 
 bool has_vector(const json& params, const char* key) {
-  return params.is_object() && params.contains(key) && params[key].is_array() &&
-         params[key].size() == 3 && params[key][0].is_number() && params[key][1].is_number() &&
-         params[key][2].is_number();
+  return params.is_object() && params.contains(key) && params[key].is_array() && params[key].size() == 3 &&
+         params[key][0].is_number() && params[key][1].is_number() && params[key][2].is_number();
 }
 Eigen::Vector3d vector_of(const json& j) {
   return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
@@ -26,14 +25,11 @@ bool has_number(const json& params, const char* key) {
 VerdictScore score_verdict(const FlightTruth& truth, const json& verdict) {
   VerdictScore s;
   std::ostringstream d;
-  const std::string said =
-      verdict.is_object() && verdict.contains("effect") && verdict["effect"].is_string()
-          ? verdict["effect"].get<std::string>()
-          : std::string("(no effect)");
-  const json params =
-      verdict.is_object() && verdict.contains("params") ? verdict["params"] : json::object();
-  s.class_right =
-      std::find(truth.equivalent.begin(), truth.equivalent.end(), said) != truth.equivalent.end();
+  const std::string said = verdict.is_object() && verdict.contains("effect") && verdict["effect"].is_string()
+                               ? verdict["effect"].get<std::string>()
+                               : std::string("(no effect)");
+  const json params = verdict.is_object() && verdict.contains("params") ? verdict["params"] : json::object();
+  s.class_right = std::find(truth.equivalent.begin(), truth.equivalent.end(), said) != truth.equivalent.end();
   d << "truth " << truth.effect << ", verdict " << said;
   if (!s.class_right) {
     s.detail = d.str() + ": wrong class";
@@ -54,9 +50,9 @@ VerdictScore score_verdict(const FlightTruth& truth, const json& verdict) {
     if (!has_vector(params, "scale_error")) {
       d << ": no scale_error";
     } else {
-      const Eigen::Vector3d truth_scale =
-          truth.effect == "clock_drift" ? Eigen::Vector3d::Constant(p["rate_error"].get<double>())
-                                        : vector_of(p["scale_error"]);
+      const Eigen::Vector3d truth_scale = truth.effect == "clock_drift"
+                                              ? Eigen::Vector3d::Constant(p["rate_error"].get<double>())
+                                              : vector_of(p["scale_error"]);
       const double error = (vector_of(params["scale_error"]) - truth_scale).cwiseAbs().maxCoeff();
       s.params_right = error <= 0.01;
       d << ": scale error " << error << " vs 0.01";
@@ -65,8 +61,7 @@ VerdictScore score_verdict(const FlightTruth& truth, const json& verdict) {
     if (!has_number(params, "rate_error")) {
       d << ": no rate_error";
     } else {
-      const double error =
-          std::abs(params["rate_error"].get<double>() - p["rate_error"].get<double>());
+      const double error = std::abs(params["rate_error"].get<double>() - p["rate_error"].get<double>());
       s.params_right = error <= 0.01;
       d << ": rate error " << error << " vs 0.01";
     }
@@ -74,8 +69,7 @@ VerdictScore score_verdict(const FlightTruth& truth, const json& verdict) {
     if (!has_number(params, "angle_deg")) {
       d << ": no angle_deg";
     } else {
-      const double error =
-          std::abs(params["angle_deg"].get<double>() - p["angle_deg"].get<double>());
+      const double error = std::abs(params["angle_deg"].get<double>() - p["angle_deg"].get<double>());
       s.params_right = error <= 2.0;
       d << ": angle error " << error << " deg vs 2";
     }

@@ -18,11 +18,9 @@ std::vector<FlightCase> withheld_effect_cases() {
       std::size_t body = (effect_index + std::size_t(i)) % bodies.size();
       // The cylinder's body rate precesses so slowly (0.15 w_z) that a rotor of
       // 30-150 ms relaxation loses < 0.5 % of the energy in a second: no fair case.
-      if (effect == "internal_damping" && bodies[body] == "cylinder")
-        body = (body + 1) % bodies.size();
+      if (effect == "internal_damping" && bodies[body] == "cylinder") body = (body + 1) % bodies.size();
       c.spec.body = bodies[body];
-      c.name = std::string(kind == DataKind::imu ? "imu_" : "markers_") + effect + "_" +
-               std::to_string(i);
+      c.name = std::string(kind == DataKind::imu ? "imu_" : "markers_") + effect + "_" + std::to_string(i);
       c.seed = seed;
       seed += 0x9E3779B1ull;
       cases.push_back(c);

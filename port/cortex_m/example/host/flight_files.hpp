@@ -69,8 +69,7 @@ inline std::vector<HostGyroSample> read_gyro_log(const std::string& imu_path) {
                                ": expected four numbers t,gx,gy,gz");
     }
     if (!samples.empty() && !(v[0] > samples.back().t_s)) {
-      throw std::runtime_error(imu_path + ":" + std::to_string(number) +
-                               ": time does not increase");
+      throw std::runtime_error(imu_path + ":" + std::to_string(number) + ": time does not increase");
     }
     samples.push_back({v[0], Eigen::Vector3d(v[1], v[2], v[3])});
   }

@@ -38,16 +38,16 @@ int main(int argc, char** argv) {
     std::cerr << "generate_flight: cannot write " << (body ? argv[2] : argv[1]) << "\n";
     return 1;
   }
-  std::fprintf(body, "{\"name\": \"generated brick\", \"mass\": 2.3, \"inertia\": {\"tensor\": "
-                     "[[%.17g, 0, 0], [0, %.17g, 0], [0, 0, %.17g]]}}\n",
+  std::fprintf(body,
+               "{\"name\": \"generated brick\", \"mass\": 2.3, \"inertia\": {\"tensor\": "
+               "[[%.17g, 0, 0], [0, %.17g, 0], [0, 0, %.17g]]}}\n",
                moments[0], moments[1], moments[2]);
   std::fprintf(imu, "t,gx,gy,gz\n");
   Eigen::Vector3d omega(-7.13, 4.96, 2.45);  // rad/s, body axes: an off-axis throw
   for (int i = 0; i < samples; ++i) {
     const Eigen::Vector3d measured =
         omega + bias + Eigen::Vector3d(noise(random), noise(random), noise(random));
-    std::fprintf(imu, "%.6f,%.9g,%.9g,%.9g\n", i / rate_hz, measured.x(), measured.y(),
-                 measured.z());
+    std::fprintf(imu, "%.6f,%.9g,%.9g,%.9g\n", i / rate_hz, measured.x(), measured.y(), measured.z());
     for (int k = 0; k < substeps; ++k) {
       omega = aloft::body_rate_rk4_step(inertia, omega, 1.0 / (rate_hz * substeps));
     }

@@ -29,11 +29,12 @@ int main(int argc, char** argv) {
       // Time stamps as the firmware sees them: whole microseconds.
       const double dt = i == 0 ? 0.0
                                : static_cast<double>(std::llround(samples[i].t_s * 1e6) -
-                                                     std::llround(samples[i - 1].t_s * 1e6)) * 1e-6;
+                                                     std::llround(samples[i - 1].t_s * 1e6)) *
+                                     1e-6;
       const aloft::Status s = check.update(samples[i].omega_rad_s, dt);
       if (s != aloft::Status::ok) {
-        throw std::runtime_error(std::string(argv[2]) + ": sample " + std::to_string(i + 1) +
-                                 ": " + aloft::describe(s));
+        throw std::runtime_error(std::string(argv[2]) + ": sample " + std::to_string(i + 1) + ": " +
+                                 aloft::describe(s));
       }
     }
     const double rad_to_deg = 180.0 / 3.14159265358979323846;

@@ -81,14 +81,12 @@ void read_disassembly(const std::string& path) {
     } else if (std::regex_match(op, sub_sp) && args.rfind("sp, ", 0) == 0) {
       const auto hash = args.find('#');
       if (hash != std::string::npos) f.frame_from_disassembly += std::stol(args.substr(hash + 1), nullptr, 0);
-    } else if (op.rfind("str", 0) == 0 && args.find("[sp, #-") != std::string::npos &&
-               args.back() == '!') {
+    } else if (op.rfind("str", 0) == 0 && args.find("[sp, #-") != std::string::npos && args.back() == '!') {
       f.frame_from_disassembly += std::stol(args.substr(args.find("#-") + 2), nullptr, 0);
     }
     const bool is_call = op == "bl" || op == "blx";
-    const bool is_branch = !is_call && op[0] == 'b' && op.rfind("bic", 0) != 0 &&
-                           op.rfind("bkpt", 0) != 0 && op.rfind("bfi", 0) != 0 &&
-                           op.rfind("bfc", 0) != 0;
+    const bool is_branch = !is_call && op[0] == 'b' && op.rfind("bic", 0) != 0 && op.rfind("bkpt", 0) != 0 &&
+                           op.rfind("bfi", 0) != 0 && op.rfind("bfc", 0) != 0;
     std::smatch target;
     if ((is_call || is_branch) && std::regex_search(args, target, call_target)) {
       const std::string callee = target[1];
@@ -103,7 +101,8 @@ void read_disassembly(const std::string& path) {
 void read_call_graph_info(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot open");
-  static const std::regex node(R"re(^node: \{ title: "(?:[^"]*:)?([^":]+)" label: "[^"]*\\n(\d+) bytes \(([a-z,]+)\))re");
+  static const std::regex node(
+      R"re(^node: \{ title: "(?:[^"]*:)?([^":]+)" label: "[^"]*\\n(\d+) bytes \(([a-z,]+)\))re");
   std::string line;
   while (std::getline(in, line)) {
     std::smatch m;
@@ -162,12 +161,18 @@ int main(int argc, char** argv) {
     for (int i = 2; i + 1 < argc; i += 2) {
       const std::string option = argv[i];
       const std::string value = argv[i + 1];
-      if (option == "--ci") ci_files.push_back(value);
-      else if (option == "--root") root = value;
-      else if (option == "--interrupt") interrupts.push_back(value);
-      else if (option == "--indirect") indirect_targets.push_back(value);
-      else if (option == "--report") reports.push_back(value);
-      else throw std::runtime_error("unknown option " + option);
+      if (option == "--ci")
+        ci_files.push_back(value);
+      else if (option == "--root")
+        root = value;
+      else if (option == "--interrupt")
+        interrupts.push_back(value);
+      else if (option == "--indirect")
+        indirect_targets.push_back(value);
+      else if (option == "--report")
+        reports.push_back(value);
+      else
+        throw std::runtime_error("unknown option " + option);
     }
     for (const auto& f : ci_files) read_call_graph_info(f);
     for (const auto& s : std::vector<std::string>{root}) {
