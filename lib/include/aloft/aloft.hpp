@@ -6,6 +6,8 @@
 #include "aloft/deviation.hpp"
 #include "aloft/euler_equations.hpp"
 #include "aloft/flight_detector.hpp"
+#include "aloft/imu_bus.hpp"
+#include "aloft/imu_sample.hpp"
 #include "aloft/inertia_tensor.hpp"
 #include "aloft/lane_angle.hpp"
 #include "aloft/lane_rotation.hpp"

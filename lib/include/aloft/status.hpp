@@ -18,6 +18,12 @@ enum class [[nodiscard]] Status : std::uint8_t{
     invalid_dimension,                  // a mass, length or rate that must be positive is not
     zero_vector,                        // a direction was asked of a zero vector
     not_airborne,                       // the onboard check is waiting for release or has landed
+    time_not_increasing,                // a sample's time stamp is not after the previous one
+    bus_error,                          // the port's bus call failed
+    sensor_not_found,                   // the chip's identity register holds another value
+    register_not_kept,                  // a configuration register reads back other than written
+    storage_full,                       // no room left where data must be written
+    corrupt_data,                       // stored or received bytes fail their check
 };
 
 // One short English phrase per status, for logs and the host program's messages.
@@ -33,6 +39,12 @@ constexpr const char* describe(Status s) {
     case Status::invalid_dimension: return "a mass, length or rate is not positive";
     case Status::zero_vector: return "zero vector has no direction";
     case Status::not_airborne: return "not airborne";
+    case Status::time_not_increasing: return "time stamp is not after the previous one";
+    case Status::bus_error: return "bus transfer failed";
+    case Status::sensor_not_found: return "sensor not found (identity register holds another value)";
+    case Status::register_not_kept: return "a configuration register did not keep its value";
+    case Status::storage_full: return "storage is full";
+    case Status::corrupt_data: return "data fail their integrity check";
   }
   return "unknown status";
 }
