@@ -26,4 +26,6 @@ template class FlightDetector<float>;
 template class FlightDetector<double>;
 template class OnboardCheck<float, 8>;
 template class OnboardCheck<double, 8>;
+template class OnboardPipeline<float, 8>;
+template class OnboardPipeline<double, 8>;
 }  // namespace aloft

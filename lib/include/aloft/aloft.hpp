@@ -13,6 +13,7 @@
 #include "aloft/lane_rotation.hpp"
 #include "aloft/lanes.hpp"
 #include "aloft/onboard_check.hpp"
+#include "aloft/onboard_pipeline.hpp"
 #include "aloft/principal_dynamics.hpp"
 #include "aloft/principal_frame.hpp"
 #include "aloft/rigid_body_state.hpp"
