@@ -26,6 +26,12 @@ template class FlightDetector<float>;
 template class FlightDetector<double>;
 template class OnboardCheck<float, 8>;
 template class OnboardCheck<double, 8>;
+template class LeverArmFit<float>;
+template class LeverArmFit<double>;
+template class SampleHistory<float, 32>;
+template class SampleHistory<double, 32>;
+template class ReleaseDetector<float, 32>;
+template class ReleaseDetector<double, 32>;
 template class OnboardPipeline<float, 8>;
 template class OnboardPipeline<double, 8>;
 }  // namespace aloft

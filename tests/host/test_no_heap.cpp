@@ -10,6 +10,35 @@
 
 namespace {
 
+// The onboard pipeline over a held / spinning free flight / impact sequence with a gap
+// and a clipped sample, with r known or fitted. Returns a value so nothing is optimised out.
+template <typename S>
+S exercise_pipeline(const aloft::InertiaTensor<S>& inertia, bool r_known) {
+  using aloft::Vec3;
+  aloft::OnboardPipelineSettings<S> settings;
+  settings.imu_position_known = r_known;
+  settings.imu_position_m = Vec3<S>(S(0.03), S(0), S(0));
+  aloft::OnboardPipeline<S, 8> pipeline(inertia, settings);
+  const Vec3<S> spin = inertia.principal_axes() * Vec3<S>(S(0), S(0), S(20));
+  S sink = S(0);
+  for (int k = 0; k < 2000; ++k) {
+    aloft::ImuSample<S> sample;
+    sample.t_us = 1000000u + static_cast<std::uint64_t>(k) * 1000u + (k > 1500 ? 50000u : 0u);
+    const bool flying = k >= 500 && k < 1200;
+    sample.gyro_rad_s = flying ? spin : Vec3<S>::Zero();
+    sample.accel_m_s2 = flying ? Vec3<S>(spin.cross(spin.cross(settings.imu_position_m)))
+                               : Vec3<S>(S(0), S(0), k == 1200 ? S(300) : S(9.81));
+    if (k == 1501) sample.flags = aloft::imu_gap_before;
+    if (k == 900) sample.flags = aloft::imu_gyro_clipped;
+    REQUIRE(pipeline.push(sample) == aloft::Status::ok);
+    aloft::FlightResult<S> flight;
+    while (pipeline.take_finished_flight(flight))
+      sink += flight.overall.rms_da() + flight.imu_position_m.norm();
+  }
+  pipeline.finish();
+  return sink + static_cast<S>(pipeline.stream().gaps);
+}
+
 // Everything lib/ offers, once, for scalar S. Returns a value so nothing is optimised out.
 template <typename S>
 S exercise_core() {
@@ -60,7 +89,8 @@ S exercise_core() {
     REQUIRE(check.update(Vec3<S>(S(1), std::numeric_limits<S>::quiet_NaN(), S(0)), S(1e-3)) ==
             Status::non_finite_input);  // a refused sample
   }
-  return sink + check.overall().rms_da() + check.seed(0).stats.rms_da();
+  return sink + check.overall().rms_da() + check.seed(0).stats.rms_da() + exercise_pipeline(principal, true) +
+         exercise_pipeline(principal, false);
 }
 
 }  // namespace

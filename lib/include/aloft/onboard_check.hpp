@@ -77,6 +77,18 @@ class OnboardCheck {
     return Status::ok;
   }
 
+  // A sample whose gyro is no measurement (an axis clipped): the live simulations step
+  // over its dt, nothing is compared and no seed starts. Returns ok or an error status.
+  Status skip(Scalar dt) {
+    if (samples_ == 0) return std::isfinite(dt) ? Status::ok : Status::non_finite_input;
+    const Status s = validate_step(dt);
+    if (s != Status::ok) return s;
+    for (int i = 0; i < K; ++i) {
+      if (slots_[i].live) slots_[i].omega = principal_rate_rk4_step(coefficients_, slots_[i].omega, dt);
+    }
+    return Status::ok;
+  }
+
   FlightPhase phase() const { return detector_.phase(); }
   std::uint32_t airborne_samples() const { return samples_; }
   std::uint32_t seeds_started() const { return seeds_started_; }

@@ -1,0 +1,75 @@
+// What free flight looks like to a body-mounted IMU, per sample, in body axes:
+//  - accelerometer at r (m, from the centre of mass): in free fall gravity is not sensed,
+//    so the specific force is only the lever arm's, a = w_dot x r + w x (w x r) = K(w, w_dot) r
+//    with K = [w_dot]x + [w]x^2. A hand's force (or the ground's) adds F/m to it.
+//  - gyro, with the nominal tensor I: the torque I w_dot + w x (I w) is zero in flight.
+//    A tensor off by a fraction e leaves at most about e (|I w_dot| + |w| |I w|) of it, so
+//    the torque is judged relative to that scale: a 20 % wrong tensor cannot reach the
+//    limit, a hand that spins the body up (torque ~ I w_dot) does.
+// Both tests take w_dot from gyro differences (aloft/sample_history.hpp), so their
+// limits carry a floor for its noise.
+#pragma once
+
+#include "aloft/inertia_tensor.hpp"
+#include "aloft/rotation.hpp"
+
+namespace aloft {
+
+template <typename Scalar>
+struct FreeFlightSettings {
+  // Specific force left after the lever arm's is removed, counted as free flight
+  // (m/s²): floor + relative * |K r|. The floor covers sensor noise and air drag, the
+  // relative part an r, a scale factor or a filter that is off by that fraction.
+  Scalar accel_floor_m_s2 = Scalar(2.0);
+  Scalar accel_relative = Scalar(0.1);
+  // The gyro's torque over its scale (dimensionless) above which a torque acts.
+  Scalar torque_relative = Scalar(0.5);
+  // Noise floor of w_dot from gyro differences (rad/s²), added to the torque's scale.
+  Scalar angular_accel_floor_rad_s2 = Scalar(30);
+};
+
+// K(w, w_dot) with a = K r: the lever arm's specific force is linear in r.
+template <typename Scalar>
+inline Mat3<Scalar> lever_arm_matrix(const Vec3<Scalar>& w, const Vec3<Scalar>& w_dot) {
+  Mat3<Scalar> wx;
+  wx << Scalar(0), -w.z(), w.y(), w.z(), Scalar(0), -w.x(), -w.y(), w.x(), Scalar(0);
+  Mat3<Scalar> kx;
+  kx << Scalar(0), -w_dot.z(), w_dot.y(), w_dot.z(), Scalar(0), -w_dot.x(), -w_dot.y(), w_dot.x(), Scalar(0);
+  return kx + wx * wx;
+}
+
+// One sample's kinematics in body axes: rate, its derivative, specific force.
+template <typename Scalar>
+struct BodyKinematics {
+  Vec3<Scalar> w = Vec3<Scalar>::Zero();      // rad/s
+  Vec3<Scalar> w_dot = Vec3<Scalar>::Zero();  // rad/s²
+  Vec3<Scalar> a = Vec3<Scalar>::Zero();      // m/s²
+};
+
+// The largest specific force at the centre of mass that still counts as free flight for
+// lever arm r (m/s²): the floor plus a fraction of the lever arm's own specific force.
+template <typename Scalar>
+inline Scalar free_flight_accel_limit(const FreeFlightSettings<Scalar>& s, const BodyKinematics<Scalar>& k,
+                                      const Vec3<Scalar>& r) {
+  return s.accel_floor_m_s2 + s.accel_relative * (lever_arm_matrix(k.w, k.w_dot) * r).norm();
+}
+
+// |a - K r|: the specific force at the centre of mass (m/s²), zero in free flight.
+template <typename Scalar>
+inline Scalar centre_specific_force(const BodyKinematics<Scalar>& k, const Vec3<Scalar>& r) {
+  return (k.a - lever_arm_matrix(k.w, k.w_dot) * r).norm();
+}
+
+// The gyro's torque over its scale: near 0 in free flight (up to the tensor's error),
+// near 1 while an outside torque drives the rate.
+template <typename Scalar>
+inline Scalar relative_torque(const FreeFlightSettings<Scalar>& s, const Mat3<Scalar>& inertia,
+                              const BodyKinematics<Scalar>& k) {
+  const Vec3<Scalar> iw_dot = inertia * k.w_dot;
+  const Vec3<Scalar> iw = inertia * k.w;
+  const Vec3<Scalar> torque = iw_dot + k.w.cross(iw);
+  const Scalar scale = iw_dot.norm() + k.w.norm() * iw.norm() + inertia.norm() * s.angular_accel_floor_rad_s2;
+  return torque.norm() / scale;
+}
+
+}  // namespace aloft

@@ -1,0 +1,58 @@
+// The accelerometer's position r (body axes, m, from the centre of mass) by least squares
+// over free-flight samples: each gives a = K(w, w_dot) r (aloft/free_flight_residual.hpp),
+// so r solves (sum K^T K) r = sum K^T a, a 3x3 system kept as running sums: no samples are
+// stored. A spin about one fixed axis cannot see r's component along that axis (it moves
+// nothing); a small ridge (ridge_rad_s2² per sample) sets that component to zero instead
+// of leaving it to noise, and shrinks r of a body that hardly turns to nothing, where a
+// is then its own residual (a drop).
+#pragma once
+
+#include <cstdint>
+
+#include "aloft/free_flight_residual.hpp"
+
+namespace aloft {
+
+template <typename Scalar>
+class LeverArmFit {
+ public:
+  void add(const BodyKinematics<Scalar>& k) {
+    const Mat3<Scalar> m = lever_arm_matrix(k.w, k.w_dot);
+    ktk_ += m.transpose() * m;
+    kta_ += m.transpose() * k.a;
+    ata_ += k.a.squaredNorm();
+    ++count_;
+  }
+  void merge(const LeverArmFit& other) {
+    ktk_ += other.ktk_;
+    kta_ += other.kta_;
+    ata_ += other.ata_;
+    count_ += other.count_;
+  }
+  void reset() { *this = LeverArmFit(); }
+
+  // r minimising sum |a - K r|² + ridge² n |r|² (zero when there are no samples).
+  Vec3<Scalar> solve(Scalar ridge_rad_s2) const {
+    if (count_ == 0) return Vec3<Scalar>::Zero();
+    const Scalar lambda = ridge_rad_s2 * ridge_rad_s2 * static_cast<Scalar>(count_);
+    const Mat3<Scalar> m = ktk_ + lambda * Mat3<Scalar>::Identity();
+    return m.inverse() * kta_;  // positive definite: the ridge keeps it invertible
+  }
+
+  // Root mean square of |a - K r| over the samples (m/s²).
+  Scalar rms_residual(const Vec3<Scalar>& r) const {
+    if (count_ == 0) return Scalar(0);
+    const Scalar sse = ata_ - Scalar(2) * r.dot(kta_) + r.dot(ktk_ * r);
+    return std::sqrt((sse > Scalar(0) ? sse : Scalar(0)) / static_cast<Scalar>(count_));
+  }
+
+  std::uint32_t count() const { return count_; }
+
+ private:
+  Mat3<Scalar> ktk_ = Mat3<Scalar>::Zero();
+  Vec3<Scalar> kta_ = Vec3<Scalar>::Zero();
+  Scalar ata_ = Scalar(0);
+  std::uint32_t count_ = 0;
+};
+
+}  // namespace aloft

@@ -1,0 +1,228 @@
+// Release and landing of a spinning, off-centre IMU (aloft/free_flight_residual.hpp has
+// the physics). A sample is in free flight when the gyro sees no torque and the specific
+// force left at the centre of mass, |a - K r|, is within its limit. Release is believed
+// once free flight has lasted `confirm_us` (and `confirm_samples`); it is then dated back
+// to the first sample of that stretch whose residual is below `release_fraction` of the
+// limit, so a hand force that fades out is not taken for free flight while it still acts.
+// Landing is `landing_samples` consecutive samples that are not free (a catch, an impact),
+// dated back to the first of them.
+//
+// Without r (no `imu.position` and no earlier flight to estimate it from) every sample
+// stretch the gyro calls torque-free is fitted: the earliest start s whose fit over
+// [s, now] has an rms residual below `fit_rms_fraction` of the limit, a bounded |r|, and
+// small residuals at both ends is the free stretch. A fit over a few milliseconds could
+// absorb a hand force that happens to lie across the spin axis; the torque test, the
+// bound on |r|, the residual at the stretch's first sample and the flight-long fit of the
+// pipeline (aloft/onboard_pipeline.hpp), which must stay small and stable before its r is
+// used for later flights, keep that from going further than one flight.
+#pragma once
+
+#include <cstdint>
+
+#include "aloft/lever_arm_estimate.hpp"
+#include "aloft/sample_history.hpp"
+
+namespace aloft {
+
+template <typename Scalar>
+struct ReleaseDetectorSettings {
+  FreeFlightSettings<Scalar> free_flight = {};
+  std::uint32_t confirm_us = 4000;           // free flight this long (µs) before release is believed
+  std::uint16_t confirm_samples = 5;         // and at least this many samples
+  Scalar release_fraction = Scalar(0.5);     // release: first sample below this fraction of the limit
+  Scalar level_margin_m_s2 = Scalar(0.2);    // and below twice the flight's mean residual plus this
+  std::uint32_t fade_out_at_most_us = 3000;  // a fading hand force is extrapolated this far at most
+  std::uint16_t landing_samples = 3;         // consecutive samples that are not free: landing
+  Scalar max_lever_arm_m = Scalar(0.15);     // |r| beyond this is not an IMU inside the body
+  Scalar fit_rms_fraction = Scalar(0.5);     // a fitted r must leave its rms below this fraction of the limit
+  Scalar ridge_rad_s2 = Scalar(10);          // see aloft/lever_arm_estimate.hpp
+  std::uint32_t derivative_half_span_us = 1000;  // w_dot from gyro samples about this far (µs) either side
+};
+
+template <typename Scalar, int N>
+class ReleaseDetector {
+ public:
+  using History = SampleHistory<Scalar, N>;
+
+  explicit ReleaseDetector(const ReleaseDetectorSettings<Scalar>& settings, const Mat3<Scalar>& inertia)
+      : settings_(settings), inertia_(inertia) {}
+
+  void reset() {
+    in_run_ = false;
+    landing_run_ = 0;
+  }
+
+  // Is sample i free (torque-free gyro, residual within the limit for lever arm r)?
+  bool free_at(const History& history, std::uint32_t i, std::uint32_t h, const Vec3<Scalar>& r) const {
+    BodyKinematics<Scalar> k;
+    if (!history.kinematics(i, h, k)) return false;
+    return torque_free(k) && centre_specific_force(k, r) <= limit(k, r);
+  }
+
+  // Evaluates sample c while waiting for release; r is the known lever arm or null.
+  // True when release is confirmed: `release` is its sample index, `r_used` the lever
+  // arm it was found with (fitted when r is null).
+  bool find_release(const History& history, std::uint32_t c, std::uint32_t h, const Vec3<Scalar>* r,
+                    std::uint64_t not_before_us, std::uint32_t& release, Vec3<Scalar>& r_used) {
+    BodyKinematics<Scalar> k;
+    if (!history.kinematics(c, h, k) || !torque_free(k) ||
+        (r != nullptr && centre_specific_force(k, *r) > limit(k, *r))) {
+      in_run_ = false;
+      return false;
+    }
+    if (!in_run_ || !history.holds(run_start_ - h)) run_start_ = in_run_ ? history.oldest() + h : c;
+    in_run_ = true;
+    std::uint32_t start = run_start_;
+    if (r != nullptr) {
+      r_used = *r;
+    } else if (!fit_free_stretch(history, c, h, k, start, r_used)) {
+      return false;
+    }
+    if (!confirmed(history, start, c, h) || history.t_us(start) < not_before_us) return false;
+    release = first_at_flight_level(history, start, c, h, r_used);
+    return true;
+  }
+
+  // Evaluates sample c while airborne. True when landing is confirmed (`landing` is the
+  // index of its first sample).
+  // `not_before`: the first sample that may still be dated the landing (not yet fed).
+  bool find_landing(const History& history, std::uint32_t c, std::uint32_t h, const Vec3<Scalar>& r,
+                    std::uint32_t not_before, std::uint32_t& landing) {
+    BodyKinematics<Scalar> k;
+    bool evidence = false;
+    if (history.kinematics(c, h, k)) {
+      const Scalar e = centre_specific_force(k, r);
+      evidence = !torque_free(k) || e > limit(k, r);
+      if (!evidence) {
+        landing_run_ = 0;
+        flight_level_ += (e - flight_level_) / Scalar(32);
+      }
+    } else {
+      evidence = (history.flags(c) & imu_accel_clipped) != 0;  // else: no verdict, run kept
+    }
+    if (evidence) {
+      if (landing_run_ == 0) landing_start_ = c;
+      ++landing_run_;
+    }
+    if (landing_run_ < settings_.landing_samples) return false;
+    landing = landing_start_;
+    // Back to where the residual left the flight's own level (a force that builds up).
+    const Scalar level = Scalar(2) * flight_level_ + settings_.level_margin_m_s2;
+    while (landing > not_before && history.holds(landing - 1 - h) &&
+           residual_above(history, landing - 1, h, r, level)) {
+      --landing;
+    }
+    return true;
+  }
+
+  // Samples from this index on may still turn out to be the landing (not to be fed yet).
+  std::uint32_t pending_from(std::uint32_t c) const { return landing_run_ > 0 ? landing_start_ : c + 1; }
+
+  bool torque_free(const BodyKinematics<Scalar>& k) const {
+    return relative_torque(settings_.free_flight, inertia_, k) <= settings_.free_flight.torque_relative;
+  }
+  Scalar limit(const BodyKinematics<Scalar>& k, const Vec3<Scalar>& r) const {
+    return free_flight_accel_limit(settings_.free_flight, k, r);
+  }
+  const ReleaseDetectorSettings<Scalar>& settings() const { return settings_; }
+
+ private:
+  // The earliest start in [run_start_, c] whose fitted r passes (see the file comment).
+  bool fit_free_stretch(const History& history, std::uint32_t c, std::uint32_t h,
+                        const BodyKinematics<Scalar>& kc, std::uint32_t& start, Vec3<Scalar>& r_fit) const {
+    LeverArmFit<Scalar> fit;
+    bool found = false;
+    for (std::uint32_t j = c + 1; j-- > run_start_;) {
+      BodyKinematics<Scalar> kj;
+      if (!history.kinematics(j, h, kj)) break;
+      fit.add(kj);
+      const Vec3<Scalar> r = fit.solve(settings_.ridge_rad_s2);
+      if (r.norm() > settings_.max_lever_arm_m) continue;
+      const Scalar lc = limit(kc, r);
+      if (fit.rms_residual(r) > settings_.fit_rms_fraction * lc || centre_specific_force(kc, r) > lc ||
+          centre_specific_force(kj, r) > limit(kj, r)) {
+        continue;
+      }
+      start = j;
+      r_fit = r;
+      found = true;
+    }
+    return found;
+  }
+
+  bool confirmed(const History& history, std::uint32_t start, std::uint32_t c, std::uint32_t h) const {
+    const std::uint32_t n = c - start + 1;
+    if (n + 2 * h + 2 >= static_cast<std::uint32_t>(N)) return true;  // as long as the history allows
+    return n >= settings_.confirm_samples && history.t_us(c) - history.t_us(start) >= settings_.confirm_us;
+  }
+
+  // The first sample of [start, c] whose residual is down at the level of the stretch's
+  // later half (surely in flight): a hand force that fades out stays above it until it
+  // is gone, where a fixed fraction of the limit would be crossed while it still acts.
+  std::uint32_t first_at_flight_level(const History& history, std::uint32_t start, std::uint32_t c,
+                                      std::uint32_t h, const Vec3<Scalar>& r) {
+    Scalar sum = Scalar(0);
+    std::uint32_t n = 0;
+    for (std::uint32_t j = start + (c - start) / 2; j <= c; ++j) {
+      BodyKinematics<Scalar> k;
+      if (!history.kinematics(j, h, k)) continue;
+      sum += centre_specific_force(k, r);
+      ++n;
+    }
+    flight_level_ = n > 0 ? sum / static_cast<Scalar>(n) : Scalar(0);
+    const Scalar level = Scalar(2) * flight_level_ + settings_.level_margin_m_s2;
+    for (std::uint32_t j = start; j < c; ++j) {
+      if (!residual_above(history, j, h, r, level)) return after_fade_out(history, j, c, h, r, level);
+    }
+    return c;
+  }
+
+  // A contact force fades to zero at a finite rate, and its last part hides in the noise:
+  // the line through the residual at j0 (already at flight level) and at the newest
+  // earlier sample still above twice that level meets zero at the release. The first
+  // sample from then on is the release (noise at j0 can only move it later).
+  std::uint32_t after_fade_out(const History& history, std::uint32_t j0, std::uint32_t c, std::uint32_t h,
+                               const Vec3<Scalar>& r, Scalar level) const {
+    const Scalar e0 = residual(history, j0, h, r);
+    std::uint32_t j1 = j0;
+    Scalar e1 = e0;
+    while (j1 > j0 - 16u && j1 > h && history.holds(j1 - 1 - h)) {
+      --j1;
+      e1 = residual(history, j1, h, r);
+      if (e1 < Scalar(0) || e1 > Scalar(2) * level) break;
+    }
+    if (!(e1 > Scalar(2) * level) || !(e1 > e0)) return j0;
+    const Scalar span_us = static_cast<Scalar>(history.t_us(j0) - history.t_us(j1));
+    Scalar to_zero_us = span_us * e0 / (e1 - e0);
+    const Scalar cap_us = static_cast<Scalar>(settings_.fade_out_at_most_us);
+    if (to_zero_us > cap_us) to_zero_us = cap_us;
+    const std::uint64_t zero_us = history.t_us(j0) + static_cast<std::uint64_t>(to_zero_us);
+    std::uint32_t j = j0;
+    while (j < c && history.t_us(j) < zero_us) ++j;
+    return j;
+  }
+
+  // |a - K r| at sample j, or -1 when its kinematics are not available.
+  Scalar residual(const History& history, std::uint32_t j, std::uint32_t h, const Vec3<Scalar>& r) const {
+    BodyKinematics<Scalar> k;
+    return history.kinematics(j, h, k) ? centre_specific_force(k, r) : Scalar(-1);
+  }
+
+  bool residual_above(const History& history, std::uint32_t j, std::uint32_t h, const Vec3<Scalar>& r,
+                      Scalar level) const {
+    BodyKinematics<Scalar> k;
+    if (!history.kinematics(j, h, k)) return true;
+    const Scalar e = centre_specific_force(k, r);
+    return e > level || e > settings_.release_fraction * limit(k, r);
+  }
+
+  ReleaseDetectorSettings<Scalar> settings_;
+  Mat3<Scalar> inertia_;
+  std::uint32_t run_start_ = 0;
+  std::uint32_t landing_start_ = 0;
+  std::uint16_t landing_run_ = 0;
+  bool in_run_ = false;
+  Scalar flight_level_ = Scalar(0);  // running mean residual in flight (m/s²)
+};
+
+}  // namespace aloft

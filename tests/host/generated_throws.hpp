@@ -1,0 +1,312 @@
+// Generated IMU recordings of hand throws, for the release and landing tests: the truth
+// (release and landing instants, the IMU's position) is known exactly, the sensor is not
+// ideal. One recording holds the body, then throws (or drops) it several times:
+//   - hold: the hand supports it (specific force g up) with a little tremor;
+//   - swing: the hand applies force AND torque: the body is accelerated along an arc
+//     (force up to 40 m/s² turning through 90° in the vertical plane) while its rate
+//     grows from zero to the release rate; the force fades to zero at the release over a
+//     few milliseconds (reaching zero with a finite slope, as contact breaks), the
+//     torque either fades or stops there;
+//   - flight: torque-free (Euler's equations, RK4 with the true tensor); gravity is not
+//     sensed; a small drag-like force (≤ 0.3 m/s²) is;
+//   - landing: a catch (force rising over 5–15 ms to 20–60 m/s², the rate fading out) or an
+//     impact (1–2 ms to 200–1500 m/s², the rate thrown off), then held again.
+// The accelerometer at r reads R^T f + w_dot x r + w x (w x r); both sensors pass a
+// 2nd-order Butterworth low-pass, are sampled at the rate, get white noise, and clip at
+// ±4000 °/s and ±16 g (flagged). Sensor axes may be rotated against body axes.
+// Host only (std::vector): the bare-metal runner has no heap.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "aloft/imu_sample.hpp"
+#include "aloft/inertia_tensor.hpp"
+
+namespace aloft_test {
+
+using V3 = aloft::Vec3<double>;
+using M3 = aloft::Mat3<double>;
+using Q = aloft::Quat<double>;
+
+enum class MotionKind { spin_throw, drop, still, waving };
+enum class LandingKind { catch_by_hand, impact };
+
+struct TrueFlight {
+  double release_s = 0;
+  double landing_s = 0;
+  double release_rate_rad_s = 0;
+};
+
+struct Recording {
+  std::vector<aloft::ImuSample<double>> samples;
+  std::vector<TrueFlight> flights;
+  std::uint64_t t0_us = 0;  // stamp of t = 0 s
+  double rate_hz = 0;
+  MotionKind kind = MotionKind::spin_throw;
+  V3 imu_position_m = V3::Zero();
+  Q sensor_to_body = Q::Identity();
+  M3 true_tensor = M3::Identity();
+  M3 nominal_tensor = M3::Identity();  // what the pipeline is told (maybe wrong)
+};
+
+struct RecordingSpec {
+  MotionKind kind = MotionKind::spin_throw;
+  double rate_hz = 1000;
+  int throws = 3;
+  double tensor_error = 0;  // nominal principal moments off by ± this fraction
+  bool rotate_sensor = false;
+  std::uint32_t seed = 1;
+};
+
+// 2nd-order Butterworth low-pass (bilinear transform), one per signal axis.
+class Butterworth2 {
+ public:
+  Butterworth2(double cutoff_hz, double rate_hz) {
+    const double k = std::tan(3.14159265358979323846 * cutoff_hz / rate_hz);
+    const double q = std::sqrt(2.0);
+    const double norm = 1.0 / (1.0 + q * k + k * k);
+    b0_ = k * k * norm;
+    b1_ = 2.0 * b0_;
+    b2_ = b0_;
+    a1_ = 2.0 * (k * k - 1.0) * norm;
+    a2_ = (1.0 - q * k + k * k) * norm;
+  }
+  V3 step(const V3& x) {
+    if (!primed_) {  // start in steady state
+      x1_ = x2_ = x;
+      y1_ = y2_ = x;
+      primed_ = true;
+    }
+    const V3 y = b0_ * x + b1_ * x1_ + b2_ * x2_ - a1_ * y1_ - a2_ * y2_;
+    x2_ = x1_;
+    x1_ = x;
+    y2_ = y1_;
+    y1_ = y;
+    return y;
+  }
+
+ private:
+  double b0_, b1_, b2_, a1_, a2_;
+  V3 x1_, x2_, y1_, y2_;
+  bool primed_ = false;
+};
+
+class ThrowGenerator {
+ public:
+  explicit ThrowGenerator(const RecordingSpec& spec) : spec_(spec), rng_(spec.seed) {}
+
+  Recording generate() {
+    pick_body();
+    fine_dt_ = std::min(1e-4, 0.1 / spec_.rate_hz);
+    t_ = 0;
+    hold(uniform(0.4, 0.8));
+    for (int i = 0; i < spec_.throws; ++i) {
+      switch (spec_.kind) {
+        case MotionKind::spin_throw: throw_once(uniform(0.0, 1.0) < 0.15 ? 0.0 : uniform(3.0, 40.0)); break;
+        case MotionKind::drop: throw_once(-1.0); break;
+        case MotionKind::still: hold(2.0); break;
+        case MotionKind::waving: wave(uniform(1.0, 2.0)); break;
+      }
+      hold(uniform(0.6, 1.2));
+    }
+    return out_;
+  }
+
+ private:
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
+  double normal() { return std::normal_distribution<double>(0.0, 1.0)(rng_); }
+  V3 unit() {
+    const V3 v(normal(), normal(), normal());
+    return v.normalized();
+  }
+
+  void pick_body() {
+    // Shapes: a long rod, a flat disc, a box, a near-sphere, a T-handle-like asymmetric top.
+    static const double kShapes[5][3] = {
+        {1, 5, 5.2}, {1, 1.05, 2}, {1, 1.6, 2.3}, {1, 1.1, 1.2}, {1, 2.2, 2.9}};
+    const int shape = static_cast<int>(uniform(0, 5));
+    const double scale = uniform(2e-4, 2e-3);
+    const V3 moments = V3(kShapes[shape][0], kShapes[shape][1], kShapes[shape][2]) * scale;
+    const Q axes = Q(aloft::quat_exp<double>(unit() * uniform(0, 3.1)));
+    const M3 r = axes.toRotationMatrix();
+    out_.true_tensor = r * moments.asDiagonal() * r.transpose();
+    V3 nominal = moments;
+    for (int i = 0; i < 3; ++i) nominal[i] *= 1.0 + (uniform(0, 1) < 0.5 ? -1.0 : 1.0) * spec_.tensor_error;
+    std::sort(nominal.data(), nominal.data() + 3);
+    if (nominal[2] > nominal[0] + nominal[1]) nominal[2] = nominal[0] + nominal[1];  // stay a body
+    out_.nominal_tensor = r * nominal.asDiagonal() * r.transpose();
+    out_.imu_position_m = unit() * uniform(0.005, 0.060);
+    out_.sensor_to_body =
+        spec_.rotate_sensor ? aloft::quat_exp<double>(unit() * uniform(0, 3.1)) : Q::Identity();
+    out_.rate_hz = spec_.rate_hz;
+    out_.kind = spec_.kind;
+    out_.t0_us = 1000000 + static_cast<std::uint64_t>(uniform(0, 1e6));
+    cutoff_hz_ = std::min(0.25 * spec_.rate_hz, 500.0);
+    gyro_noise_ = uniform(0.002, 0.02);
+    accel_noise_ = uniform(0.02, 0.15);
+    tremor_phase_ = V3(uniform(0, 6.3), uniform(0, 6.3), uniform(0, 6.3));
+    gyro_filter_ = Butterworth2(cutoff_hz_, 1.0 / fine_step());
+    accel_filter_ = Butterworth2(cutoff_hz_, 1.0 / fine_step());
+  }
+  double fine_step() const { return std::min(1e-4, 0.1 / spec_.rate_hz); }
+
+  // The hand holds the body: g up, a little tremor of force and rate.
+  void hold(double seconds) {
+    const double end = t_ + seconds;
+    const double amp = spec_.kind == MotionKind::still ? 0.0 : 1.0;
+    while (t_ < end) {
+      const V3 s(std::sin(7.0 * t_ + tremor_phase_.x()), std::sin(9.0 * t_ + tremor_phase_.y()),
+                 std::sin(5.0 * t_ + tremor_phase_.z()));
+      step(V3(0, 0, 9.81) + amp * 0.3 * s, amp * 0.15 * s);
+    }
+  }
+
+  // Swing with force and torque, release (rate > 0), or open the hand (rate < 0: a drop).
+  void throw_once(double release_rate) {
+    const bool drop = release_rate < 0;
+    const double swing = drop ? uniform(0.05, 0.2) : uniform(0.15, 0.35);
+    // Contact ends at a finite rate: the force falls to zero with a slope, not tangentially.
+    const double taper = uniform(0.002, 0.010);
+    const bool torque_to_the_end = !drop && uniform(0, 1) < 0.5;
+    const V3 w0 = omega_;
+    const V3 w_rel = drop ? unit() * uniform(0.0, 0.4) : unit() * release_rate;
+    const double peak = drop ? 0.0 : uniform(10, 40);
+    const double theta0 = uniform(-1.0, 1.0);
+    const V3 across = unit();
+    const double start = t_;
+    const double release = t_ + swing;
+    while (t_ < release - 0.5 * fine_dt_) {
+      const double u = (t_ - start) / swing;
+      const double ramp = u < 0.3 ? (u / 0.3) * (u / 0.3) * (3 - 2 * u / 0.3) : 1.0;
+      const double th = theta0 + 1.57 * u;
+      const V3 dir = (V3(std::cos(th), 0, std::sin(th)) + 0.3 * across).normalized();
+      V3 f = (1 - ramp) * V3(0, 0, 9.81) + ramp * peak * dir;
+      if (drop) f = V3(0, 0, 9.81);
+      const double left = release - t_;
+      if (left < taper) {
+        const double x = std::sin(1.5707963 * left / taper);
+        f *= x;
+      }
+      const double sigma = torque_to_the_end ? u * u : u * u * (3 - 2 * u);
+      step(f, w0 + (w_rel - w0) * sigma);
+    }
+    out_.flights.push_back({t_, 0, w_rel.norm()});
+    fly(drop ? uniform(0.15, 0.5) : uniform(0.25, 0.8));
+    out_.flights.back().landing_s = t_;
+    land(uniform(0, 1) < 0.5 ? LandingKind::catch_by_hand : LandingKind::impact);
+  }
+
+  void fly(double seconds) {
+    const double end = t_ + seconds;
+    const V3 drag = unit() * uniform(0, 0.3);
+    const M3 inverse = out_.true_tensor.inverse();
+    const M3& i = out_.true_tensor;
+    auto rate = [&](const V3& w) -> V3 { return inverse * (-w.cross(i * w)); };
+    while (t_ < end) {
+      const double h = fine_dt_;
+      const V3 k1 = rate(omega_);
+      const V3 k2 = rate(omega_ + 0.5 * h * k1);
+      const V3 k3 = rate(omega_ + 0.5 * h * k2);
+      const V3 k4 = rate(omega_ + h * k3);
+      step(orientation_ * drag, omega_ + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4));
+    }
+  }
+
+  void land(LandingKind kind) {
+    const bool impact = kind == LandingKind::impact;
+    const double rise = impact ? uniform(0.001, 0.002) : uniform(0.005, 0.015);
+    const double peak = impact ? uniform(200, 1500) : uniform(20, 60);
+    const double pulse = impact ? uniform(0.002, 0.004) : uniform(0.05, 0.1);
+    const V3 w_land = omega_;
+    const V3 w_after = impact ? V3(unit() * uniform(0, 5)) : V3(V3::Zero());
+    const double fade = impact ? rise : uniform(0.03, 0.08);
+    const V3 dir = unit();
+    const double start = t_;
+    while (t_ < start + rise + pulse) {
+      const double s = t_ - start;
+      const double up = s < rise ? 0.5 - 0.5 * std::cos(3.14159265 * s / rise) : 1.0;
+      const double k = std::min(1.0, s / fade);
+      const V3 w = w_land + (w_after - w_land) * (k * k * (3 - 2 * k));
+      step(up * (peak * dir + V3(0, 0, 9.81)), w);
+    }
+    // Settle into the hand (or onto the floor): rate to zero over 50 ms.
+    const V3 w_settle = omega_;
+    const double settle = t_;
+    while (t_ < settle + 0.05) {
+      const double k = (t_ - settle) / 0.05;
+      step(V3(0, 0, 9.81), w_settle * (1 - k * k * (3 - 2 * k)));
+    }
+  }
+
+  // Hand waving the body around without letting go: force and rate swing back and forth,
+  // the hand never lets the specific force fall far below g.
+  void wave(double seconds) {
+    const double end = t_ + seconds;
+    const V3 spin = unit() * uniform(3, 15);
+    const double f_hz = uniform(1.5, 4);
+    const V3 dir = V3(1, uniform(-1, 1), uniform(-0.3, 0.3)).normalized();
+    const double amp = uniform(5, 20);
+    const double start = t_;
+    while (t_ < end) {
+      const double s = std::sin(6.2831853 * f_hz * (t_ - start));
+      const double c = std::cos(6.2831853 * f_hz * (t_ - start));
+      step(V3(0, 0, 9.81) + amp * s * dir, spin * c);
+    }
+  }
+
+  // Advances the fine grid by one step to rate w_next under world force f (specific force
+  // at the centre of mass), and samples the sensors when a sample instant is passed.
+  void step(const V3& f_world, const V3& w_next) {
+    const V3 w_dot = (w_next - omega_) / fine_dt_;
+    const V3 w_mid = 0.5 * (w_next + omega_);
+    const V3 f_body = orientation_.conjugate() * f_world;
+    const V3 r = out_.imu_position_m;
+    const V3 accel_body = f_body + w_dot.cross(r) + w_mid.cross(w_mid.cross(r));
+    orientation_ = (orientation_ * aloft::quat_exp<double>(w_mid * fine_dt_)).normalized();
+    omega_ = w_next;
+    t_ += fine_dt_;
+    const Q body_to_sensor = out_.sensor_to_body.conjugate();
+    const V3 gyro_f = gyro_filter_.step(body_to_sensor * w_mid);
+    const V3 accel_f = accel_filter_.step(body_to_sensor * accel_body);
+    const double period = 1.0 / spec_.rate_hz;
+    if (t_ + 1e-12 < next_sample_s_) return;
+    next_sample_s_ += period;
+    aloft::ImuSample<double> s;
+    s.t_us = out_.t0_us + static_cast<std::uint64_t>(std::llround(t_ * 1e6));
+    s.gyro_rad_s = gyro_f + gyro_noise_ * V3(normal(), normal(), normal());
+    s.accel_m_s2 = accel_f + accel_noise_ * V3(normal(), normal(), normal());
+    clip(s.gyro_rad_s, 69.8, aloft::imu_gyro_clipped, s.flags);
+    clip(s.accel_m_s2, 156.9, aloft::imu_accel_clipped, s.flags);
+    out_.samples.push_back(s);
+  }
+
+  static void clip(V3& v, double limit, std::uint8_t flag, std::uint8_t& flags) {
+    for (int i = 0; i < 3; ++i) {
+      if (std::abs(v[i]) >= limit) {
+        v[i] = v[i] > 0 ? limit : -limit;
+        flags = static_cast<std::uint8_t>(flags | flag);
+      }
+    }
+  }
+
+  RecordingSpec spec_;
+  std::mt19937 rng_;
+  Recording out_;
+  double t_ = 0;
+  double fine_dt_ = 1e-4;
+  double next_sample_s_ = 0;
+  double cutoff_hz_ = 100;
+  double gyro_noise_ = 0.01;
+  double accel_noise_ = 0.05;
+  V3 tremor_phase_ = V3::Zero();
+  V3 omega_ = V3::Zero();
+  Q orientation_ = Q::Identity();
+  Butterworth2 gyro_filter_{100, 1000};
+  Butterworth2 accel_filter_{100, 1000};
+};
+
+}  // namespace aloft_test

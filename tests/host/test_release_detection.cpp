@@ -1,0 +1,207 @@
+// Release and landing of a spinning, off-centre IMU (aloft/onboard_pipeline.hpp) on a few
+// hundred generated throws (generated_throws.hpp): the bars, the lever-arm
+// estimate, drops, and no flight where there is none. Every case prints what it measured.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "aloft/onboard_pipeline.hpp"
+#include "generated_throws.hpp"
+
+namespace {
+
+using aloft_test::MotionKind;
+using aloft_test::Recording;
+using aloft_test::RecordingSpec;
+
+struct Tally {
+  int true_flights = 0;
+  int found = 0;
+  int release_within_5ms = 0;
+  int release_within_10ms = 0;
+  int landing_within_5ms = 0;
+  int landing_within_10ms = 0;
+  int early = 0;          // reported release before the true one
+  int false_flights = 0;  // reported where there was none
+  int turned = 0;
+  double worst_late_ms = 0;
+  double worst_landing_ms = 0;
+  int r_estimates = 0;
+  double worst_r_error_mm = 0;
+  std::vector<double> r_errors_mm;
+
+  double percent(int n) const { return true_flights > 0 ? 100.0 * n / true_flights : 100.0; }
+  void print(const char* name) const {
+    std::printf(
+        "%-34s flights %4d found %5.1f%% release<=5ms %5.1f%% <=10ms %5.1f%% (worst late %.2f ms) early %d "
+        "landing<=5ms %5.1f%% <=10ms %5.1f%% (worst %.2f ms) false %d turned %d\n",
+        name, true_flights, percent(found), percent(release_within_5ms), percent(release_within_10ms),
+        worst_late_ms, early, percent(landing_within_5ms), percent(landing_within_10ms), worst_landing_ms,
+        false_flights, turned);
+    if (r_estimates > 0) {
+      std::vector<double> e = r_errors_mm;
+      std::sort(e.begin(), e.end());
+      std::printf("%-34s r estimates %d: median error %.2f mm, 90th %.2f mm, worst %.2f mm\n", name,
+                  r_estimates, e[e.size() / 2], e[e.size() * 9 / 10], e.back());
+    }
+  }
+};
+
+aloft::InertiaTensor<float> nominal_tensor(const Recording& rec) {
+  aloft::InertiaTensor<float> inertia;
+  const aloft::Mat3<float> t = rec.nominal_tensor.cast<float>();
+  REQUIRE(aloft::InertiaTensor<float>::make_from_tensor(t, inertia) == aloft::Status::ok);
+  return inertia;
+}
+
+// Runs the float pipeline over a recording and collects its flights.
+std::vector<aloft::FlightResult<float>> replay(const Recording& rec, bool give_r,
+                                               aloft::Vec3<float>* estimate) {
+  aloft::OnboardPipelineSettings<float> settings;
+  settings.check.sensor_to_body = rec.sensor_to_body.cast<float>();
+  settings.imu_position_known = give_r;
+  settings.imu_position_m = rec.imu_position_m.cast<float>();
+  aloft::OnboardPipeline<float, 8> pipeline(nominal_tensor(rec), settings);
+  std::vector<aloft::FlightResult<float>> flights;
+  aloft::FlightResult<float> flight;
+  for (const auto& s : rec.samples) {
+    aloft::ImuSample<float> f;
+    f.t_us = s.t_us;
+    f.gyro_rad_s = s.gyro_rad_s.cast<float>();
+    f.accel_m_s2 = s.accel_m_s2.cast<float>();
+    f.flags = s.flags;
+    REQUIRE(pipeline.push(f) == aloft::Status::ok);
+    while (pipeline.take_finished_flight(flight)) flights.push_back(flight);
+  }
+  pipeline.finish();
+  while (pipeline.take_finished_flight(flight)) flights.push_back(flight);
+  if (estimate != nullptr) {
+    *estimate = pipeline.has_imu_position_estimate() ? pipeline.imu_position_estimate()
+                                                     : aloft::Vec3<float>::Constant(1e3f);
+  }
+  return flights;
+}
+
+void score(const Recording& rec, bool give_r, Tally& t) {
+  aloft::Vec3<float> estimate;
+  const auto flights = replay(rec, give_r, &estimate);
+  std::vector<bool> used(flights.size(), false);
+  for (const auto& truth : rec.flights) {
+    ++t.true_flights;
+    const double release_us = static_cast<double>(rec.t0_us) + truth.release_s * 1e6;
+    const double landing_us = static_cast<double>(rec.t0_us) + truth.landing_s * 1e6;
+    for (std::size_t i = 0; i < flights.size(); ++i) {
+      const double r = static_cast<double>(flights[i].release_us);
+      if (used[i] || r < release_us - 50e3 || r > landing_us) continue;
+      used[i] = true;
+      ++t.found;
+      const double late_ms = (r - release_us) * 1e-3;
+      const double land_ms = std::abs(static_cast<double>(flights[i].landing_us) - landing_us) * 1e-3;
+      if (late_ms < 0) ++t.early;
+      if (late_ms >= 0 && late_ms <= 5) ++t.release_within_5ms;
+      if (late_ms >= 0 && late_ms <= 10) ++t.release_within_10ms;
+      if (flights[i].landed && land_ms <= 5) ++t.landing_within_5ms;
+      if (flights[i].landed && land_ms <= 10) ++t.landing_within_10ms;
+      if (flights[i].turned) ++t.turned;
+      t.worst_late_ms = std::max(t.worst_late_ms, std::abs(late_ms));
+      if (std::getenv("ALOFT_RELEASE_DEBUG") != nullptr && (late_ms < 0 || late_ms > 5 || land_ms > 5)) {
+        std::printf("  rate %g w %.1f late %.2f ms land %.2f ms landed %d\n", rec.rate_hz,
+                    truth.release_rate_rad_s, late_ms,
+                    (static_cast<double>(flights[i].landing_us) - landing_us) * 1e-3, flights[i].landed);
+      }
+      t.worst_landing_ms = std::max(t.worst_landing_ms, land_ms);
+      break;
+    }
+  }
+  for (bool u : used) t.false_flights += u ? 0 : 1;
+  if (!give_r && rec.kind == MotionKind::spin_throw) {
+    // The estimate after the whole recording against the truth (mm).
+    const double error_mm = (estimate.cast<double>() - rec.imu_position_m).norm() * 1e3;
+    ++t.r_estimates;
+    t.r_errors_mm.push_back(error_mm);
+    t.worst_r_error_mm = std::max(t.worst_r_error_mm, error_mm);
+  }
+}
+
+Tally run(MotionKind kind, const std::vector<double>& rates, int recordings, double tensor_error, bool give_r,
+          std::uint32_t seed0, const char* name) {
+  Tally t;
+  for (double rate : rates) {
+    Tally per_rate;
+    for (int i = 0; i < recordings; ++i) {
+      RecordingSpec spec;
+      spec.kind = kind;
+      spec.rate_hz = rate;
+      spec.tensor_error = tensor_error;
+      spec.rotate_sensor = i % 3 == 1;
+      spec.seed = seed0 + static_cast<std::uint32_t>(i) + static_cast<std::uint32_t>(rate) * 1000u;
+      const Recording rec = aloft_test::ThrowGenerator(spec).generate();
+      score(rec, give_r, per_rate);
+      score(rec, give_r, t);
+    }
+    char label[64];
+    std::snprintf(label, sizeof label, "%s @ %g Hz", name, rate);
+    per_rate.print(label);
+  }
+  t.print(name);
+  return t;
+}
+
+}  // namespace
+
+// Measured (printed below): r given 99.3 % within 5 ms, 2 of 270 early (by 1.2 and 2.9 ms:
+// a hand force fading below the noise); r fitted with I 15 % off 97.0 % within 10 ms.
+TEST_CASE("release and landing with r given and the right tensor at 1 to 4 kHz", "[release]") {
+  const Tally t = run(MotionKind::spin_throw, {1000, 2000, 4000}, 30, 0.0, true, 100, "spin, r given");
+  CHECK(t.percent(t.early) <= 1.0);
+  CHECK(t.false_flights == 0);
+  CHECK(t.percent(t.release_within_5ms) >= 98.0);
+  CHECK(t.percent(t.landing_within_5ms) >= 98.0);
+}
+
+TEST_CASE("release and landing without r and with the tensor 15 % wrong at 1 to 4 kHz", "[release]") {
+  const Tally t =
+      run(MotionKind::spin_throw, {1000, 2000, 4000}, 30, 0.15, false, 200, "spin, r fitted, I 15% off");
+  CHECK(t.percent(t.early) <= 1.0);
+  CHECK(t.percent(t.false_flights) <= 1.0);
+  CHECK(t.percent(t.release_within_10ms) >= 95.0);
+  CHECK(t.percent(t.landing_within_10ms) >= 95.0);
+  // The recording's estimate of r after its flights (each recording: one body, one r).
+  std::vector<double> e = t.r_errors_mm;
+  std::sort(e.begin(), e.end());
+  REQUIRE(e.size() >= 80u);
+  CHECK(e[e.size() / 2] < 0.5);
+  CHECK(e[e.size() * 9 / 10] < 2.0);
+}
+
+TEST_CASE("release and landing at 100 and 250 Hz: found, never early", "[release]") {
+  const Tally given = run(MotionKind::spin_throw, {100, 250}, 15, 0.0, true, 300, "spin, r given");
+  const Tally fitted =
+      run(MotionKind::spin_throw, {100, 250}, 15, 0.15, false, 400, "spin, r fitted, I 15% off");
+  for (const Tally* t : {&given, &fitted}) {
+    CHECK(t->early == 0);
+    CHECK(t->false_flights == 0);
+    CHECK(t->percent(t->found) >= 95.0);
+  }
+}
+
+TEST_CASE("drops from rest are found and do not count as turned", "[release]") {
+  const Tally t = run(MotionKind::drop, {100, 250, 1000, 4000}, 8, 0.15, false, 500, "drop, r fitted");
+  CHECK(t.early == 0);
+  CHECK(t.false_flights == 0);
+  CHECK(t.percent(t.found) >= 98.0);
+  CHECK(t.turned == 0);
+}
+
+TEST_CASE("no flight in a recording without one", "[release]") {
+  for (const bool give_r : {true, false}) {
+    const Tally still = run(MotionKind::still, {100, 1000, 4000}, 4, 0.0, give_r, 600, "still");
+    const Tally waving =
+        run(MotionKind::waving, {100, 1000, 4000}, 8, 0.15, give_r, 700, "waving, no release");
+    CHECK(still.false_flights == 0);
+    CHECK(waving.false_flights == 0);
+  }
+}
