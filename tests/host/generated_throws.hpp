@@ -25,6 +25,7 @@
 
 #include "aloft/imu_sample.hpp"
 #include "aloft/inertia_tensor.hpp"
+#include "low_pass.hpp"  // tests/diagnose/generator
 
 namespace aloft_test {
 
@@ -60,39 +61,6 @@ struct RecordingSpec {
   double tensor_error = 0;  // nominal principal moments off by ± this fraction
   bool rotate_sensor = false;
   std::uint32_t seed = 1;
-};
-
-// 2nd-order Butterworth low-pass (bilinear transform), one per signal axis.
-class Butterworth2 {
- public:
-  Butterworth2(double cutoff_hz, double rate_hz) {
-    const double k = std::tan(3.14159265358979323846 * cutoff_hz / rate_hz);
-    const double q = std::sqrt(2.0);
-    const double norm = 1.0 / (1.0 + q * k + k * k);
-    b0_ = k * k * norm;
-    b1_ = 2.0 * b0_;
-    b2_ = b0_;
-    a1_ = 2.0 * (k * k - 1.0) * norm;
-    a2_ = (1.0 - q * k + k * k) * norm;
-  }
-  V3 step(const V3& x) {
-    if (!primed_) {  // start in steady state
-      x1_ = x2_ = x;
-      y1_ = y2_ = x;
-      primed_ = true;
-    }
-    const V3 y = b0_ * x + b1_ * x1_ + b2_ * x2_ - a1_ * y1_ - a2_ * y2_;
-    x2_ = x1_;
-    x1_ = x;
-    y2_ = y1_;
-    y1_ = y;
-    return y;
-  }
-
- private:
-  double b0_, b1_, b2_, a1_, a2_;
-  V3 x1_, x2_, y1_, y2_;
-  bool primed_ = false;
 };
 
 class ThrowGenerator {
@@ -149,8 +117,8 @@ class ThrowGenerator {
     gyro_noise_ = uniform(0.002, 0.02);
     accel_noise_ = uniform(0.02, 0.15);
     tremor_phase_ = V3(uniform(0, 6.3), uniform(0, 6.3), uniform(0, 6.3));
-    gyro_filter_ = Butterworth2(cutoff_hz_, 1.0 / fine_step());
-    accel_filter_ = Butterworth2(cutoff_hz_, 1.0 / fine_step());
+    gyro_filter_ = aloft::generator::LowPass(cutoff_hz_, fine_step());
+    accel_filter_ = aloft::generator::LowPass(cutoff_hz_, fine_step());
   }
   double fine_step() const { return std::min(1e-4, 0.1 / spec_.rate_hz); }
 
@@ -270,8 +238,13 @@ class ThrowGenerator {
     omega_ = w_next;
     t_ += fine_dt_;
     const Q body_to_sensor = out_.sensor_to_body.conjugate();
-    const V3 gyro_f = gyro_filter_.step(body_to_sensor * w_mid);
-    const V3 accel_f = accel_filter_.step(body_to_sensor * accel_body);
+    if (!filters_settled_) {  // held still since long before the recording
+      gyro_filter_.settle(body_to_sensor * w_mid);
+      accel_filter_.settle(body_to_sensor * accel_body);
+      filters_settled_ = true;
+    }
+    const V3 gyro_f = gyro_filter_(body_to_sensor * w_mid);
+    const V3 accel_f = accel_filter_(body_to_sensor * accel_body);
     const double period = 1.0 / spec_.rate_hz;
     if (t_ + 1e-12 < next_sample_s_) return;
     next_sample_s_ += period;
@@ -305,8 +278,9 @@ class ThrowGenerator {
   V3 tremor_phase_ = V3::Zero();
   V3 omega_ = V3::Zero();
   Q orientation_ = Q::Identity();
-  Butterworth2 gyro_filter_{100, 1000};
-  Butterworth2 accel_filter_{100, 1000};
+  aloft::generator::LowPass gyro_filter_{0, 1};  // set in pick_body()
+  aloft::generator::LowPass accel_filter_{0, 1};
+  bool filters_settled_ = false;
 };
 
 }  // namespace aloft_test

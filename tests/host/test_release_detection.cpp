@@ -73,7 +73,7 @@ std::vector<aloft::FlightResult<float>> replay(const Recording& rec, bool give_r
     f.gyro_rad_s = s.gyro_rad_s.cast<float>();
     f.accel_m_s2 = s.accel_m_s2.cast<float>();
     f.flags = s.flags;
-    REQUIRE(pipeline.push(f) == aloft::Status::ok);
+    if (pipeline.push(f) != aloft::Status::ok) FAIL("sample refused at t_us " << f.t_us);
     while (pipeline.take_finished_flight(flight)) flights.push_back(flight);
   }
   pipeline.finish();
