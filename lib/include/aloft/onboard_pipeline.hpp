@@ -221,8 +221,9 @@ class OnboardPipeline {
     if (!history_.kinematics(i, half_span_, k) || !detector_.torque_free(k)) return;
     flight_fit_.add(k);
     half_fit_[(flight_fit_.count() / 16u) % 2u].add(k);
-    if (fit_r_in_flight_ && flight_fit_.count() >= 8u)
-      r_flight_ = flight_fit_.solve(settings_.release.ridge_rad_s2);
+    // A given or earlier r gives way to this flight's own fit once it has seen enough.
+    const std::uint32_t enough = fit_r_in_flight_ ? 8u : 64u;
+    if (flight_fit_.count() >= enough) r_flight_ = flight_fit_.solve(settings_.release.ridge_rad_s2);
   }
 
   // The simulations alive before a long gap cannot be carried across it.
