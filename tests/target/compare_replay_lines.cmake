@@ -14,6 +14,8 @@ function(run_and_read label command result)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "${label} exited with ${status}")
   endif()
+  # Semihosting may write to either stream: read both.
+  string(REPLACE "\r" "" output "${output}\n${errors}")
   string(REPLACE "\n" ";" lines "${output}")
   set(kept)
   foreach(line IN LISTS lines)
