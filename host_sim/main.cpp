@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   aloft::host::add_study_command(app);
   aloft::host::add_inspect_command(app);
   aloft::host::add_diagnose_command(app);
+  aloft::host::add_replay_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version

@@ -161,7 +161,7 @@ void warn_unknown_body_keys(const json& j, const std::string& source) {
       }
     }
   }
-  if (j.contains("imu")) warn_unknown_keys(j["imu"], {"rotation"}, "imu.", source);
+  if (j.contains("imu")) warn_unknown_keys(j["imu"], {"rotation", "position"}, "imu.", source);
 }
 
 Body parse_body(const json& j, const std::string& source) {
@@ -184,6 +184,7 @@ Body parse_body(const json& j, const std::string& source) {
     const json& imu = j["imu"];
     if (!imu.is_object()) fail(source, "\"imu\" must be an object");
     if (imu.contains("rotation")) body.imu_to_body = quaternion(imu["rotation"], "imu.rotation", source);
+    if (imu.contains("position")) body.imu_position_m = vector3(imu["position"], "imu.position", source);
   }
   warn_unknown_body_keys(j, source);
   return body;

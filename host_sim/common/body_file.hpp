@@ -1,8 +1,10 @@
 // The body file of SPEC §2: name, mass, inertia (tensor | principal [+ axes] | shape),
-// optional markers in body axes and optional IMU rotation (sensor -> body).
+// optional markers in body axes, optional IMU rotation (sensor -> body) and optional IMU
+// position (the accelerometer's place in body axes from the centre of mass, metres).
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 
 #include "aloft/inertia_tensor.hpp"
@@ -21,6 +23,8 @@ struct Body {
   InertiaTensor<double> inertia;
   std::map<std::string, Eigen::Vector3d> markers_m;  // body axes
   Eigen::Quaterniond imu_to_body = Eigen::Quaterniond::Identity();
+  // `imu.position`; without it the onboard pipeline estimates the lever arm from the data.
+  std::optional<Eigen::Vector3d> imu_position_m;
 };
 
 // Reads and validates a body file; throws aloft::host::Error with one line naming the

@@ -19,6 +19,7 @@ void add_simulate_command(CLI::App& app);  // host_sim/simulate/
 void add_study_command(CLI::App& app);     // host_sim/study/
 void add_inspect_command(CLI::App& app);   // host_sim/readers/
 void add_diagnose_command(CLI::App& app);  // host_sim/diagnose/
+void add_replay_command(CLI::App& app);    // host_sim/replay/
 
 // Exit code set by a command that succeeded with a caveat (0 unless a command sets it).
 int exit_code();

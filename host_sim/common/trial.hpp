@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,9 @@ struct ImuLog {
   std::vector<double> time_s;
   std::vector<Eigen::Vector3d> gyro_rad_s;
   std::vector<Eigen::Vector3d> accel_m_s2;  // empty when the file has none
+  // Where each sample stands in the file (1-based lines), for messages about one sample.
+  std::size_t header_line = 0;
+  std::vector<std::size_t> line_numbers;
 };
 
 // One flight inside a longer IMU log (SPEC §3 segments file).

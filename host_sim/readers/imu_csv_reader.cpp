@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include "common/commands.hpp"
 #include "common/file_error.hpp"
@@ -117,6 +118,8 @@ static ImuLog read_imu_csv_unguarded(const std::string& path) {
   }
   if (log.time_s.empty()) throw Error(path + ": no samples after the header");
   check_time_stamps(log.time_s, path, line_numbers);
+  log.header_line = header_line;
+  log.line_numbers = std::move(line_numbers);
   return log;
 }
 

@@ -24,6 +24,9 @@ struct Recording {
   // Recording time of the first sample, so that reports can give times in the
   // recording's own base (the CSV's `t`; 0 for the first valid FIFO packet).
   std::uint64_t t0_us = 0;
+  // The same in seconds, which is what reports add: a CSV's `t` may start below zero,
+  // where t0_us (unsigned) stays 0.
+  double t0_s = 0.0;
 };
 
 }  // namespace aloft::host

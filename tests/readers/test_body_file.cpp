@@ -54,3 +54,37 @@ TEST_CASE("body file: unknown keys are named in a warning", "[readers][body]") {
     CHECK(warnings.messages().empty());
   }
 }
+
+TEST_CASE("body file: imu.position is the accelerometer's place in body axes", "[readers][body]") {
+  ScratchDir dir;
+  const std::string head = R"({"inertia": {"principal": [1, 2, 2.5]}, "imu": )";
+  SECTION("given: metres in body axes, as written") {
+    const auto body = read_body_file(dir.write("p.json", head + R"({"position": [0.031, -0.004, 0.0125]}})"));
+    REQUIRE(body.imu_position_m.has_value());
+    CHECK(body.imu_position_m->x() == 0.031);
+    CHECK(body.imu_position_m->y() == -0.004);
+    CHECK(body.imu_position_m->z() == 0.0125);
+  }
+  SECTION("given beside a rotation: both are kept, no warning") {
+    WarningCapture warnings;
+    const auto body =
+        read_body_file(dir.write("r.json", head + R"({"rotation": [0, 0, 0, 1], "position": [0, 0, 0]}})"));
+    REQUIRE(body.imu_position_m.has_value());
+    CHECK(body.imu_position_m->norm() == 0.0);
+    CHECK(body.imu_to_body.z() == 1.0);
+    CHECK(warnings.messages().empty());
+  }
+  SECTION("absent: none, so the pipeline estimates it") {
+    CHECK_FALSE(read_body_file(dir.write("n.json", head + R"({"rotation": [1, 0, 0, 0]}})")).imu_position_m);
+    CHECK_FALSE(
+        read_body_file(dir.write("m.json", R"({"inertia": {"principal": [1, 2, 2.5]}})")).imu_position_m);
+  }
+  SECTION("bad values: one line naming the file and the key") {
+    for (const char* bad : {R"([0.01, 0.02])", R"([0.01, 0.02, 0.03, 0.04])", R"("0.01, 0.02, 0.03")",
+                            R"([0.01, "y", 0.03])", R"([0.01, null, 0.03])", R"({"x": 0.01})", "0.01"}) {
+      INFO("imu.position: " << bad);
+      const auto p = dir.write("bad.json", head + R"({"position": )" + bad + "}}");
+      CHECK_ONE_LINE_ERROR(read_body_file(p), p, "imu.position");
+    }
+  }
+}

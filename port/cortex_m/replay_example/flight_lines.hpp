@@ -1,0 +1,68 @@
+// The lines the replay firmware prints per flight, and the host program that replays the
+// same CSV prints the same way (host/replay_lines.cpp): one writer for both, so equal
+// results print as equal text. Times are whole microseconds in the recording's base,
+// written as seconds with six decimals; each float result also as its bit pattern, so
+// that equality is checked exactly, not to the printed digits.
+//   flight 0
+//   release_s 0.202000
+//   landing_s 0.500000          (or "landing_s null")
+//   samples 298
+//   gaps 0
+//   imu_position_from body      (or "estimated")
+//   comparisons 1490
+//   rms_da_deg 0.000123
+//   rms_da_rad_bits 951234567
+//   rms_rel_err 0.000002
+//   rms_rel_err_bits 901234567
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+
+#include "aloft/onboard_pipeline.hpp"
+#include "aloft_port/report_writer.hpp"
+
+namespace aloft_replay_example {
+
+inline void write_seconds(aloft::port::ReportWriter& out, std::int64_t us) {
+  if (us < 0) {
+    out.text("-");
+    us = -us;
+  }
+  out.integer(us / 1000000).text(".");
+  char digits[7];
+  std::int64_t fraction = us % 1000000;
+  for (int i = 5; i >= 0; --i, fraction /= 10) digits[i] = static_cast<char>('0' + fraction % 10);
+  digits[6] = '\0';
+  out.text(digits);
+}
+
+inline std::int64_t bits_of(float value) {
+  std::uint32_t bits = 0;
+  std::memcpy(&bits, &value, sizeof bits);
+  return static_cast<std::int64_t>(bits);
+}
+
+inline void write_flight_lines(aloft::port::ReportWriter& out, const aloft::FlightResult<float>& f,
+                               std::int64_t t0_us) {
+  out.text("flight ").integer(f.flight_number).line();
+  write_seconds(out.text("release_s "), t0_us + static_cast<std::int64_t>(f.release_us));
+  out.line();
+  if (f.landed) {
+    write_seconds(out.text("landing_s "), t0_us + static_cast<std::int64_t>(f.landing_us));
+    out.line();
+  } else {
+    out.text("landing_s null").line();
+  }
+  out.text("samples ").integer(f.samples).line();
+  out.text("gaps ").integer(f.gaps).line();
+  out.text("imu_position_from ").text(f.imu_position_estimated ? "estimated" : "body").line();
+  out.text("comparisons ").integer(f.overall.count()).line();
+  const float rms_da_rad = f.overall.rms_da(), rms_rel_err = f.overall.rms_relative_error();
+  out.text("rms_da_deg ").fixed(rms_da_rad * 57.2957795f, 6).line();
+  out.text("rms_da_rad_bits ").integer(bits_of(rms_da_rad)).line();
+  out.text("rms_rel_err ").fixed(rms_rel_err, 6).line();
+  out.text("rms_rel_err_bits ").integer(bits_of(rms_rel_err)).line();
+}
+
+}  // namespace aloft_replay_example

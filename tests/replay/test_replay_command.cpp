@@ -1,0 +1,225 @@
+// `aloft replay` end to end, as a user runs it: a generated throw replayed from CSV gives
+// the release and landing the generator put there, the report has SPEC §5's keys, a right
+// tensor agrees where a 10 % wrong one does not, and every bad input ends in one line
+// naming the file (and row), exit 2, and no report.
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+
+#include "run_aloft.hpp"
+#include "throw_generator.hpp"
+
+using aloft::test::run_aloft;
+using aloft::test::ScratchDir;
+using nlohmann::json;
+
+namespace {
+
+struct Replayed {
+  aloft::test::RunResult run;
+  json report;
+};
+
+Replayed replay(const ScratchDir& dir, const std::string& body_text, const std::string& csv_text) {
+  const std::string body = dir.write("body.json", body_text), csv = dir.write("imu.csv", csv_text);
+  const std::string report = dir.path("report.json");
+  std::filesystem::remove(report);
+  Replayed r;
+  r.run = run_aloft(dir, "replay --body '" + body + "' --imu '" + csv + "' --json '" + report + "'");
+  INFO("stderr: " << r.run.err);
+  REQUIRE(r.run.exit_code == 0);
+  r.report = json::parse(aloft::test::read_file(report));
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("replay: a generated throw (r = 0) gives the release and landing put there", "[replay]") {
+  ScratchDir dir;
+  aloft::test::ThrowSpec spec;
+  spec.t_start_s = 12.5;  // the report keeps the CSV's own time base
+  const aloft::test::GeneratedThrow g = aloft::test::generate_throw(spec);
+  const Replayed r = replay(dir, aloft::test::body_json_text(spec.tensor_kg_m2, Eigen::Vector3d::Zero()),
+                            aloft::test::imu_csv_text(g));
+  const json& stream = r.report.at("stream");
+  CHECK(stream.at("samples") == g.t_s.size());
+  CHECK(stream.at("invalid_samples") == 0);
+  CHECK(stream.at("clipped_samples") == 0);
+  CHECK(stream.at("bytes_skipped") == 0);
+  CHECK(stream.at("gaps").empty());
+  REQUIRE(r.report.at("flights").size() == 1);
+  const json& f = r.report["flights"][0];
+  const double release_s = f.at("release_s"), landing_s = f.at("landing_s");
+  INFO("true release " << g.release_s << " s, found " << release_s << " s; true landing " << g.landing_s
+                       << " s, found " << landing_s << " s");
+  CHECK(release_s >= g.release_s);  // never before the true release
+  CHECK(release_s <= g.release_s + 0.005);
+  CHECK(std::abs(landing_s - g.landing_s) <= 0.005);
+  CHECK(f.at("samples") > 0);
+  CHECK(f.at("samples") <= spec.flight_samples + 1);
+  CHECK(f.at("gaps") == 0);
+  CHECK(f.at("imu_position_m") == json::array({0.0, 0.0, 0.0}));
+  CHECK(f.at("imu_position_from") == "body");
+  CHECK(f.at("rms_da_deg").is_number());
+  CHECK(f.at("rms_rel_err").is_number());
+  CHECK(r.run.out.find("release_s") != std::string::npos);  // the table on stdout
+}
+
+TEST_CASE("replay: a right tensor agrees, a 10 % wrong one does not", "[replay]") {
+  ScratchDir dir;
+  aloft::test::ThrowSpec spec;
+  const aloft::test::GeneratedThrow g = aloft::test::generate_throw(spec);
+  const std::string csv = aloft::test::imu_csv_text(g);
+  const Eigen::Matrix3d wrong = spec.tensor_kg_m2 * Eigen::Vector3d(1.1, 1.0, 0.9).asDiagonal();
+  const json right_flight =
+      replay(dir, aloft::test::body_json_text(spec.tensor_kg_m2, {}), csv).report["flights"][0];
+  const json wrong_flight = replay(dir, aloft::test::body_json_text(wrong, {}), csv).report["flights"][0];
+  const double right_da = right_flight.at("rms_da_deg"), wrong_da = wrong_flight.at("rms_da_deg");
+  INFO("rms_da_deg: right tensor " << right_da << ", 10 % wrong " << wrong_da);
+  CHECK(right_da < 0.01);
+  CHECK(wrong_da > 0.5);
+  CHECK(wrong_da > 100.0 * right_da);
+  CHECK(double(right_flight.at("rms_rel_err")) < 1e-3);
+  CHECK(double(wrong_flight.at("rms_rel_err")) > 10.0 * double(right_flight.at("rms_rel_err")));
+  CHECK(right_flight.at("imu_position_from") == "estimated");  // no imu.position in the body
+}
+
+TEST_CASE("replay: a drop that does not turn has no verdict, with a note", "[replay]") {
+  ScratchDir dir;
+  aloft::test::ThrowSpec spec;
+  spec.omega_release_rad_s = Eigen::Vector3d::Zero();
+  const json f = replay(dir, aloft::test::body_json_text(spec.tensor_kg_m2, {}),
+                        aloft::test::imu_csv_text(aloft::test::generate_throw(spec)))
+                     .report["flights"][0];
+  CHECK(f.at("rms_da_deg").is_null());
+  CHECK(f.at("rms_rel_err").is_null());
+  CHECK(f.at("note").is_string());
+}
+
+TEST_CASE("replay: a recording that ends in the air has landing_s null", "[replay]") {
+  ScratchDir dir;
+  aloft::test::ThrowSpec spec;
+  spec.impact_samples = 0;
+  spec.rest_samples = 0;
+  const json f = replay(dir, aloft::test::body_json_text(spec.tensor_kg_m2, {}),
+                        aloft::test::imu_csv_text(aloft::test::generate_throw(spec)))
+                     .report["flights"][0];
+  CHECK(f.at("landing_s").is_null());
+}
+
+TEST_CASE("replay: a hole in the log is a gap in the stream and in the flight", "[replay]") {
+  ScratchDir dir;
+  aloft::test::ThrowSpec spec;
+  aloft::test::GeneratedThrow g = aloft::test::generate_throw(spec);
+  const std::size_t hole = 300;  // in flight: samples 300..304 lost
+  const double at_s = g.t_s[hole - 1], length_s = g.t_s[hole + 5] - g.t_s[hole - 1];
+  for (auto* v : {&g.t_s}) v->erase(v->begin() + hole, v->begin() + hole + 5);
+  g.gyro_rad_s.erase(g.gyro_rad_s.begin() + hole, g.gyro_rad_s.begin() + hole + 5);
+  g.accel_m_s2.erase(g.accel_m_s2.begin() + hole, g.accel_m_s2.begin() + hole + 5);
+  const json report =
+      replay(dir, aloft::test::body_json_text(spec.tensor_kg_m2, {}), aloft::test::imu_csv_text(g)).report;
+  REQUIRE(report["stream"]["gaps"].size() == 1);
+  CHECK(double(report["stream"]["gaps"][0].at("at_s")) == Approx(at_s).margin(1e-9));
+  CHECK(double(report["stream"]["gaps"][0].at("length_s")) == Approx(length_s).margin(1e-9));
+  REQUIRE(report["flights"].size() == 1);
+  CHECK(report["flights"][0].at("gaps") == 1);
+}
+
+TEST_CASE("replay: bad input is one line naming the file and row, exit 2, no report", "[replay][bad]") {
+  ScratchDir dir;
+  aloft::test::ThrowSpec spec;
+  const std::string good_body = dir.write("good.json", aloft::test::body_json_text(spec.tensor_kg_m2, {}));
+  const std::string good_csv =
+      dir.write("good.csv", aloft::test::imu_csv_text(aloft::test::generate_throw(spec)));
+  const std::string report = dir.path("report.json");
+  const auto expect_refused = [&](const std::string& body, const std::string& csv,
+                                  std::initializer_list<std::string> fragments) {
+    const auto r = run_aloft(dir, "replay --body '" + body + "' --imu '" + csv + "' --json '" + report + "'");
+    INFO("stderr: " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(aloft::test::count_lines(r.err) == 1);
+    for (const std::string& fragment : fragments) CHECK(r.err.find(fragment) != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(report));
+    CHECK(r.out.empty());
+  };
+  SECTION("no accelerometer columns") {
+    expect_refused(good_body, dir.write("g.csv", "t,gx,gy,gz\n0,0,0,0\n0.001,0,0,0\n"),
+                   {"g.csv:1:", "ax,ay,az"});
+  }
+  SECTION("time going back") {
+    expect_refused(
+        good_body,
+        dir.write("b.csv",
+                  "t,gx,gy,gz,ax,ay,az\n0,0,0,0,0,0,9.8\n0.002,0,0,0,0,0,9.8\n0.001,0,0,0,0,0,9.8\n"),
+        {"b.csv:4:"});
+  }
+  SECTION("time standing still") {
+    expect_refused(good_body, dir.write("s.csv", "t,gx,gy,gz,ax,ay,az\n0,0,0,0,0,0,9.8\n0,0,0,0,0,0,9.8\n"),
+                   {"s.csv:3:"});
+  }
+  SECTION("closer than a microsecond") {
+    expect_refused(good_body,
+                   dir.write("u.csv", "t,gx,gy,gz,ax,ay,az\n0,0,0,0,0,0,9.8\n0.0000001,0,0,0,0,0,9.8\n"),
+                   {"u.csv:3:", "microsecond"});
+  }
+  SECTION("a NaN cell") {
+    expect_refused(good_body,
+                   dir.write("n.csv", "t,gx,gy,gz,ax,ay,az\n0,0,0,0,0,0,9.8\n0.001,0,nan,0,0,0,9.8\n"),
+                   {"n.csv:3:", "gy"});
+  }
+  SECTION("an empty file, and a header without samples") {
+    expect_refused(good_body, dir.write("e.csv", ""), {"e.csv"});
+    expect_refused(good_body, dir.write("h.csv", "t,gx,gy,gz,ax,ay,az\n"), {"h.csv", "no samples"});
+  }
+  SECTION("a body file without inertia") {
+    expect_refused(dir.write("noi.json", R"({"name": "x", "mass": 1})"), good_csv, {"noi.json", "inertia"});
+  }
+  SECTION("a body file whose tensor is not one") {
+    expect_refused(dir.write("neg.json", R"({"inertia": {"tensor": [[1, 0, 0], [0, 1, 0], [0, 0, 5]]}})"),
+                   good_csv, {"neg.json"});
+  }
+  SECTION("a missing recording") { expect_refused(good_body, dir.path("none.csv"), {"none.csv"}); }
+}
+
+TEST_CASE("replay: the command line takes exactly one recording", "[replay][bad]") {
+  ScratchDir dir;
+  const std::string body = dir.write("b.json", aloft::test::body_json_text(Eigen::Matrix3d::Identity(), {}));
+  const std::string fifo = dir.write("f.bin", "");
+  const auto neither = run_aloft(dir, "replay --body '" + body + "'");
+  CHECK(neither.exit_code == 2);
+  CHECK(aloft::test::count_lines(neither.err) == 1);
+  const auto both =
+      run_aloft(dir, "replay --body '" + body + "' --imu x.csv --fifo '" + fifo + "' --odr-hz 1000");
+  CHECK(both.exit_code == 2);
+  CHECK(aloft::test::count_lines(both.err) == 1);
+  const auto no_rate = run_aloft(dir, "replay --body '" + body + "' --fifo '" + fifo + "'");
+  CHECK(no_rate.exit_code == 2);
+  CHECK(no_rate.err.find("--odr-hz") != std::string::npos);
+  // Until the FIFO reader is wired in: said so cleanly.
+  const auto fifo_run = run_aloft(dir, "replay --body '" + body + "' --fifo '" + fifo + "' --odr-hz 1000");
+  CHECK(fifo_run.exit_code == 2);
+  CHECK(aloft::test::count_lines(fifo_run.err) == 1);
+}
+
+// The spin-aware release detector (issue 21 item 2, the `release` helper's work) must pass
+// this; the plain free-fall detector cannot (|a| = 5 m/s² in flight here), hence
+// [!mayfail] until it is merged: then drop the tag.
+TEST_CASE("replay: an off-centre accelerometer (imu.position given) still finds the flight",
+          "[replay][!mayfail]") {
+  ScratchDir dir;
+  aloft::test::ThrowSpec spec;
+  spec.imu_position_m = Eigen::Vector3d(0.035, 0.0, 0.01);
+  const aloft::test::GeneratedThrow g = aloft::test::generate_throw(spec);
+  const json report = replay(dir, aloft::test::body_json_text(spec.tensor_kg_m2, spec.imu_position_m),
+                             aloft::test::imu_csv_text(g))
+                          .report;
+  REQUIRE(report["flights"].size() == 1);
+  const json& f = report["flights"][0];
+  CHECK(double(f.at("release_s")) >= g.release_s);
+  CHECK(double(f.at("release_s")) <= g.release_s + 0.005);
+  CHECK(std::abs(double(f.at("landing_s")) - g.landing_s) <= 0.005);
+  CHECK(f.at("imu_position_from") == "body");
+}

@@ -1,0 +1,51 @@
+# The replay firmware's result against the host's replay of the same CSV: both print the
+# same "key value" lines per flight (port/cortex_m/replay_example/flight_lines.hpp), and
+# every one must be equal, float results to the bit. At least one flight, with
+# comparisons, must be there: an empty answer checks nothing.
+#   cmake -DFIRMWARE_COMMAND=<list> -DHOST_COMMAND=<list> -P compare_replay_lines.cmake
+set(keys flight release_s landing_s samples gaps imu_position_from comparisons rms_da_deg rms_da_rad_bits
+         rms_rel_err rms_rel_err_bits stream_samples stream_gaps)
+list(JOIN keys "|" key_pattern)
+
+function(run_and_read label command result)
+  execute_process(COMMAND ${command} OUTPUT_VARIABLE output ERROR_VARIABLE errors
+                  RESULT_VARIABLE status TIMEOUT 240)
+  message("${label}:\n${output}${errors}")
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${label} exited with ${status}")
+  endif()
+  # Semihosting may write to either stream: read both.
+  string(REPLACE "\r" "" output "${output}\n${errors}")
+  string(REPLACE "\n" ";" lines "${output}")
+  set(kept)
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^(${key_pattern}) ")
+      list(APPEND kept "${line}")
+    endif()
+  endforeach()
+  set(${result} "${kept}" PARENT_SCOPE)
+endfunction()
+
+run_and_read("firmware (float, QEMU)" "${FIRMWARE_COMMAND}" target)
+run_and_read("host replay (float, the code of aloft replay)" "${HOST_COMMAND}" host)
+
+if(NOT "${target}" MATCHES "(^|;)flight 0(;|$)")
+  message(FATAL_ERROR "the firmware found no flight: nothing was checked")
+endif()
+if("${target}" MATCHES "(^|;)comparisons 0(;|$)")
+  message(FATAL_ERROR "a flight without comparisons: its verdict checks nothing")
+endif()
+list(LENGTH target target_count)
+list(LENGTH host host_count)
+if(NOT target_count EQUAL host_count)
+  message(FATAL_ERROR "firmware printed ${target_count} result lines, host ${host_count}")
+endif()
+math(EXPR last "${target_count} - 1")
+foreach(i RANGE ${last})
+  list(GET target ${i} t)
+  list(GET host ${i} h)
+  if(NOT t STREQUAL h)
+    message(FATAL_ERROR "firmware \"${t}\", host \"${h}\"")
+  endif()
+endforeach()
+message("all ${target_count} result lines equal")
