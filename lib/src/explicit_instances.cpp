@@ -28,4 +28,8 @@ template class OnboardCheck<float, 8>;
 template class OnboardCheck<double, 8>;
 template class OnboardPipeline<float, 8>;
 template class OnboardPipeline<double, 8>;
+template class icm42688p::FifoDecoder<float>;
+template class icm42688p::FifoDecoder<double>;
+template class icm42688p::Icm42688pDriver<float>;
+template class icm42688p::Icm42688pDriver<double>;
 }  // namespace aloft
