@@ -10,6 +10,7 @@
 #include "common/body_file.hpp"
 #include "common/commands.hpp"
 #include "common/option_checks.hpp"
+#include "replay/fifo_recording.hpp"
 #include "replay/imu_csv_recording.hpp"
 #include "replay/replay_report_json.hpp"
 #include "replay/replay_report_text.hpp"
@@ -28,8 +29,7 @@ struct ReplayOptions {
 
 Recording read_recording(const ReplayOptions& o) {
   if (!o.imu_path.empty()) return read_imu_csv_recording(o.imu_path);
-  // The ICM-42688-P FIFO reader (replay/fifo_recording.hpp) is wired in at merge.
-  throw Error("--fifo: reading the ICM-42688-P FIFO is not built yet in this aloft; use --imu");
+  return read_fifo_recording(o.fifo_path, o.odr_hz);
 }
 
 void run_replay_command(const ReplayOptions& o) {

@@ -34,4 +34,8 @@ template class ReleaseDetector<float, 32>;
 template class ReleaseDetector<double, 32>;
 template class OnboardPipeline<float, 8>;
 template class OnboardPipeline<double, 8>;
+template class icm42688p::FifoDecoder<float>;
+template class icm42688p::FifoDecoder<double>;
+template class icm42688p::Icm42688pDriver<float>;
+template class icm42688p::Icm42688pDriver<double>;
 }  // namespace aloft

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "c3d_test_writer.hpp"
+#include "fifo_file_writer.hpp"
 
 namespace aloft::fuzz {
 
@@ -108,10 +109,21 @@ inline std::map<std::string, std::vector<Seed>> seed_corpus() {
     }
   }
   corpus["c3d"] = c3d;
+  // ICM-42688-P FIFO bytes (`replay --fifo`): plain, with power-up packets without data,
+  // and with a hole (an overflow) across a wrap of the 16-bit stamp.
+  aloft_test::FifoFile fifo;
+  fifo.packets = 8;
+  aloft_test::FifoFile powerup = fifo;
+  powerup.without_data = 3;
+  aloft_test::FifoFile hole = fifo;
+  hole.packets = 80;
+  hole.holes = {{20, 30}};
+  corpus["icm42688p_fifo"] = {
+      {"plain.bin", fifo.bytes()}, {"powerup.bin", powerup.bytes()}, {"hole.bin", hole.bytes()}};
   // The dispatch sees every format.
   std::vector<Seed> all;
   for (const auto& [harness, seeds] : corpus) {
-    if (harness == "body_json" || harness == "osim") continue;
+    if (harness == "body_json" || harness == "osim" || harness == "icm42688p_fifo") continue;
     for (const Seed& s : seeds) all.push_back({harness + "_" + s.name, s.bytes});
   }
   corpus["trial_dispatch"] = all;
