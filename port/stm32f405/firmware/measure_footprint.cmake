@@ -29,50 +29,19 @@ math(EXPR ram_bytes_without_stack "${image_data} + ${image_bss}")
 
 run_timed(${TIMED} with)
 run_timed(${BASELINE} without)
-if(NOT with_steady_updates EQUAL without_steady_updates OR with_calibration_ticks EQUAL 0)
-  message(FATAL_ERROR "the two timing images did not time the same loop")
-endif()
-# Fixed point with 3 decimals: CMake's math() is integer only.
-math(EXPR milli_instructions_per_tick "${with_calibration_instructions} * 1000 / ${with_calibration_ticks}")
-math(EXPR sample_milli "(${with_steady_ticks} - ${without_steady_ticks}) * ${milli_instructions_per_tick} / ${with_steady_updates}")
-math(EXPR instructions_per_sample "(${sample_milli} + 500) / 1000")
-math(EXPR tick_whole "${milli_instructions_per_tick} / 1000")
-math(EXPR tick_fraction "${milli_instructions_per_tick} % 1000 + 1000")
-string(SUBSTRING ${tick_fraction} 1 3 tick_fraction)
+timed_difference(instructions_per_sample)
 
-execute_process(COMMAND ${OBJDUMP} -d --no-show-raw-insn ${FIRMWARE}
-                OUTPUT_FILE ${OUTPUT}.disassembly.txt RESULT_VARIABLE status)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "${OBJDUMP} -d ${FIRMWARE} failed")
-endif()
-# Indirect calls: the report writer's sink and the ImuBus's three function pointers.
-file(READ ${OUTPUT}.disassembly.txt disassembly)
+disassemble(${FIRMWARE} ${OUTPUT}.disassembly.txt disassembly)
+# Indirect calls besides the text output: the ImuBus's three function pointers.
 string(REGEX MATCHALL "<_ZN5aloft4port9stm32f405[^>]*(read|write|now_us)[^>]*>:" bus_functions "${disassembly}")
-set(indirect --indirect _ZN5aloft4port10write_textEPKc)
+set(indirect)
 foreach(f IN LISTS bus_functions)
   string(REGEX REPLACE "^<(.*)>:$" "\\1" f "${f}")
   list(APPEND indirect --indirect ${f})
 endforeach()
-ci_options(ci "${CI_DIRS}")
-execute_process(COMMAND ${STACK_TOOL} ${OUTPUT}.disassembly.txt ${ci}
-                        --root Reset_Handler --interrupt SysTick_Handler --interrupt Fault_Handler ${indirect}
-                OUTPUT_VARIABLE stack_report ERROR_VARIABLE stack_error RESULT_VARIABLE status)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "worst-case stack: ${stack_error}")
-endif()
-foreach(key stack_bytes root_bytes interrupt_bytes)
-  string(REGEX MATCH "${key} ([0-9]+)" _ "${stack_report}")
-  set(${key} ${CMAKE_MATCH_1})
-endforeach()
+worst_case_stack(${OUTPUT}.disassembly.txt "${CI_DIRS}" ${indirect})
 math(EXPR ram_bytes "${ram_bytes_without_stack} + ${stack_bytes}")
 
-function(verdict value limit out)
-  if(value LESS_EQUAL limit)
-    set(${out} "true" PARENT_SCOPE)
-  else()
-    set(${out} "false" PARENT_SCOPE)
-  endif()
-endfunction()
 verdict(${image_flash} 24576 flash_ok)
 verdict(${ram_bytes} 4096 ram_ok)
 verdict(${instructions_per_sample} 2500 instructions_ok)
@@ -94,7 +63,7 @@ set(json "{
     \"instructions_per_sample_covers\": \"release detection + onboard check at K = 8 (OnboardPipeline::push); the driver's decode is not in it until the ICM-42688-P driver replaces the stand-in (firmware/imu_source.hpp)\",
     \"stack_main_path_bytes\": ${root_bytes},
     \"stack_interrupt_bytes\": ${interrupt_bytes},
-    \"instructions_per_tick\": ${tick_whole}.${tick_fraction},
+    \"instructions_per_tick\": ${instructions_per_tick},
     \"timed_samples\": ${with_steady_updates},
     \"timed_ticks_with_pipeline\": ${with_steady_ticks},
     \"timed_ticks_without_pipeline\": ${without_steady_ticks},

@@ -17,6 +17,7 @@
 
 #include "aloft_port/port.hpp"
 #include "aloft_port/report_writer.hpp"
+#include "../../cortex_m/icount_calibration.hpp"
 #include "flight_settings.hpp"
 
 namespace {
@@ -43,23 +44,12 @@ aloft::ImuSample<float> synthetic_sample(unsigned i) {
   return s;
 }
 
-// Instructions per SysTick tick, measured rather than assumed: a loop of known length
-// (two instructions per turn). Under QEMU with -icount the count is exact.
-constexpr std::uint32_t calibration_turns = 100000;
-std::uint64_t calibration_ticks() {
-  std::uint32_t turns = calibration_turns;
-  const std::uint64_t start = aloft::port::ticks();
-  asm volatile("1: subs %0, %0, #1\n\tbne 1b" : "+r"(turns) : : "cc");
-  return aloft::port::ticks() - start;
-}
-
 }  // namespace
 
 int main() {
   aloft::port::init();
   aloft::port::ReportWriter out;
-  out.text("calibration_instructions ").integer(2 * calibration_turns).line();
-  out.text("calibration_ticks ").integer(static_cast<std::int64_t>(calibration_ticks())).line();
+  aloft::port::report_calibration(out);
 #if !defined(ALOFT_STM32F405_TIMING_BASELINE)
   aloft::InertiaTensor<float> inertia;
   if (aloft_stm32f405::make_inertia(inertia) != aloft::Status::ok) {
