@@ -12,6 +12,7 @@
 #pragma once
 
 #include "aloft/imu_bus.hpp"
+#include "stm32f405_registers.hpp"
 
 namespace aloft {
 namespace port {
@@ -25,6 +26,16 @@ void spi1_init();
 // `length` bytes in the same transaction; a write sends reg and the value; now_us is
 // port::ticks() in microseconds.
 ImuBus spi1_imu_bus();
+
+// The same over another SPI block and chip select (the bus's context): for a check
+// under QEMU, which attaches chips to its last SPI bus only.
+struct SpiDevice {
+  std::uintptr_t spi_base;               // e.g. spi1_base
+  std::uintptr_t chip_select_port_base;  // e.g. gpioa_base
+  std::uint32_t chip_select_pin;
+};
+void spi_init_master(SpiRegisters& spi);
+ImuBus spi_imu_bus(SpiDevice& device);
 
 }  // namespace stm32f405
 }  // namespace port

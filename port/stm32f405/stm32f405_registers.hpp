@@ -128,7 +128,8 @@ struct GpioRegisters {
   Register lckr;     // 0x1C §8.4.8
   Register afr[2];   // 0x20, 0x24 §8.4.9-10 four bits per pin: alternate function number
 };
-inline GpioRegisters& gpioa() { return at<GpioRegisters>(0x40020000u); }
+constexpr std::uintptr_t gpioa_base = 0x40020000u;
+inline GpioRegisters& gpioa() { return at<GpioRegisters>(gpioa_base); }
 namespace gpio_bits {
 constexpr std::uint32_t mode_output = 1u;
 constexpr std::uint32_t mode_alternate = 2u;
@@ -148,7 +149,11 @@ struct SpiRegisters {
   Register i2scfgr;  // 0x1C
   Register i2spr;    // 0x20
 };
-inline SpiRegisters& spi1() { return at<SpiRegisters>(0x40013000u); }
+constexpr std::uintptr_t spi1_base = 0x40013000u;
+inline SpiRegisters& spi1() { return at<SpiRegisters>(spi1_base); }
+// SPI6 exists on the STM32F42x/43x only (RM0090 Table 1), not on the F405; QEMU's model
+// has it, and attaches a chip given with -device to it (tests/stm32f405).
+constexpr std::uintptr_t spi6_base = 0x40015400u;
 namespace spi_bits {
 constexpr std::uint32_t cr1_cpha = 1u << 0;
 constexpr std::uint32_t cr1_cpol = 1u << 1;
