@@ -52,12 +52,6 @@ constexpr std::uint16_t batch_capacity = 16;
 std::optional<Pipeline> pipeline;
 aloft::ImuSample<float> batch[batch_capacity];
 
-void hex_byte(ReportWriter& out, std::uint8_t value) {
-  const char digits[] = "0123456789ABCDEF";
-  const char text[] = {'0', 'x', digits[value >> 4], digits[value & 0xFu], '\0'};
-  out.text(text);
-}
-
 // Whole microseconds as seconds with six decimals.
 void seconds(ReportWriter& out, std::uint64_t us) {
   out.integer(static_cast<std::int64_t>(us / 1000000u)).text(".");
@@ -121,11 +115,8 @@ int main() {
   std::uint8_t who_am_i = 0;
   const aloft::Status found = aloft_stm32f405::imu_bring_up(bus, who_am_i);
   if (found == aloft::Status::sensor_not_found) {
-    out.text("ICM-42688-P not found on ").text(bus_name).text(": WHO_AM_I reads ");
-    hex_byte(out, who_am_i);
-    out.text(", expected ");
-    hex_byte(out, aloft_stm32f405::who_am_i_expected);
-    out.line();
+    out.text("ICM-42688-P not found on ").text(bus_name).text(": WHO_AM_I reads ").hex_byte(who_am_i);
+    out.text(", expected ").hex_byte(aloft_stm32f405::who_am_i_expected).line();
     return exit_sensor_not_found;
   }
   if (found != aloft::Status::ok) {

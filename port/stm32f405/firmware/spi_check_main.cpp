@@ -23,11 +23,7 @@ int main() {
   const aloft::Status read = bus.read(bus.context, 0x1F, id, sizeof(id));
   aloft::port::ReportWriter out;
   out.text("SPI read of 0x1F: ").text(aloft::describe(read)).text(", bytes");
-  const char digits[] = "0123456789ABCDEF";
-  for (std::uint8_t byte : id) {
-    const char text[] = {' ', '0', 'x', digits[byte >> 4], digits[byte & 0xFu], '\0'};
-    out.text(text);
-  }
+  for (std::uint8_t byte : id) out.text(" ").hex_byte(byte);
   out.line();
   return read == aloft::Status::ok ? 0 : 1;
 }
