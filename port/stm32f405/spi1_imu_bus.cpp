@@ -74,12 +74,6 @@ Status write(void* context, std::uint8_t reg, std::uint8_t value) {
   return finish(device, ok);
 }
 
-std::uint64_t now_us(void*) {
-  const std::uint64_t t = ticks();
-  const std::uint64_t per_second = ticks_per_second();
-  return t / per_second * 1000000u + t % per_second * 1000000u / per_second;
-}
-
 void set_pin_field(volatile std::uint32_t& reg, std::uint32_t pin, std::uint32_t bits, std::uint32_t value) {
   const std::uint32_t shift = pin * bits;
   const std::uint32_t mask = ((1u << bits) - 1u) << shift;
@@ -113,12 +107,18 @@ void spi1_init() {
   spi_init_master(spi1());
 }
 
+std::uint64_t ticks_in_us(void*) {
+  const std::uint64_t t = ticks();
+  const std::uint64_t per_second = ticks_per_second();
+  return t / per_second * 1000000u + t % per_second * 1000000u / per_second;
+}
+
 ImuBus spi_imu_bus(SpiDevice& device) {
   ImuBus bus;
   bus.context = &device;
   bus.read = read;
   bus.write = write;
-  bus.now_us = now_us;
+  bus.now_us = ticks_in_us;
   return bus;
 }
 

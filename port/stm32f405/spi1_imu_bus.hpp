@@ -37,6 +37,10 @@ struct SpiDevice {
 void spi_init_master(SpiRegisters& spi);
 ImuBus spi_imu_bus(SpiDevice& device);
 
+// The buses' now_us: port::ticks() in whole microseconds (the context is unused), for
+// any other ImuBus on this board (the replay image's fake chip).
+std::uint64_t ticks_in_us(void* unused);
+
 }  // namespace stm32f405
 }  // namespace port
 }  // namespace aloft

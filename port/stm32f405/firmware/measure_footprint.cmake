@@ -33,7 +33,7 @@ timed_difference(instructions_per_sample)
 
 disassemble(${FIRMWARE} ${OUTPUT}.disassembly.txt disassembly)
 # Indirect calls besides the text output: the ImuBus's three function pointers.
-string(REGEX MATCHALL "<_ZN5aloft4port9stm32f405[^>]*(read|write|now_us)[^>]*>:" bus_functions "${disassembly}")
+string(REGEX MATCHALL "<_ZN5aloft4port9stm32f405[^>]*(read|write|ticks_in_us)[^>]*>:" bus_functions "${disassembly}")
 set(indirect)
 foreach(f IN LISTS bus_functions)
   string(REGEX REPLACE "^<(.*)>:$" "\\1" f "${f}")
