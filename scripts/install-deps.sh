@@ -2,7 +2,8 @@
 # Installs the Debian packages aloft needs, and nothing when they are all present.
 #   scripts/install-deps.sh host   build and run the host program and its tests (gcc, and
 #                                  clang with its sanitizer and libFuzzer runtimes)
-#   scripts/install-deps.sh all    also the ARM cross toolchains and QEMU (target tests)
+#   scripts/install-deps.sh all    also the ARM cross toolchains and QEMU (target tests:
+#                                  armhf, cortex-m4f, stm32f405 on netduinoplus2)
 # Needs root; uses sudo when not root.
 set -euo pipefail
 

@@ -6,6 +6,7 @@
 #               the host suite under the sanitizers, the fuzz regression corpus, then
 #               each libFuzzer harness for ALOFT_FUZZ_SECONDS (default 30) from its corpus
 #   armhf, cortex-m4f   the core suite on the ARM targets under QEMU
+#   stm32f405   the STM32F405 flight firmware under QEMU netduinoplus2 and its footprint
 # A failed test, a compiler warning, a sanitizer report or a fuzzer finding fails the run.
 # Installs what it needs.
 set -euo pipefail
@@ -38,6 +39,7 @@ stage host-asan build_and_test host-asan host-asan-fuzz
 configure_args=()
 stage armhf build_and_test armhf
 stage cortex-m4f build_and_test cortex-m4f
+stage stm32f405 build_and_test stm32f405
 
 echo "== stage times ==" >&2
 printf '%s\n' "${timings[@]}" >&2

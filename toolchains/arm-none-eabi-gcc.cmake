@@ -1,11 +1,16 @@
 # Bare-metal ARM toolchain (Debian gcc-arm-none-eabi with newlib), compiler part. The CPU
 # flags live in cpu/<ALOFT_CPU>.cmake (TinyUSB style), so another Cortex-M is one new file.
 # Used by the `cortex-m4f` preset: images run on QEMU's mps2-an386 board with semihosting.
+# A board's own toolchain file sets ALOFT_PORT and ALOFT_QEMU_MACHINE first and includes
+# this one (stm32f405-gcc.cmake).
 set(CMAKE_SYSTEM_NAME Generic)
 set(CMAKE_SYSTEM_PROCESSOR arm)
 
 set(ALOFT_CPU "cortex-m4f" CACHE STRING "CPU flags file in toolchains/cpu/")
-set(ALOFT_PORT "cortex_m" CACHE STRING "Platform port: host, cortex_m or linux_arm")
+set(ALOFT_PORT "cortex_m" CACHE STRING "Platform port: host, cortex_m, stm32f405 or linux_arm")
+if(NOT ALOFT_QEMU_MACHINE)
+  set(ALOFT_QEMU_MACHINE mps2-an386)
+endif()
 include(${CMAKE_CURRENT_LIST_DIR}/cpu/${ALOFT_CPU}.cmake)
 
 set(CMAKE_C_COMPILER arm-none-eabi-gcc)
@@ -29,11 +34,11 @@ set(CMAKE_ASM_FLAGS_INIT "${ALOFT_CPU_FLAGS}")
 set(CMAKE_EXE_LINKER_FLAGS_INIT
     "${ALOFT_CPU_FLAGS} --specs=nano.specs -nostartfiles -Wl,--gc-sections")
 
-# Images run on QEMU's model of the MPS2 board with the AN386 (Cortex-M4) image; the
-# program reports through semihosting and its exit status becomes QEMU's, so a plain
-# add_test(NAME x COMMAND image) runs it and a failure fails the test.
+# Images run on QEMU's model of the board (mps2-an386: the MPS2 with the AN386 Cortex-M4
+# image); the program reports through semihosting and its exit status becomes QEMU's, so
+# a plain add_test(NAME x COMMAND image) runs it and a failure fails the test.
 set(CMAKE_CROSSCOMPILING_EMULATOR
-    qemu-system-arm -M mps2-an386 -nographic -monitor none
+    qemu-system-arm -M ${ALOFT_QEMU_MACHINE} -nographic -monitor none
     -semihosting-config enable=on,target=native -kernel)
 
 # Target libraries and headers from the cross toolchain only; CMake packages may come from

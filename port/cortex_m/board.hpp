@@ -1,5 +1,7 @@
-// The board the cortex_m port targets: QEMU's model of the Arm MPS2 FPGA board with the
-// AN386 image (a Cortex-M4 with FPU). Memory map: mps2_an386.ld.
+// What the shared Cortex-M port (startup.cpp, port_cortex_m.cpp) needs from the board it
+// runs on. Each board defines these in a .cpp of its own, picked by port/CMakeLists.txt:
+//   mps2-an386 (QEMU's Arm MPS2 + AN386, the `cortex-m4f` preset)  board_mps2_an386.cpp
+//   STM32F405 (flight controllers; QEMU netduinoplus2, `stm32f405`)  ../stm32f405/board_stm32f405.cpp
 #pragma once
 
 #include <cstdint>
@@ -8,8 +10,13 @@ namespace aloft {
 namespace port {
 namespace board {
 
-// The FPGA's system clock, which drives the core and SysTick's processor-clock source.
-constexpr std::uint32_t processor_clock_hz = 25000000u;
+// Brings up the board's clocks, called by port::init() before SysTick starts. Never
+// hangs: every wait on the hardware is bounded, and a board that falls back to a slower
+// clock says so through write_text in one line.
+void init_clocks();
+
+// The processor clock after init_clocks(): SysTick's processor-clock source.
+std::uint32_t processor_clock_hz();
 
 }  // namespace board
 }  // namespace port

@@ -1,9 +1,10 @@
 // The platform contract (aloft_port/port.hpp) on a Cortex-M: SysTick as the time source
 // (processor clock, extended to 64 bits by its wrap interrupt), text and exit status
-// through semihosting (see semihosting.hpp). Board specifics: board.hpp.
+// through semihosting (see semihosting.hpp). Board specifics (clocks): board.hpp.
 #include "aloft_port/port.hpp"
 
 #include "board.hpp"
+#include "core_registers.hpp"
 #include "semihosting.hpp"
 
 namespace aloft {
@@ -11,30 +12,20 @@ namespace port {
 
 namespace {
 
-// SysTick, part of every ARMv7-M core (ARMv7-M Architecture Reference Manual, B3.3).
-struct SysTickRegisters {
-  volatile std::uint32_t control;  // SYST_CSR
-  volatile std::uint32_t reload;   // SYST_RVR
-  volatile std::uint32_t current;  // SYST_CVR, counts down
-  volatile std::uint32_t calibration;
-};
-SysTickRegisters& systick() { return *reinterpret_cast<SysTickRegisters*>(0xE000E010u); }
-
+using core::systick;
 constexpr std::uint32_t systick_reload = 0x00FFFFFFu;  // the full 24 bits: fewest interrupts
-constexpr std::uint32_t systick_enable = 1u << 0;
-constexpr std::uint32_t systick_interrupt = 1u << 1;
-constexpr std::uint32_t systick_processor_clock = 1u << 2;
 
 volatile std::uint32_t systick_wraps = 0;
 
 }  // namespace
 
 void init() {
+  board::init_clocks();
   systick().control = 0;
   systick().reload = systick_reload;
   systick().current = 0;  // any write clears the counter
   systick_wraps = 0;
-  systick().control = systick_enable | systick_interrupt | systick_processor_clock;
+  systick().control = core::systick_enable | core::systick_interrupt | core::systick_processor_clock;
 }
 
 std::uint64_t ticks() {
@@ -51,7 +42,7 @@ std::uint64_t ticks() {
   return static_cast<std::uint64_t>(wraps) * (systick_reload + 1u) + into_period;
 }
 
-std::uint32_t ticks_per_second() { return board::processor_clock_hz; }
+std::uint32_t ticks_per_second() { return board::processor_clock_hz(); }
 
 void write_text(const char* text) { semihosting::call(semihosting::Operation::write0, text); }
 

@@ -1,10 +1,13 @@
 // Reset and exception entry for a Cortex-M4F: the vector table, the reset handler that
 // prepares memory and the FPU before any C++ runs, and fault handlers that report
 // through the port instead of hanging (so a crash under QEMU fails the test at once).
-// Symbols from the linker script: mps2_an386.ld.
+// Symbols from the linker script (cortex_m_sections.ld). A board with interrupts of its
+// own puts their vectors in section .isr_vector.device, which the linker places right
+// after these 16 (../stm32f405/device_vectors.cpp).
 #include <cstdint>
 
 #include "aloft_port/port.hpp"
+#include "core_registers.hpp"
 
 extern "C" {
 extern std::uint32_t __data_load[];
@@ -25,11 +28,8 @@ void Fault_Handler();
 
 namespace {
 
-// Coprocessor Access Control Register: CP10 and CP11 are the FPU.
-volatile std::uint32_t& cpacr() { return *reinterpret_cast<volatile std::uint32_t*>(0xE000ED88u); }
-
 using Handler = void (*)();
-constexpr int vector_count = 16;  // the core's exceptions; the board's interrupts are unused
+constexpr int vector_count = 16;  // the core's exceptions
 
 }  // namespace
 
@@ -55,7 +55,7 @@ extern "C" __attribute__((section(".isr_vector"), used)) const Handler vector_ta
 
 extern "C" void Reset_Handler() {
   // The FPU first: the compiler may use FP registers in any code below.
-  cpacr() = cpacr() | (0xFu << 20);
+  aloft::port::core::scb_cpacr() = aloft::port::core::scb_cpacr() | aloft::port::core::cpacr_fpu_full_access;
   asm volatile("dsb\n\tisb" ::: "memory");
   for (std::uint32_t *src = __data_load, *dst = __data_start; dst < __data_end;) *dst++ = *src++;
   for (std::uint32_t* dst = __bss_start; dst < __bss_end;) *dst++ = 0;

@@ -1,6 +1,6 @@
 # footprint.json has the keys of SPEC §5, each a whole number, heap_bytes 0, and the
 # measured ones non-zero (a zero would mean a measurement that did not happen).
-#   cmake -DFOOTPRINT=.../footprint.json -P check_footprint.cmake
+#   cmake -DFOOTPRINT=.../footprint.json [-DEXTRA_KEYS=...] [-DLIMITS=...] -P check_footprint.cmake
 if(NOT EXISTS ${FOOTPRINT})
   message(FATAL_ERROR "${FOOTPRINT} was not written by the build")
 endif()
@@ -20,4 +20,29 @@ foreach(key text_bytes bss_bytes stack_bytes instructions_per_update)
   if(${key} EQUAL 0)
     message(FATAL_ERROR "${key} is 0: not measured")
   endif()
+endforeach()
+
+# Optional: more whole-number keys (EXTRA_KEYS, a list) and upper limits (LIMITS, a list
+# of KEY<=VALUE, where KEY may be a path such as details.flash_bytes).
+foreach(key IN LISTS EXTRA_KEYS)
+  string(JSON value ERROR_VARIABLE error GET "${json}" ${key})
+  if(error OR NOT value MATCHES "^[1-9][0-9]*$")
+    message(FATAL_ERROR "${FOOTPRINT}: ${key} is not a positive whole number (${value}${error})")
+  endif()
+  message("${key} ${value}")
+endforeach()
+foreach(limit IN LISTS LIMITS)
+  if(NOT limit MATCHES "^([a-z_.]+)<=([0-9]+)$")
+    message(FATAL_ERROR "LIMITS: '${limit}' is not KEY<=VALUE")
+  endif()
+  set(bound ${CMAKE_MATCH_2})
+  string(REPLACE "." ";" path ${CMAKE_MATCH_1})
+  string(JSON value ERROR_VARIABLE error GET "${json}" ${path})
+  if(error OR NOT value MATCHES "^[0-9]+$")
+    message(FATAL_ERROR "${FOOTPRINT}: ${CMAKE_MATCH_1} is not a whole number (${value}${error})")
+  endif()
+  if(value GREATER bound)
+    message(FATAL_ERROR "${FOOTPRINT}: ${limit} missed: ${value}")
+  endif()
+  message("${limit}: ${value}")
 endforeach()

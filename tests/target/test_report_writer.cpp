@@ -61,3 +61,12 @@ ALOFT_TEST_CASE("non-finite numbers are named", "[target][report]") {
   fresh_writer().text("a").text("b").line();
   ALOFT_CHECK(wrote("ab\n"));
 }
+
+ALOFT_TEST_CASE("bytes are written as two upper-case hex digits", "[target][report]") {
+  fresh_writer().hex_byte(0x00);
+  ALOFT_CHECK(wrote("0x00"));
+  fresh_writer().hex_byte(0x47).text(" ").hex_byte(0xFF);
+  ALOFT_CHECK(wrote("0x47 0xFF"));
+  fresh_writer().hex_byte(0xA5);
+  ALOFT_CHECK(wrote("0xA5"));
+}

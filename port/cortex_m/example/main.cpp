@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "aloft_port/report_writer.hpp"
+#include "../icount_calibration.hpp"
 #include "check_settings.hpp"
 #include "recorded_flight.hpp"
 
@@ -37,16 +38,6 @@ std::optional<Check> check;
 volatile float sample_sink;
 #endif
 
-// Instructions per SysTick tick, measured rather than assumed: a loop of known length
-// (two instructions per turn). Under QEMU with -icount the count is exact.
-constexpr std::uint32_t calibration_turns = 100000;
-std::uint64_t calibration_ticks() {
-  std::uint32_t turns = calibration_turns;
-  const std::uint64_t start = aloft::port::ticks();
-  asm volatile("1: subs %0, %0, #1\n\tbne 1b" : "+r"(turns) : : "cc");
-  return aloft::port::ticks() - start;
-}
-
 }  // namespace
 
 int main() {
@@ -59,8 +50,7 @@ int main() {
       .text(", flight ")
       .text(aloft_example::recorded_flight_source)
       .line();
-  out.text("calibration_instructions ").integer(2 * calibration_turns).line();
-  out.text("calibration_ticks ").integer(static_cast<std::int64_t>(calibration_ticks())).line();
+  aloft::port::report_calibration(out);
 
 #if !defined(ALOFT_EXAMPLE_WITHOUT_ALOFT)
   aloft::InertiaTensor<float> inertia;

@@ -86,6 +86,13 @@ class ReportWriter {
     return *this;
   }
 
+  // A byte as 0x and two upper-case hex digits ("0x47"): register values.
+  ReportWriter& hex_byte(std::uint8_t value) {
+    const char digits[] = "0123456789ABCDEF";
+    const char hex[] = {'0', 'x', digits[value >> 4], digits[value & 0xFu], '\0'};
+    return text(hex);
+  }
+
   ReportWriter& line() { return text("\n"); }
 
  private:

@@ -1,0 +1,30 @@
+// What the STM32F405 firmware checks and how: the body's inertia tensor, K, and the
+// onboard pipeline's settings. A maker sets the tensor to their own body's (from its body
+// file, SPEC §2); the one here is the practice brick (data/practice/case00/body.json).
+#pragma once
+
+#include "aloft/onboard_pipeline.hpp"
+
+namespace aloft_stm32f405 {
+
+constexpr int live_simulations = 8;  // K
+
+// kg m², body axes about the centre of mass.
+constexpr float inertia_kg_m2[3][3] = {
+    {0.002823489583f, 0.0f, 0.0f},
+    {0.0f, 0.009669583333f, 0.0f},
+    {0.0f, 0.0f, 0.010873489583f},
+};
+
+using Pipeline = aloft::OnboardPipeline<float, live_simulations>;
+
+inline aloft::Status make_inertia(aloft::InertiaTensor<float>& inertia) {
+  return aloft::InertiaTensor<float>::make_from_tensor(
+      Eigen::Map<const aloft::Mat3<float>>(&inertia_kg_m2[0][0]), inertia);
+}
+
+inline aloft::OnboardPipelineSettings<float> pipeline_settings() {
+  return aloft::OnboardPipelineSettings<float>();  // gyro aligned with body axes
+}
+
+}  // namespace aloft_stm32f405
