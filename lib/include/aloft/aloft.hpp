@@ -9,6 +9,7 @@
 #include "aloft/euler_equations.hpp"
 #include "aloft/flight_detector.hpp"
 #include "aloft/flight_record.hpp"
+#include "aloft/flight_record_from_result.hpp"
 #include "aloft/imu_bus.hpp"
 #include "aloft/imu_sample.hpp"
 #include "aloft/inertia_tensor.hpp"
