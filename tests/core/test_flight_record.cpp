@@ -193,11 +193,11 @@ ALOFT_TEST_CASE("record ring: refuses a geometry it cannot use, and appends only
   aloft::testing::FakeFlash<512, 3> flash;
   aloft::BlockDevice one_block = flash.device();
   one_block.block_count = 1;
-  ALOFT_CHECK(aloft::RecordRing(one_block).mount() == Status::storage_not_ready);
+  ALOFT_CHECK(aloft::RecordRing(one_block).mount() == Status::invalid_dimension);
   aloft::BlockDevice odd_unit = flash.device();
   odd_unit.program_size = 16;
-  ALOFT_CHECK(aloft::RecordRing(odd_unit).mount() == Status::storage_not_ready);
+  ALOFT_CHECK(aloft::RecordRing(odd_unit).mount() == Status::invalid_dimension);
   aloft::RecordRing ring(flash.device());
   FlightRecord r = sample_record();
-  ALOFT_CHECK(ring.append(r) == Status::storage_not_ready);
+  ALOFT_CHECK(ring.append(r) == Status::storage_full);
 }

@@ -11,12 +11,13 @@
 #include "readers/segments.hpp"
 #include "readers/trc_reader.hpp"
 #include "readers/trial_file.hpp"
+#include "records/record_dump.hpp"
 #include "scratch_files.hpp"
 
 TEST_CASE("every fuzz seed is read by its reader", "[fuzz][seeds]") {
   aloft::test::ScratchDir dir;
   const auto corpus = aloft::fuzz::seed_corpus();
-  REQUIRE(corpus.size() == 9);
+  REQUIRE(corpus.size() == 10);
   for (const auto& [harness, seeds] : corpus) {
     REQUIRE_FALSE(seeds.empty());
     for (const auto& seed : seeds) {
@@ -31,6 +32,7 @@ TEST_CASE("every fuzz seed is read by its reader", "[fuzz][seeds]") {
       if (harness == "body_json") CHECK_NOTHROW(aloft::host::read_body_file(path));
       if (harness == "osim") CHECK_NOTHROW(aloft::host::read_osim_joint(path, "j"));
       if (harness == "trial_dispatch") CHECK_NOTHROW(aloft::host::detect_trial_format(path));
+      if (harness == "records") CHECK_NOTHROW(aloft::host::read_record_dump(path));
     }
   }
 }

@@ -49,10 +49,11 @@ class RecordRing {
   explicit RecordRing(const BlockDevice& device) : device_(&device) {}
 
   // Finds the head and the next free slot (see above). Reads only; any erase it finds
-  // necessary is done by the next append.
+  // necessary is done by the next append. invalid_dimension: a geometry the ring cannot
+  // use (see the top of this file); otherwise ok or the device's own failure.
   Status mount() {
     mounted_ = false;
-    if (!geometry_usable()) return Status::storage_not_ready;
+    if (!geometry_usable()) return Status::invalid_dimension;
     Head head;
     const Status s = find_head(head);
     if (s != Status::ok) return s;
@@ -74,8 +75,9 @@ class RecordRing {
   }
 
   // Appends one record; sets record.sequence to the number it was stored under.
+  // storage_full before a successful mount: no slot is known to be free.
   Status append(FlightRecord& record) {
-    if (!mounted_) return Status::storage_not_ready;
+    if (!mounted_) return Status::storage_full;
     if (write_slot_ == slots_per_block()) {
       write_block_ = next_block(write_block_);
       write_slot_ = 0;

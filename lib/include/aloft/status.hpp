@@ -24,7 +24,6 @@ enum class [[nodiscard]] Status : std::uint8_t{
     register_not_kept,                  // a configuration register reads back other than written
     storage_full,                       // no room left where data must be written
     corrupt_data,                       // stored or received bytes fail their check
-    storage_not_ready,                  // storage not mounted, or its geometry cannot hold records
 };
 
 // One short English phrase per status, for logs and the host program's messages.
@@ -46,7 +45,6 @@ constexpr const char* describe(Status s) {
     case Status::register_not_kept: return "a configuration register did not keep its value";
     case Status::storage_full: return "storage is full";
     case Status::corrupt_data: return "data fail their integrity check";
-    case Status::storage_not_ready: return "storage is not mounted or cannot hold records";
   }
   return "unknown status";
 }
