@@ -1,6 +1,7 @@
 #include "records/record_dump.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -14,6 +15,8 @@ namespace {
 constexpr std::uint64_t largest_dump_bytes = 64ull << 20;
 
 std::vector<std::uint8_t> read_bytes(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw Error(path + ": a folder, not a flight record dump");
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw Error(path + ": cannot be opened");
   const std::streamoff size = in.tellg();

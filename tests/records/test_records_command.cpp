@@ -162,6 +162,7 @@ TEST_CASE("aloft records refuses random bytes, an empty file, another version, i
   const std::string empty_path = write_dump("empty.bin", "");
   CHECK_ONE_LINE_ERROR(aloft::host::read_record_dump(empty_path), empty_path, "empty file");
   CHECK_ONE_LINE_ERROR(aloft::host::read_record_dump(noise_path + ".missing"), "cannot be opened");
+  CHECK_ONE_LINE_ERROR(aloft::host::read_record_dump(program_scratch().path("")), "a folder");
 
   std::string v2 = good_dump_bytes();
   for (int slot = 0; slot < 5; ++slot) v2[slot * 128 + 4] = 2;
