@@ -167,11 +167,10 @@ inline bool bytes_equal(const std::uint8_t* a, const std::uint8_t* b, std::size_
   return true;
 }
 
-// Classifies a 128-byte slot; fills `out` when it holds a valid record. The checks run
-// from the cheapest to the CRC; a version this code does not know is named as such
-// before its commit marker or CRC is looked at, since a later layout may place them
-// elsewhere.
-inline SlotState decode_flight_record(const std::uint8_t* slot, FlightRecord& out) {
+// Classifies a 128-byte slot. The checks run from the cheapest to the CRC; a version
+// this code does not know is named as such before its commit marker or CRC is looked at,
+// since a later layout may place them elsewhere.
+inline SlotState classify_slot(const std::uint8_t* slot) {
   bool erased = true;
   for (std::uint32_t i = 0; i < flight_record_size && erased; ++i) erased = slot[i] == 0xFF;
   if (erased) return SlotState::erased;
@@ -182,8 +181,17 @@ inline SlotState decode_flight_record(const std::uint8_t* slot, FlightRecord& ou
     return SlotState::not_committed;
   if (le::get_u32(slot + flight_record_crc_offset) != crc32(slot, flight_record_crc_offset))
     return SlotState::crc_mismatch;
-  decode_flight_record_fields(slot, out);
   return SlotState::valid;
+}
+
+// The sequence number of a slot classified valid.
+inline std::uint32_t flight_record_sequence(const std::uint8_t* slot) { return le::get_u32(slot + 8); }
+
+// Classifies a slot and fills `out` when it holds a valid record.
+inline SlotState decode_flight_record(const std::uint8_t* slot, FlightRecord& out) {
+  const SlotState state = classify_slot(slot);
+  if (state == SlotState::valid) decode_flight_record_fields(slot, out);
+  return state;
 }
 
 }  // namespace aloft

@@ -147,12 +147,12 @@ class RecordRing {
         const Status s =
             device_->read(device_->context, b, i * flight_record_size, bytes, flight_record_size);
         if (s != Status::ok) return s;
-        FlightRecord record;
-        const SlotState state = decode_flight_record(bytes, record);
+        const SlotState state = classify_slot(bytes);
         if (state != SlotState::erased) used_end = i + 1;
-        if (state == SlotState::valid && (!head.found || record.sequence > head.sequence)) {
+        const std::uint32_t sequence = flight_record_sequence(bytes);
+        if (state == SlotState::valid && (!head.found || sequence > head.sequence)) {
           head.found = true;
-          head.sequence = record.sequence;
+          head.sequence = sequence;
           holds_head = true;
         }
       }
