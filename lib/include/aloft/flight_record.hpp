@@ -130,7 +130,7 @@ inline void encode_flight_record(const FlightRecord& r, std::uint8_t (&slot)[fli
   le::put_u32(p + 108, r.settings_hash);
   le::put_u32(p + 112, 0);
   le::put_u32(p + flight_record_crc_offset, crc32(p, flight_record_crc_offset));
-  for (int i = 0; i < 4; ++i) p[flight_record_commit_offset + i] = flight_record_commit[i];
+  for (std::uint32_t i = 0; i < 4; ++i) p[flight_record_commit_offset + i] = flight_record_commit[i];
 }
 
 // The fields of a slot whose state is `valid` (left untouched otherwise).
