@@ -10,7 +10,7 @@ set -euo pipefail
 host_packages=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev libbenchmark-dev
-  libcairo2-dev libxsimd-dev libpugixml-dev
+  libcairo2-dev libxsimd-dev libpugixml-dev zlib1g-dev
   clang libclang-rt-dev clang-format
 )
 target_packages=(

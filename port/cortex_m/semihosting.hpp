@@ -12,6 +12,9 @@ namespace port {
 namespace semihosting {
 
 enum class Operation : std::uint32_t {
+  open = 0x01,           // open a host file: {name, mode, name length}; a handle or -1
+  close = 0x02,          // close it: {handle}; 0 on success
+  write = 0x05,          // write: {handle, data, length}; the bytes NOT written (0: all)
   write0 = 0x04,         // write a NUL-terminated string to the debug console
   exit = 0x18,           // end the program; AArch32 passes only a reason code
   exit_extended = 0x20,  // end the program with a reason code and an exit status

@@ -4,10 +4,13 @@
 // that each seed is read, so the fuzzers start from inputs that reach deep code.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "aloft/flight_record.hpp"
 #include "c3d_test_writer.hpp"
 #include "fifo_file_writer.hpp"
 
@@ -72,6 +75,30 @@ const std::string kOsimSeed =
     "</SpatialTransform></CustomJoint></objects></JointSet></Model></OpenSimDocument>\n";
 
 // harness name -> seeds
+// A dump of the record area: `records` flight records, the slot `torn` (if < records)
+// without its commit marker, then one erased slot.
+inline std::string record_dump_seed(std::uint32_t records, std::uint32_t torn) {
+  std::string dump;
+  for (std::uint32_t i = 0; i <= records; ++i) {
+    aloft::FlightRecord r;
+    r.sequence = i + 1;
+    r.flight_number = i;
+    r.release_us = 1000000u * (i + 1);
+    r.landing_us = r.release_us + 800000;
+    r.samples = 800;
+    r.landed = r.turned = true;
+    r.rms_da_rad = 0.01f;
+    r.seeds_stored = 2;
+    std::uint8_t slot[aloft::flight_record_size];
+    aloft::encode_flight_record(r, slot);
+    if (i == torn)
+      std::fill(slot + aloft::flight_record_commit_offset, slot + aloft::flight_record_size, 0xFF);
+    if (i == records) std::fill(slot, slot + aloft::flight_record_size, 0xFF);
+    dump.append(reinterpret_cast<const char*>(slot), sizeof(slot));
+  }
+  return dump;
+}
+
 inline std::map<std::string, std::vector<Seed>> seed_corpus() {
   using aloft::test::Processor;
   std::map<std::string, std::vector<Seed>> corpus;
@@ -100,6 +127,9 @@ inline std::map<std::string, std::vector<Seed>> seed_corpus() {
       {"shape.json",
        R"({"mass": 10, "inertia": {"shape": {"cylinder": {"radius": 0.065, "height": 0.097}}}})"}};
   corpus["osim"] = {{"model.osim", kOsimSeed}};
+  corpus["records"] = {{"three.bin", record_dump_seed(3, 3)},
+                       {"torn.bin", record_dump_seed(3, 1)},
+                       {"truncated.bin", record_dump_seed(2, 2).substr(0, 300)}};
   std::vector<Seed> c3d;
   for (Processor p : {Processor::intel, Processor::dec, Processor::mips}) {
     for (bool float_data : {false, true}) {
@@ -120,10 +150,11 @@ inline std::map<std::string, std::vector<Seed>> seed_corpus() {
   hole.holes = {{20, 30}};
   corpus["icm42688p_fifo"] = {
       {"plain.bin", fifo.bytes()}, {"powerup.bin", powerup.bytes()}, {"hole.bin", hole.bytes()}};
-  // The dispatch sees every format.
+  // The dispatch sees every trial format (FIFO bytes and record dumps are not trials).
   std::vector<Seed> all;
   for (const auto& [harness, seeds] : corpus) {
-    if (harness == "body_json" || harness == "osim" || harness == "icm42688p_fifo") continue;
+    if (harness == "body_json" || harness == "osim" || harness == "icm42688p_fifo" ||
+        harness == "records") continue;
     for (const Seed& s : seeds) all.push_back({harness + "_" + s.name, s.bytes});
   }
   corpus["trial_dispatch"] = all;

@@ -12,6 +12,7 @@
 #include "readers/trc_reader.hpp"
 #include "readers/trial_file.hpp"
 #include "replay/fifo_recording.hpp"
+#include "records/record_dump.hpp"
 #include "scratch_files.hpp"
 
 TEST_CASE("every fuzz seed is read by its reader", "[fuzz][seeds]") {
@@ -33,6 +34,7 @@ TEST_CASE("every fuzz seed is read by its reader", "[fuzz][seeds]") {
       if (harness == "osim") CHECK_NOTHROW(aloft::host::read_osim_joint(path, "j"));
       if (harness == "trial_dispatch") CHECK_NOTHROW(aloft::host::detect_trial_format(path));
       if (harness == "icm42688p_fifo") CHECK_NOTHROW(aloft::host::read_fifo_recording(path, 1000));
+      if (harness == "records") CHECK_NOTHROW(aloft::host::read_record_dump(path));
     }
   }
 }

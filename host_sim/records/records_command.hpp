@@ -1,0 +1,13 @@
+// `aloft records` registers here (host_sim/records/records_command.cpp).
+// MERGE NOTE: this declaration belongs in host_sim/common/commands.hpp beside the other
+// add_*_command; it sits apart only so that this branch's builds did not recompile every
+// command while it was written.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace aloft::host {
+
+void add_records_command(CLI::App& app);  // host_sim/records/
+
+}  // namespace aloft::host

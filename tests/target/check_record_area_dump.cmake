@@ -1,0 +1,21 @@
+# Reads back the record area that target_record_area_dump wrote by semihosting:
+#   cmake -DDUMP=record_area_dump.bin -DEXPECTED_BYTES=1536 -DEXPECTED_RECORDS=5 -P check_record_area_dump.cmake
+# Every record slot starts with "ALFR" (41 4C 46 52) at a multiple of 128 bytes.
+file(SIZE ${DUMP} bytes)
+if(NOT bytes EQUAL EXPECTED_BYTES)
+  message(FATAL_ERROR "${DUMP}: ${bytes} bytes, expected ${EXPECTED_BYTES}")
+endif()
+file(READ ${DUMP} hex HEX)
+set(records 0)
+math(EXPR last "${bytes} / 128 - 1")
+foreach(slot RANGE ${last})
+  math(EXPR at "${slot} * 256")
+  string(SUBSTRING "${hex}" ${at} 8 magic)
+  if(magic STREQUAL "414c4652")
+    math(EXPR records "${records} + 1")
+  endif()
+endforeach()
+if(NOT records EQUAL EXPECTED_RECORDS)
+  message(FATAL_ERROR "${DUMP}: ${records} records, expected ${EXPECTED_RECORDS}")
+endif()
+message(STATUS "${DUMP}: ${records} records in ${bytes} bytes")
