@@ -9,6 +9,7 @@
 #include "common/commands.hpp"
 #include "common/usage_error.hpp"
 #include "records/records_command.hpp"
+#include "summarize/summarize_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"aloft: validate a rigid body's inertia tensor by throwing it", "aloft"};
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
   aloft::host::add_diagnose_command(app);
   aloft::host::add_replay_command(app);
   aloft::host::add_records_command(app);
+  aloft::host::add_summarize_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version

@@ -12,6 +12,7 @@ host_packages=(
   libeigen3-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev libbenchmark-dev
   libcairo2-dev libxsimd-dev libpugixml-dev zlib1g-dev
   clang libclang-rt-dev clang-format
+  parallel
 )
 target_packages=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib

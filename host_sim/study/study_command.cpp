@@ -1,6 +1,7 @@
 // `aloft study` (SPEC §5): the seed paper's cylinder study on the built-in throw, or the
 // same analyses on a recording. Everything is computed in memory first; only then are
-// the files written, each atomically, so a failure leaves no half-written output.
+// the files written, into a new folder swapped in whole (common/atomic_folder.hpp), so
+// the output folder is all old or all new, even after a kill -9.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include <unistd.h>
 
 #include "common/atomic_file.hpp"
+#include "common/atomic_folder.hpp"
 #include "common/commands.hpp"
 #include "common/option_checks.hpp"
 #include "readers/pose_naming_options.hpp"
@@ -151,25 +153,14 @@ StudyResult run_study(const StudyOptions& o) {
 }
 
 void write_outputs(const std::string& dir, const std::vector<std::pair<std::string, std::string>>& files) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) {
-    throw Error(dir + ": cannot create the output folder" + (ec ? " (" + ec.message() + ")" : ""));
-  }
-  std::vector<std::string> written;
-  try {
+  replace_folder_atomically(dir, [&](const std::string& fresh) {
     for (const auto& file : files) {
       // Not a structured binding: a lambda capturing one is C++20, and clang refuses it.
       const std::string& content = file.second;
-      const std::string path = (std::filesystem::path(dir) / file.first).string();
+      const std::string path = (std::filesystem::path(fresh) / file.first).string();
       write_file_atomically(path, [&](std::ostream& out) { out << content; });
-      written.push_back(path);
     }
-  } catch (...) {
-    // All or nothing: take back the files this run already put in place.
-    for (const std::string& path : written) std::remove(path.c_str());
-    throw;
-  }
+  });
 }
 
 // "study: calibrate: grid 120 / 1120" now and then on stderr: the search takes minutes.
@@ -203,6 +194,7 @@ void calibrate(const StudyOptions& o) {
 
 void study(const StudyOptions& o) {
   check_options(o);
+  clean_after_killed_runs(o.out_dir);
   if (o.calibrate_to_paper) return calibrate(o);
   const Clock::time_point start = Clock::now();
   StudyResult result = run_study(o);

@@ -1,14 +1,18 @@
-// Outputs stay whole (issue 12, item 8): `aloft study` and `aloft diagnose --json --plot`
-// are killed with SIGKILL at random moments; whatever output they left under its final
-// name must be complete — JSON that parses, CSV whose every row has the header's cells,
-// SVG that closes, PNG that ends with its IEND chunk. Temporary files (named
-// NAME.tmp.PID, never mistaken for a result) may be left behind.
+// Outputs stay whole (issue 12, item 8): `aloft diagnose --json --plot` is killed with
+// SIGKILL at random moments; whatever output it left under its final name must be
+// complete — JSON that parses, CSV whose every row has the header's cells, SVG that
+// closes, PNG that ends with its IEND chunk. Temporary files (named NAME.tmp.PID, never
+// mistaken for a result) may be left behind.
+// `aloft study`'s folder is all old or all new (issue 26): killed 50 times, alternating
+// seeds, its folder always equals one whole run's output, and nothing stray is left
+// beside or inside it by any run but the one just killed.
 #include <signal.h>
 #include <sys/wait.h>
 #include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <map>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -119,7 +123,7 @@ std::string symmetric_top_log() {
 
 }  // namespace
 
-TEST_CASE("study and diagnose outputs are never left truncated by SIGKILL", "[common][outputs][slow]") {
+TEST_CASE("diagnose outputs are never left truncated by SIGKILL", "[common][outputs][slow]") {
   const fs::path dir = fs::temp_directory_path() / ("aloft-sigkill-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -128,17 +132,6 @@ TEST_CASE("study and diagnose outputs are never left truncated by SIGKILL", "[co
   const std::string aloft = ALOFT_BINARY;
   std::mt19937 random(12);
   std::uniform_real_distribution<double> share(0.2, 1.05);
-
-  SECTION("aloft study") {
-    const fs::path out = dir / "study";
-    const std::vector<std::string> args = {aloft,          "study", "--out",     out.string(),
-                                           "--mc-samples", "500",   "--threads", "2"};
-    const double full = run_to_end_seconds(args);
-    for (int k = 0; k < 10; ++k) {
-      fs::remove_all(out);
-      kill_and_check(args, share(random) * full, out);
-    }
-  }
   SECTION("aloft diagnose --json --plot") {
     const fs::path out = dir / "diagnose";
     const std::vector<std::string> args = {aloft,    "diagnose",
@@ -154,5 +147,110 @@ TEST_CASE("study and diagnose outputs are never left truncated by SIGKILL", "[co
       kill_and_check(args, share(random) * full, out);
     }
   }
+  fs::remove_all(dir);
+}
+
+namespace {
+
+// The files of one study output that do not depend on the clock (results.json holds the
+// wall time; its seed is checked instead).
+const std::vector<std::string> kStudyFiles = {"experiment.csv", "rms_da.csv", "figure.svg", "figure.png",
+                                              "results.json"};
+
+using FolderContents = std::map<std::string, std::string>;
+
+FolderContents read_folder(const fs::path& dir) {
+  FolderContents out;
+  for (const auto& entry : fs::directory_iterator(dir))
+    out[entry.path().filename().string()] = contents(entry.path());
+  return out;
+}
+
+std::vector<std::string> study_args(const fs::path& out, int seed) {
+  return {ALOFT_BINARY, "study",     "--out", out.string(), "--mc-samples",
+          "40",         "--threads", "2",     "--seed",     std::to_string(seed)};
+}
+
+// "" when `dir` is exactly the whole output of the seed-1 or the seed-2 run, else why not.
+std::string whole_run_or_why(const fs::path& dir, const FolderContents (&reference)[2]) {
+  const FolderContents now = read_folder(dir);
+  if (now.size() != kStudyFiles.size())
+    return "the folder holds " + std::to_string(now.size()) + " files, not 5";
+  const auto results =
+      nlohmann::json::parse(now.count("results.json") ? now.at("results.json") : "null", nullptr, false);
+  if (!results.is_object() || !results.contains("seed")) return "results.json missing or not whole";
+  const int seed = results["seed"].get<int>();
+  if (seed != 1 && seed != 2) return "results.json of an unknown run";
+  for (const std::string& name : kStudyFiles) {
+    if (name == "results.json") continue;
+    if (!now.count(name) || now.at(name) != reference[seed - 1].at(name)) {
+      return name + " is not the seed-" + std::to_string(seed) + " run's (a mixed folder)";
+    }
+  }
+  return "";
+}
+
+// Siblings of `dir` and files inside it that no finished run should leave, except those
+// of process `allowed` (the run just killed).
+std::vector<std::string> stray_files(const fs::path& dir, pid_t allowed) {
+  std::vector<std::string> out;
+  const std::string mine = std::to_string(allowed);
+  auto foreign = [&](const std::string& name) {
+    return name.size() < mine.size() || name.compare(name.size() - mine.size(), mine.size(), mine) != 0;
+  };
+  for (const auto& entry : fs::directory_iterator(dir.parent_path())) {
+    const std::string name = entry.path().filename().string();
+    if (entry.path() != dir && name.find(".aloft-") != std::string::npos && foreign(name))
+      out.push_back(name);
+  }
+  if (fs::exists(dir)) {
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      const std::string name = entry.path().filename().string();
+      if (is_temporary(entry.path()) && foreign(name)) out.push_back(name);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("aloft study's folder is all old or all new after SIGKILL", "[common][outputs][slow]") {
+  const fs::path dir = fs::temp_directory_path() / ("aloft-study-swap-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  FolderContents reference[2];
+  double full = 0.0;
+  for (int seed : {1, 2}) {
+    const fs::path ref = dir / ("reference" + std::to_string(seed));
+    full = std::max(full, run_to_end_seconds(study_args(ref, seed)));
+    reference[seed - 1] = read_folder(ref);
+    REQUIRE(reference[seed - 1].size() == kStudyFiles.size());
+  }
+  REQUIRE(reference[0].at("rms_da.csv") != reference[1].at("rms_da.csv"));
+
+  const fs::path out = dir / "study";
+  run_to_end_seconds(study_args(out, 1));
+  std::mt19937 random(26);
+  std::uniform_real_distribution<double> share(0.0, 1.1);
+  int mixed = 0, stray = 0;
+  for (int k = 0; k < 50; ++k) {
+    const double at = share(random) * full;
+    const pid_t pid = spawn(study_args(out, 2 - k % 2));
+    std::this_thread::sleep_for(std::chrono::duration<double>(at));
+    ::kill(pid, SIGKILL);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    INFO("kill " << k << " at " << at << " s of " << full << " s");
+    const std::string why = fs::exists(out) ? whole_run_or_why(out, reference) : "the folder is gone";
+    CHECK(why == "");
+    mixed += why != "";
+    const std::vector<std::string> left = stray_files(out, pid);
+    CHECK(left.empty());
+    stray += static_cast<int>(left.size());
+  }
+  run_to_end_seconds(study_args(out, 1));
+  CHECK(stray_files(out, 0).empty());
+  CHECK(whole_run_or_why(out, reference) == "");
+  WARN("50 kills: " << mixed << " mixed folders, " << stray << " stray files; a whole run " << full << " s");
   fs::remove_all(dir);
 }

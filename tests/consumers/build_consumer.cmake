@@ -6,6 +6,8 @@
 #   GENERATOR      CMake generator
 #   EXTRA_ARGS     more -D arguments for the consumer (optional)
 #   NO_RUN         configure only
+#   EXPECT_WARNING a regular expression the build's output must match (a warning that must
+#                  fire, and not stop the build)
 cmake_minimum_required(VERSION 3.20)
 
 function(run_step what)
@@ -48,5 +50,12 @@ if(NO_RUN)
   return()
 endif()
 run_step("build" ${CMAKE_COMMAND} --build ${WORK_DIR}/build)
+if(EXPECT_WARNING)
+  if(NOT step_output MATCHES "${EXPECT_WARNING}")
+    message(FATAL_ERROR "consumer ${KIND}: the build printed no warning matching "
+                        "'${EXPECT_WARNING}', so it proves nothing:\n${step_output}")
+  endif()
+  message(STATUS "consumer ${KIND}: the warning fired and the build went on")
+endif()
 run_step("run" ${CMAKE_CTEST_COMMAND} --test-dir ${WORK_DIR}/build --output-on-failure)
 message(STATUS "${step_output}")
