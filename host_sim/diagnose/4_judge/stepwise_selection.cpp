@@ -118,46 +118,12 @@ bool next_step(Analysis& a, const RankingContext& context, const CandidateEvalua
   return joins;
 }
 
-}  // namespace
-
-void select_stepwise(Analysis& analysis, const RankingContext& context, const CandidateEvaluator& evaluate) {
+// The final model's effects, each with its step, its parameters and what the model
+// loses without it; most important (largest loss) first.
+// Sets the verdict from them (its effect, class, chosen candidate and held-out error after).
+void describe_final_model(Analysis& analysis, const RankingContext& context,
+                          const CandidateEvaluator& evaluate, const Candidate& current) {
   Verdict& v = analysis.verdict;
-  analysis.steps.clear();
-  analysis.steps.push_back(first_step(analysis));
-  v.effects.clear();
-  const auto none =
-      std::find_if(analysis.candidates.begin(), analysis.candidates.end(),
-                   [](const Candidate& c) { return c.effect == Effect::none && c.base.empty(); });
-  std::string why;
-  if (v.effect != Effect::none && v.chosen >= 0 &&
-      !matters(analysis.candidates[static_cast<std::size_t>(v.chosen)], context, &why)) {
-    analysis.notes.push_back(std::string(effect_name(v.effect)) +
-                             " beats the noise but is too small to matter: " + why);
-    v.effect = Effect::none;
-    v.equivalent = {Effect::none};
-    v.could_not_judge.clear();
-    if (none != analysis.candidates.end()) {
-      v.chosen = static_cast<int>(none - analysis.candidates.begin());
-      v.heldout_rms_rel_err_after = none->heldout_rms_rel_err;
-      v.heldout_rms_da_after_deg = none->heldout_rms_da_deg;
-    }
-    analysis.steps.front() = first_step(analysis);
-  }
-  if (v.effect == Effect::none || v.chosen < 0) {
-    if (none != analysis.candidates.end()) analysis.model = *none;
-    judge_confidence(analysis);
-    return;
-  }
-  Candidate current = analysis.candidates[static_cast<std::size_t>(v.chosen)];
-  std::vector<std::vector<Effect>> classes = {v.equivalent};
-  while (static_cast<int>(effects_of(current).size()) < kMaximumEffects &&
-         next_step(analysis, context, evaluate, classes, current)) {
-    classes.push_back(analysis.steps.back().equivalent);
-  }
-  analysis.model = current;
-
-  // The final model's effects, each with its step, its parameters and what the model
-  // loses without it; most important (largest loss) first.
   const std::vector<Effect> final_effects = effects_of(current);
   const EffectModel model = context.nominal != nullptr && !current.fit.flights.empty()
                                 ? model_of(current.fit, *context.nominal, 0)
@@ -201,6 +167,47 @@ void select_stepwise(Analysis& analysis, const RankingContext& context, const Ca
     v.could_not_judge.push_back(
         "the compound model explains the gap but its parameters are poorly determined");
   }
+}
+
+}  // namespace
+
+void select_stepwise(Analysis& analysis, const RankingContext& context, const CandidateEvaluator& evaluate) {
+  Verdict& v = analysis.verdict;
+  analysis.steps.clear();
+  analysis.steps.push_back(first_step(analysis));
+  v.effects.clear();
+  const auto none =
+      std::find_if(analysis.candidates.begin(), analysis.candidates.end(),
+                   [](const Candidate& c) { return c.effect == Effect::none && c.base.empty(); });
+  std::string why;
+  if (v.effect != Effect::none && v.chosen >= 0 &&
+      !matters(analysis.candidates[static_cast<std::size_t>(v.chosen)], context, &why)) {
+    analysis.notes.push_back(std::string(effect_name(v.effect)) +
+                             " beats the noise but is too small to matter: " + why);
+    v.effect = Effect::none;
+    v.equivalent = {Effect::none};
+    v.could_not_judge.clear();
+    if (none != analysis.candidates.end()) {
+      v.chosen = static_cast<int>(none - analysis.candidates.begin());
+      v.heldout_rms_rel_err_after = none->heldout_rms_rel_err;
+      v.heldout_rms_da_after_deg = none->heldout_rms_da_deg;
+    }
+    analysis.steps.front() = first_step(analysis);
+  }
+  if (v.effect == Effect::none || v.chosen < 0) {
+    if (none != analysis.candidates.end()) analysis.model = *none;
+    judge_confidence(analysis);
+    return;
+  }
+  Candidate current = analysis.candidates[static_cast<std::size_t>(v.chosen)];
+  std::vector<std::vector<Effect>> classes = {v.equivalent};
+  while (static_cast<int>(effects_of(current).size()) < kMaximumEffects &&
+         next_step(analysis, context, evaluate, classes, current)) {
+    classes.push_back(analysis.steps.back().equivalent);
+  }
+  analysis.model = current;
+
+  describe_final_model(analysis, context, evaluate, current);
   judge_confidence(analysis);
 }
 

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "diagnose/3_fit/held_out.hpp"
 #include "diagnose/4_judge/baseline_gap.hpp"
 #include "diagnose/4_judge/candidate_ranking.hpp"
-#include "diagnose/3_fit/held_out.hpp"
 #include "diagnose/4_judge/plausibility.hpp"
 #include "diagnose/4_judge/stepwise_selection.hpp"
 #include "diagnose/4_judge/tensor_intervals.hpp"
@@ -63,9 +63,8 @@ std::vector<Effect> effects_of_model(const Candidate& c) {
   return out;
 }
 
-}  // namespace
-
-FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nominal) {
+// The flight's identity and sampling, before any judging.
+FlightDiagnosis describe_flight(const Flight& flight) {
   FlightDiagnosis d;
   d.name = flight.name;
   d.comment = flight.comment;
@@ -76,6 +75,116 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
   d.rate_hz = flight.size() > 1 ? (flight.size() - 1) / std::max(d.end_s - d.start_s, 1e-12) : 0.0;
   d.gaps = time_gaps(flight.time_s);
   d.unusable_samples = static_cast<std::size_t>(std::count(flight.usable.begin(), flight.usable.end(), 0));
+  return d;
+}
+
+// The one held-out rule of every model of this flight: fitted on each of two interleaved
+// folds, judged on the other.
+class FlightJudge {
+ public:
+  FlightJudge(const Flight& flight, const NominalInertia& nominal, const Vec3& inverse_sigma)
+      : flight_(flight),
+        nominal_(nominal),
+        inverse_sigma_(inverse_sigma),
+        n_(flight.size()),
+        all_{&flight, all_samples(n_), inverse_sigma},
+        folds_(interleaved_folds(n_)) {
+    for (int f = 0; f < 2; ++f) train_[f] = FlightData{&flight, folds_.train[f], inverse_sigma};
+  }
+
+  const FlightData& all() const { return all_; }
+
+  // Fits `c` on each fold with fit_fold(f), judges it on the other fold, and records the
+  // held-out gap.
+  template <typename FitFold>
+  void judge_held_out(Candidate& c, const FitFold& fit_fold) const {
+    std::vector<Vec3> heldout(n_, Vec3::Zero()), fold_readings;
+    GapSums sums;
+    for (std::size_t f = 0; f < 2; ++f) {
+      c.fold_fits.push_back(fit_fold(f));
+      predict(c.fold_fits.back(), nominal_, 0, flight_, fold_readings);
+      for (std::size_t k = 0; k < n_; ++k) {
+        if (!folds_.judge[f][k]) continue;
+        heldout[k] = fold_readings[k];
+        if (flight_.usable[k]) sums.add(fold_readings[k], flight_.omega[k], inverse_sigma_);
+      }
+    }
+    c.heldout_chi_square = sums.chi_square;
+    c.heldout_residuals = sums.residuals;
+    c.heldout_rms_da_deg = sums.rms_da_deg();
+    c.heldout_rms_rel_err = sums.rms_rel_err();
+    c.heldout_readings.push_back(std::move(heldout));
+  }
+
+  // The nominal model: the reference every candidate of the first step is judged against.
+  Candidate nominal_model(const EffectFit& none_full) const {
+    Candidate c;
+    c.fit = none_full;
+    judge_held_out(
+        c, [&](std::size_t f) { return fit_effect(Effect::none, nominal_, {train_[f]}, &none_full); });
+    return c;
+  }
+
+  // A candidate: `added` fitted with the model of `base` on all the data (its parameters)
+  // and on each fold (judged on the other), each fit starting from the base model's.
+  Candidate evaluate(const Candidate& base, Effect added) const {
+    Candidate c;
+    c.effect = added;
+    c.base = effects_of_model(base);
+    c.fit = fit_added_effect(base.fit, added, nominal_, {all_});
+    c.params = effect_parameters(model_of(c.fit, nominal_, 0), c.fit.theta);
+    // The fold fit starts from the all-data solution only to save iterations; it then
+    // converges on its own training samples.
+    judge_held_out(c, [&](std::size_t f) {
+      return fit_added_effect(base.fold_fits[f], added, nominal_, {train_[f]}, &c.fit.theta);
+    });
+    return c;
+  }
+
+ private:
+  const Flight& flight_;
+  const NominalInertia& nominal_;
+  Vec3 inverse_sigma_;
+  std::size_t n_;
+  FlightData all_;
+  Folds folds_;
+  std::array<FlightData, 2> train_;
+};
+
+// The nominal model's gap over the whole flight: baseline, slices and invariants.
+void describe_baseline(Analysis& analysis, const Flight& flight, const NominalInertia& nominal,
+                       const NoiseFloor& noise, const EffectFit& none_full) {
+  const Vec3 inverse_sigma = noise.sigma.cwiseInverse();
+  std::vector<Vec3> readings;
+  predict(none_full, nominal, 0, flight, readings);
+  BaselineGap baseline;
+  baseline.add(flight, readings, inverse_sigma);
+  baseline.describe(analysis);
+  describe_slices(flight, readings, inverse_sigma, analysis.where);
+  analysis.where.invariants = measured_invariants(flight, nominal, noise);
+}
+
+// Onset: for an impulse, the fitted time; otherwise when the nominal motion fitted to
+// the first fifth of the flight stops explaining the data. None when the verdict is none.
+void find_onset(Analysis& analysis, const Flight& flight, const NominalInertia& nominal,
+                const EffectFit& none_full, const Vec3& inverse_sigma) {
+  const EffectModel final_model = model_of(analysis.model.fit, nominal, 0);
+  if (theta_offset(final_model, Effect::impulse) >= 0) {
+    analysis.where.onset_s = final_model.impulse_time_s;
+  } else if (analysis.verdict.effect != Effect::none) {
+    const FlightData lead{&flight, leading_samples(flight.size(), 0.2, kMinimumSamples), inverse_sigma};
+    const EffectFit early = fit_effect(Effect::none, nominal, {lead}, &none_full);
+    std::vector<Vec3> readings;
+    predict(early, nominal, 0, flight, readings);
+    analysis.where.onset_s = cusum_onset(flight, readings, inverse_sigma);
+    if (!analysis.where.onset_s) analysis.where.onset_s = flight.start_s();
+  }
+}
+
+}  // namespace
+
+FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nominal) {
+  FlightDiagnosis d = describe_flight(flight);
   Analysis& analysis = d.analysis;
   const std::size_t usable = flight.size() - d.unusable_samples;
   if (usable < kMinimumSamples) {
@@ -89,64 +198,14 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
   d.noise = estimate_noise_floor(flight);
   analysis.where.noise_floor = d.noise.sigma;
   const Vec3 inverse_sigma = d.noise.sigma.cwiseInverse();
-  const std::size_t n = flight.size();
+  const FlightJudge judge(flight, nominal, inverse_sigma);
+  const EffectFit none_full = fit_effect(Effect::none, nominal, {judge.all()}, nullptr);
+  describe_baseline(analysis, flight, nominal, d.noise, none_full);
 
-  const FlightData all{&flight, all_samples(n), inverse_sigma};
-  const EffectFit none_full = fit_effect(Effect::none, nominal, {all}, nullptr);
-  std::vector<Vec3> readings;
-  predict(none_full, nominal, 0, flight, readings);
-  BaselineGap baseline;
-  baseline.add(flight, readings, inverse_sigma);
-  baseline.describe(analysis);
-  describe_slices(flight, readings, inverse_sigma, analysis.where);
-  analysis.where.invariants = measured_invariants(flight, nominal, d.noise);
-
-  const Folds folds = interleaved_folds(n);
-  std::array<FlightData, 2> train;
-  for (int f = 0; f < 2; ++f) train[f] = FlightData{&flight, folds.train[f], inverse_sigma};
-
-  // Fits `c` on each fold with fit_fold(f), judges it on the other fold, and records the
-  // held-out gap: the one held-out rule of every model of this flight.
-  const auto judge_held_out = [&](Candidate& c, const auto& fit_fold) {
-    std::vector<Vec3> heldout(n, Vec3::Zero()), fold_readings;
-    GapSums sums;
-    for (std::size_t f = 0; f < 2; ++f) {
-      c.fold_fits.push_back(fit_fold(f));
-      predict(c.fold_fits.back(), nominal, 0, flight, fold_readings);
-      for (std::size_t k = 0; k < n; ++k) {
-        if (!folds.judge[f][k]) continue;
-        heldout[k] = fold_readings[k];
-        if (flight.usable[k]) sums.add(fold_readings[k], flight.omega[k], inverse_sigma);
-      }
-    }
-    c.heldout_chi_square = sums.chi_square;
-    c.heldout_residuals = sums.residuals;
-    c.heldout_rms_da_deg = sums.rms_da_deg();
-    c.heldout_rms_rel_err = sums.rms_rel_err();
-    c.heldout_readings.push_back(std::move(heldout));
-  };
-
-  // A candidate: `added` fitted with the model of `base` on all the data (its parameters)
-  // and on each fold (judged on the other), each fit starting from the base model's.
   const CandidateEvaluator evaluate = [&](const Candidate& base, Effect added) {
-    Candidate c;
-    c.effect = added;
-    c.base = effects_of_model(base);
-    c.fit = fit_added_effect(base.fit, added, nominal, {all});
-    c.params = effect_parameters(model_of(c.fit, nominal, 0), c.fit.theta);
-    // The fold fit starts from the all-data solution only to save iterations; it then
-    // converges on its own training samples.
-    judge_held_out(c, [&](std::size_t f) {
-      return fit_added_effect(base.fold_fits[f], added, nominal, {train[f]}, &c.fit.theta);
-    });
-    return c;
+    return judge.evaluate(base, added);
   };
-
-  // The nominal model: the reference every candidate of the first step is judged against.
-  Candidate nominal_model;
-  nominal_model.fit = none_full;
-  judge_held_out(nominal_model,
-                 [&](std::size_t f) { return fit_effect(Effect::none, nominal, {train[f]}, &none_full); });
+  const Candidate nominal_model = judge.nominal_model(none_full);
   for (Effect effect : candidate_effects(flight.gyro_input)) {
     analysis.candidates.push_back(effect == Effect::none ? nominal_model : evaluate(nominal_model, effect));
   }
@@ -157,19 +216,7 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
   rank_candidates(analysis, context);
   select_stepwise(analysis, context, evaluate);
   attach_flight_tensor_report(analysis, flight, nominal);
-
-  // Onset: for an impulse, the fitted time; otherwise when the nominal motion fitted to
-  // the first fifth of the flight stops explaining the data. None when the verdict is none.
-  const EffectModel final_model = model_of(analysis.model.fit, nominal, 0);
-  if (theta_offset(final_model, Effect::impulse) >= 0) {
-    analysis.where.onset_s = final_model.impulse_time_s;
-  } else if (analysis.verdict.effect != Effect::none) {
-    const FlightData lead{&flight, leading_samples(n, 0.2, kMinimumSamples), inverse_sigma};
-    const EffectFit early = fit_effect(Effect::none, nominal, {lead}, &none_full);
-    predict(early, nominal, 0, flight, readings);
-    analysis.where.onset_s = cusum_onset(flight, readings, inverse_sigma);
-    if (!analysis.where.onset_s) analysis.where.onset_s = flight.start_s();
-  }
+  find_onset(analysis, flight, nominal, none_full, inverse_sigma);
   if (!d.noise.reliable) {
     analysis.verdict.confident = false;
     analysis.verdict.could_not_judge.push_back("too few clean samples to estimate the noise floor");

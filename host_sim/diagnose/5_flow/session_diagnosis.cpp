@@ -12,14 +12,14 @@
 #include <optional>
 
 #include "common/parallel_for.hpp"
+#include "diagnose/3_fit/held_out.hpp"
 #include "diagnose/4_judge/baseline_gap.hpp"
 #include "diagnose/4_judge/candidate_ranking.hpp"
 #include "diagnose/4_judge/confidence.hpp"
-#include "diagnose/5_flow/diagnosis.hpp"
-#include "diagnose/3_fit/held_out.hpp"
 #include "diagnose/4_judge/plausibility.hpp"
 #include "diagnose/4_judge/stepwise_selection.hpp"
 #include "diagnose/4_judge/tensor_intervals.hpp"
+#include "diagnose/5_flow/diagnosis.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -251,17 +251,9 @@ void add_flip_periods(SessionDiagnosis& session, const PooledData& pool, const E
   session.flip_period = summary;
 }
 
-}  // namespace
-
-SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const NominalInertia& nominal,
-                                  int threads) {
-  SessionDiagnosis session;
-  session.flights.resize(flights.size());
-  const unsigned workers = static_cast<unsigned>(std::max(threads, 1));
-  parallel_for(flights.size(), workers,
-               [&](std::size_t i) { session.flights[i] = diagnose_flight(flights[i], nominal); });
-
-  // Only flights that could be judged on their own take part in the pooled analysis.
+// Only flights that could be judged on their own take part in the pooled analysis; the
+// others are named in a note.
+PooledData pool_judged_flights(SessionDiagnosis& session, const std::vector<Flight>& flights) {
   PooledData pool;
   for (std::size_t i = 0; i < flights.size(); ++i) {
     const FlightDiagnosis& d = session.flights[i];
@@ -281,17 +273,88 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
     pool.train.push_back({FlightData{&flights[i], pool.folds.back().train[0], inv},
                           FlightData{&flights[i], pool.folds.back().train[1], inv}});
   }
+  return pool;
+}
+
+// One flight: nothing to pool, so the top level is that flight's own analysis (held out
+// within the flight), said so.
+void take_single_flight(SessionDiagnosis& session, const PooledData& pool) {
+  Analysis& analysis = session.pooled;
+  std::vector<std::string> notes = std::move(analysis.notes);
+  analysis = *pool.own.front();
+  notes.push_back("one judged flight (" + pool.flights.front()->name +
+                  "): the top level is that flight's own verdict, held out within the flight");
+  analysis.notes.insert(analysis.notes.end(), notes.begin(), notes.end());
+  session.single_flight = true;
+}
+
+// Baseline and where, pooled over every flight's nominal fit.
+void describe_pooled_baseline(Analysis& analysis, const PooledData& pool, const EffectFit& none_all,
+                              const NominalInertia& nominal) {
+  BaselineGap baseline;
+  std::vector<Vec3> readings;
+  for (std::size_t f = 0; f < pool.flights.size(); ++f) {
+    predict(none_all, nominal, f, *pool.flights[f], readings);
+    baseline.add(*pool.flights[f], readings, pool.inverse_sigma[f]);
+  }
+  baseline.describe(analysis);
+}
+
+// What the ranking of pooled candidates needs to know of the pooled flights.
+RankingContext pooled_context(const SessionDiagnosis& session, const PooledData& pool,
+                              const NominalInertia& nominal) {
+  double speed_sum = 0.0, duration_sum = 0.0;
+  for (const Flight* f : pool.flights) {
+    speed_sum += f->mean_speed();
+    duration_sum += f->end_s() - f->start_s();
+  }
+  // The pooled fit informs shared parameters with every flight's data.
+  const double mean_speed = speed_sum / pool.flights.size();
+  const double total_duration = duration_sum;
+
+  // The coarsest resolution of the pooled flights (those left out have none).
+  double resolution = 0.0;
+  for (const FlightDiagnosis& d : session.flights) resolution = std::max(resolution, d.noise.resolution);
+  return RankingContext{pool.flights.front()->gyro_input,
+                        pool.flights,
+                        pool.inverse_sigma,
+                        mean_speed,
+                        total_duration,
+                        &nominal,
+                        resolution};
+}
+
+// Onset of a session: the median of the flights' onsets, relative to each flight's start.
+void set_pooled_onset(SessionDiagnosis& session) {
+  Analysis& analysis = session.pooled;
+  std::vector<double> onsets;
+  for (const FlightDiagnosis& d : session.flights) {
+    if (d.analysis.where.onset_s) onsets.push_back(*d.analysis.where.onset_s - d.start_s);
+  }
+  if (analysis.verdict.effect != Effect::none && !onsets.empty()) {
+    std::nth_element(onsets.begin(), onsets.begin() + static_cast<std::ptrdiff_t>(onsets.size() / 2),
+                     onsets.end());
+    analysis.where.onset_s = onsets[onsets.size() / 2];
+    analysis.notes.push_back(
+        "pooled where.onset_s is the median over flights, seconds after each flight's start");
+  }
+}
+
+}  // namespace
+
+SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const NominalInertia& nominal,
+                                  int threads) {
+  SessionDiagnosis session;
+  session.flights.resize(flights.size());
+  const unsigned workers = static_cast<unsigned>(std::max(threads, 1));
+  parallel_for(flights.size(), workers,
+               [&](std::size_t i) { session.flights[i] = diagnose_flight(flights[i], nominal); });
+
+  PooledData pool = pool_judged_flights(session, flights);
   Analysis& analysis = session.pooled;
   const std::size_t count = pool.flights.size();
   if (count == 1) {
-    // One flight: nothing to pool, so the top level is that flight's own analysis (held
-    // out within the flight), said so.
-    std::vector<std::string> notes = std::move(analysis.notes);
-    analysis = *pool.own.front();
-    notes.push_back("one judged flight (" + pool.flights.front()->name +
-                    "): the top level is that flight's own verdict, held out within the flight");
-    analysis.notes.insert(analysis.notes.end(), notes.begin(), notes.end());
-    session.single_flight = true;
+    take_single_flight(session, pool);
     return session;
   }
   if (count < 2) {
@@ -303,36 +366,8 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
 
   // One gap, one definition: the pooled nominal model is every flight's own nominal fit.
   const EffectFit none_all = per_flight_nominal_fit(pool);
-  // Baseline and where, pooled over every flight's nominal fit.
-  {
-    BaselineGap baseline;
-    std::vector<Vec3> readings;
-    for (std::size_t f = 0; f < count; ++f) {
-      predict(none_all, nominal, f, *pool.flights[f], readings);
-      baseline.add(*pool.flights[f], readings, pool.inverse_sigma[f]);
-    }
-    baseline.describe(analysis);
-  }
-
-  double speed_sum = 0.0, duration_sum = 0.0;
-  for (const Flight* f : pool.flights) {
-    speed_sum += f->mean_speed();
-    duration_sum += f->end_s() - f->start_s();
-  }
-  // The pooled fit informs shared parameters with every flight's data.
-  const double mean_speed = speed_sum / count;
-  const double total_duration = duration_sum;
-
-  // The coarsest resolution of the pooled flights (those left out have none).
-  double resolution = 0.0;
-  for (const FlightDiagnosis& d : session.flights) resolution = std::max(resolution, d.noise.resolution);
-  const RankingContext context{pool.flights.front()->gyro_input,
-                               pool.flights,
-                               pool.inverse_sigma,
-                               mean_speed,
-                               total_duration,
-                               &nominal,
-                               resolution};
+  describe_pooled_baseline(analysis, pool, none_all, nominal);
+  const RankingContext context = pooled_context(session, pool, nominal);
   // Every model of the search, single or compound: its shared parameters fitted to every
   // flight, judged by leaving one flight out.
   const CandidateEvaluator evaluate = [&](const Candidate& base, Effect added) {
@@ -368,18 +403,7 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
   temper_confidence(analysis);
   note_disagreeing_flights(analysis, pool);
   add_flip_periods(session, pool, none_all, flights, nominal);
-  // Onset of a session: the median of the flights' onsets, relative to each flight's start.
-  std::vector<double> onsets;
-  for (const FlightDiagnosis& d : session.flights) {
-    if (d.analysis.where.onset_s) onsets.push_back(*d.analysis.where.onset_s - d.start_s);
-  }
-  if (analysis.verdict.effect != Effect::none && !onsets.empty()) {
-    std::nth_element(onsets.begin(), onsets.begin() + static_cast<std::ptrdiff_t>(onsets.size() / 2),
-                     onsets.end());
-    analysis.where.onset_s = onsets[onsets.size() / 2];
-    analysis.notes.push_back(
-        "pooled where.onset_s is the median over flights, seconds after each flight's start");
-  }
+  set_pooled_onset(session);
   return session;
 }
 
