@@ -8,7 +8,8 @@
 # racquet sessions of ../shared/data/real/racquet. For each trial NAME the folder OUT_DIR
 # gets NAME.json (the --json report), NAME.txt (the summary on stdout) and NAME.rc (the
 # exit status; a failure's stderr goes to NAME.txt too), so a refused input is compared
-# as well.
+# as well. Warnings on stderr name the files, so make the two folders to compare with
+# the same SHARED_DIR.
 #
 # Usage, from the source tree after `cmake --build --preset host --target aloft`:
 #   tests/diagnose/make_reports.sh ALOFT OUT_DIR [SHARED_DIR]
