@@ -143,7 +143,6 @@ EffectFit result_of(const Setup& setup, const LeastSquaresResult& solution, int 
   fit.theta_standard_error =
       standard_errors(solution.normal_matrix, shared_count, std::max(fit.cost / dof, 1e-12));
   fit.theta_covariance = covariance(solution.normal_matrix, shared_count, std::max(fit.cost / dof, 1e-12));
-  fit.converged = std::isfinite(fit.cost);
   return fit;
 }
 

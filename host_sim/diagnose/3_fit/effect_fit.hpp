@@ -36,7 +36,6 @@ struct EffectFit {
   // The same errors' full covariance (uninformed directions left out: their variance is
   // not bounded by the data).
   Eigen::MatrixXd theta_covariance;
-  bool converged = true;
 };
 
 // The model of `fit` for flight `index` (impulse time included).
