@@ -12,12 +12,12 @@
 #include "common/body_file.hpp"
 #include "common/commands.hpp"
 #include "common/option_checks.hpp"
-#include "diagnose/airborne_windows.hpp"
-#include "diagnose/diagnosis.hpp"
-#include "diagnose/flight_input.hpp"
-#include "diagnose/gap_plot.hpp"
-#include "diagnose/marker_fit_check.hpp"
-#include "diagnose/report_json.hpp"
+#include "diagnose/1_input/airborne_windows.hpp"
+#include "diagnose/1_input/flight_input.hpp"
+#include "diagnose/1_input/marker_fit_check.hpp"
+#include "diagnose/5_flow/diagnosis.hpp"
+#include "diagnose/6_report/gap_plot.hpp"
+#include "diagnose/6_report/report_json.hpp"
 #include "readers/imu_csv_reader.hpp"
 #include "readers/marker_pose_fit.hpp"
 #include "readers/pose_naming_options.hpp"
@@ -68,32 +68,27 @@ void require_enough_samples(const diagnose::Flight& flight, const std::string& s
   }
 }
 
-void run_diagnose(const DiagnoseOptions& o) {
-  const int inputs = !o.imu.empty() + !o.markers.empty() + !o.poses.empty();
-  if (inputs != 1) throw Error("diagnose: give exactly one of --imu, --markers, --poses");
-  if ((!o.segments.empty() || !o.window.empty()) && o.imu.empty()) {
-    throw Error("diagnose: --segments and --window apply to --imu only");
-  }
-  if (!o.segments.empty() && !o.window.empty()) {
-    throw Error("diagnose: give --segments or --window, not both");
-  }
-  const Body body = read_body_file(o.body);
-  const diagnose::NominalInertia nominal = diagnose::NominalInertia::of(body.inertia);
-
+// What the options name: the flights, whether they are a session, and the source for
+// messages.
+struct Trial {
   std::vector<diagnose::Flight> flights;
   bool session = false;
-  bool found_by_detector = false;
+  bool found_by_detector = false;  // a long log split by the accelerometer's detector
   std::string source;
+};
+
+Trial read_trial(const DiagnoseOptions& o, const Body& body) {
+  Trial t;
   if (!o.imu.empty()) {
-    source = o.imu;
+    t.source = o.imu;
     const ImuLog log = read_imu_csv(o.imu);
     if (!o.segments.empty()) {
-      session = true;
-      flights = diagnose::flights_from_segments(log, body, read_segments_csv(o.segments));
+      t.session = true;
+      t.flights = diagnose::flights_from_segments(log, body, read_segments_csv(o.segments));
     } else if (!o.window.empty()) {
       const auto [a, b] = parse_window(o.window);
-      flights.push_back(diagnose::flight_from_imu(log, body, a, b, file_name(o.imu) + " " + o.window));
-      source = o.imu + " (window " + o.window + ")";
+      t.flights.push_back(diagnose::flight_from_imu(log, body, a, b, file_name(o.imu) + " " + o.window));
+      t.source = o.imu + " (window " + o.window + ")";
     } else if (log_duration(log) > diagnose::kLongLog_s) {
       // A long log holds rest or several throws: never diagnose it as one flight.
       char length[32];
@@ -107,25 +102,45 @@ void run_diagnose(const DiagnoseOptions& o) {
         throw Error(o.imu + ": the flight detector finds no airborne window in this " + length +
                     " log; give --segments or --window");
       }
-      session = true;
-      found_by_detector = true;
-      flights = diagnose::flights_from_segments(log, body, windows);
+      t.session = true;
+      t.found_by_detector = true;
+      t.flights = diagnose::flights_from_segments(log, body, windows);
     } else {
-      flights.push_back(diagnose::flight_from_imu(log, body, -INFINITY, INFINITY, file_name(o.imu)));
+      t.flights.push_back(diagnose::flight_from_imu(log, body, -INFINITY, INFINITY, file_name(o.imu)));
     }
   } else if (!o.markers.empty()) {
-    source = o.markers;
+    t.source = o.markers;
     PoseFitReport fit_report;
     const MarkerTrial trial = read_marker_file(o.markers);
     const PoseTrial poses = fit_poses(trial, body, &fit_report);
     if (const auto misfit = diagnose::marker_misfit(trial, body, fit_report))
       throw Error(o.markers + ": " + *misfit);
-    flights.push_back(diagnose::flight_from_poses(poses, file_name(o.markers)));
+    t.flights.push_back(diagnose::flight_from_poses(poses, file_name(o.markers)));
   } else {
-    source = o.poses;
-    flights.push_back(
+    t.source = o.poses;
+    t.flights.push_back(
         diagnose::flight_from_poses(read_pose_file(o.poses, o.pose_naming), file_name(o.poses)));
   }
+  return t;
+}
+
+void run_diagnose(const DiagnoseOptions& o) {
+  const int inputs = !o.imu.empty() + !o.markers.empty() + !o.poses.empty();
+  if (inputs != 1) throw Error("diagnose: give exactly one of --imu, --markers, --poses");
+  if ((!o.segments.empty() || !o.window.empty()) && o.imu.empty()) {
+    throw Error("diagnose: --segments and --window apply to --imu only");
+  }
+  if (!o.segments.empty() && !o.window.empty()) {
+    throw Error("diagnose: give --segments or --window, not both");
+  }
+  const Body body = read_body_file(o.body);
+  const diagnose::NominalInertia nominal = diagnose::NominalInertia::of(body.inertia);
+
+  const Trial trial = read_trial(o, body);
+  const std::vector<diagnose::Flight>& flights = trial.flights;
+  const bool session = trial.session;
+  const bool found_by_detector = trial.found_by_detector;
+  const std::string& source = trial.source;
 
   nlohmann::json report;
   if (session) {

@@ -10,8 +10,8 @@
 
 #include <cmath>
 
-#include "diagnose/diagnosis.hpp"
-#include "diagnose/flight_input.hpp"
+#include "diagnose/5_flow/diagnosis.hpp"
+#include "diagnose/1_input/flight_input.hpp"
 #include "generator/flight_generator.hpp"
 
 using namespace aloft::host;

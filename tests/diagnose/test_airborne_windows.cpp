@@ -2,7 +2,7 @@
 // free fall marks each flight; a catch or a landing spike ends it.
 #include <catch2/catch.hpp>
 
-#include "diagnose/airborne_windows.hpp"
+#include "diagnose/1_input/airborne_windows.hpp"
 
 using namespace aloft::host;
 using namespace aloft::host::diagnose;

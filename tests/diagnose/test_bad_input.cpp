@@ -13,8 +13,8 @@
 #include <unistd.h>
 
 #include "common/commands.hpp"
-#include "diagnose/diagnosis.hpp"
-#include "diagnose/flight_input.hpp"
+#include "diagnose/5_flow/diagnosis.hpp"
+#include "diagnose/1_input/flight_input.hpp"
 #include "generator/flight_generator.hpp"
 
 namespace fs = std::filesystem;

@@ -7,7 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "diagnose/candidate_ranking.hpp"
+#include "diagnose/4_judge/candidate_ranking.hpp"
+#include "diagnose/4_judge/confidence.hpp"
 
 using namespace aloft::host::diagnose;
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "diagnose/effect_descriptor.hpp"
-#include "diagnose/flight_model.hpp"
+#include "diagnose/2_model/effect_descriptor.hpp"
+#include "diagnose/2_model/flight_model.hpp"
 
 using namespace aloft::host::diagnose;
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "diagnose/held_out.hpp"
+#include "diagnose/3_fit/held_out.hpp"
 
 using namespace aloft::host::diagnose;
 

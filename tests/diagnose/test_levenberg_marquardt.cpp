@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "diagnose/levenberg_marquardt.hpp"
+#include "diagnose/3_fit/levenberg_marquardt.hpp"
 
 using namespace aloft::host::diagnose;
 

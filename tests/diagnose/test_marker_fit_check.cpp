@@ -3,7 +3,7 @@
 
 #include <iterator>
 
-#include "diagnose/marker_fit_check.hpp"
+#include "diagnose/1_input/marker_fit_check.hpp"
 #include "generator/flight_generator.hpp"
 
 using namespace aloft::host;

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "diagnose/noise_floor.hpp"
+#include "diagnose/4_judge/noise_floor.hpp"
 
 using namespace aloft::host::diagnose;
 

@@ -14,9 +14,9 @@
 
 #include <unistd.h>
 
-#include "diagnose/diagnosis.hpp"
-#include "diagnose/flight_input.hpp"
-#include "diagnose/report_json.hpp"
+#include "diagnose/5_flow/diagnosis.hpp"
+#include "diagnose/1_input/flight_input.hpp"
+#include "diagnose/6_report/report_json.hpp"
 #include "generator/phone_like_cases.hpp"
 #include "generator/phone_like_flights.hpp"
 #include "generator/verdict_score.hpp"

@@ -12,8 +12,8 @@
 #include <string>
 
 #include "common/body_file.hpp"
-#include "diagnose/diagnosis.hpp"
-#include "diagnose/flight_input.hpp"
+#include "diagnose/5_flow/diagnosis.hpp"
+#include "diagnose/1_input/flight_input.hpp"
 #include "readers/imu_csv_reader.hpp"
 #include "readers/marker_pose_fit.hpp"
 #include "readers/segments.hpp"

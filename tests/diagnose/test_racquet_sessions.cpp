@@ -12,9 +12,9 @@
 #include <filesystem>
 
 #include "common/body_file.hpp"
-#include "diagnose/diagnosis.hpp"
-#include "diagnose/flight_input.hpp"
-#include "diagnose/report_json.hpp"
+#include "diagnose/5_flow/diagnosis.hpp"
+#include "diagnose/1_input/flight_input.hpp"
+#include "diagnose/6_report/report_json.hpp"
 #include "readers/imu_csv_reader.hpp"
 #include "readers/segments.hpp"
 

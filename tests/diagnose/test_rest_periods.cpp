@@ -6,9 +6,9 @@
 #include <cmath>
 #include <random>
 
-#include "diagnose/flight_input.hpp"
-#include "diagnose/noise_floor.hpp"
-#include "diagnose/rest_periods.hpp"
+#include "diagnose/1_input/flight_input.hpp"
+#include "diagnose/4_judge/noise_floor.hpp"
+#include "diagnose/1_input/rest_periods.hpp"
 
 using namespace aloft::host;
 using namespace aloft::host::diagnose;

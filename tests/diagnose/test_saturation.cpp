@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "diagnose/saturation.hpp"
+#include "diagnose/1_input/saturation.hpp"
 
 using namespace aloft::host::diagnose;
 

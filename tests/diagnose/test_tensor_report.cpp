@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "diagnose/diagnosis.hpp"
-#include "diagnose/flight_input.hpp"
+#include "diagnose/5_flow/diagnosis.hpp"
+#include "diagnose/1_input/flight_input.hpp"
 #include "generator/phone_toss_session.hpp"
 
 using namespace aloft::host;

@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <string>
 
-#include "diagnose/diagnosis.hpp"
-#include "diagnose/flight_input.hpp"
+#include "diagnose/5_flow/diagnosis.hpp"
+#include "diagnose/1_input/flight_input.hpp"
 #include "generator/flight_generator.hpp"
 #include "generator/compound_effect_cases.hpp"
 #include "generator/withheld_effect_cases.hpp"

@@ -1,0 +1,101 @@
+// Everything `aloft diagnose` knows about one unmodelled effect, in one place: a
+// descriptor per effect (effects/<name>.cpp), registered by one line in
+// effects/effect_list.def. The rest of diagnose asks the descriptor and never switches
+// on the effect, so adding an effect is: write its file, add its line (README,
+// "Adding an effect").
+//
+// Fill in every field; a test (tests/diagnose/test_effect_descriptor.cpp) checks that
+// each registered descriptor is complete and its name is a SPEC §4 name.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "diagnose/2_model/effect.hpp"
+#include "diagnose/2_model/effect_parameters.hpp"
+#include "diagnose/2_model/model_terms.hpp"
+#include "diagnose/2_model/nominal_inertia.hpp"
+
+namespace aloft::host::diagnose {
+
+// What the practical-significance bar (practical_significance.hpp) weighs an effect's
+// size against.
+struct SignificanceScale {
+  const NominalInertia* nominal = nullptr;  // null: the bars that need it do not apply
+  double speed = 1.0;                       // mean |w| of the data, rad/s, never 0
+  double duration_s = 0.0;                  // of the data that informs the parameters
+};
+
+// One effect of a fitted model, as the ranking's physics check sees it.
+struct FittedSlice {
+  Eigen::VectorXd theta;           // the effect's parameters (empty: the fit has none)
+  Eigen::VectorXd standard_error;  // of theta (empty: unknown)
+  // Physical parameters, when this is the effect the candidate adds (null for an effect
+  // already in the model it starts from).
+  const EffectParameters* added = nullptr;
+};
+
+// What the rest of diagnose asks an effect to do. Every hook is required (a hook with
+// nothing to say returns an empty string); listed in this order in each descriptor.
+struct EffectHooks {
+  // The standard error (theta units) below which a parameter counts as pinned by the data.
+  double (*tolerance)(double mean_speed, double duration_s) = nullptr;
+  // The model hook: what the effect does to the dynamics or the sensor, for its theta.
+  void (*apply)(const Eigen::VectorXd& theta, const NominalInertia& nominal, ModelTerms& terms) = nullptr;
+  // Its theta as physical parameters (impulse_time_s: the model's, for an impulse).
+  EffectParameters (*parameters)(const Eigen::VectorXd& theta, const NominalInertia& nominal,
+                                 double impulse_time_s) = nullptr;
+  std::string (*text)(const EffectParameters& p) = nullptr;     // the summary's words
+  nlohmann::json (*json)(const EffectParameters& p) = nullptr;  // SPEC §4 `params`
+  // Why the effect is too small to matter (practical_significance.hpp); empty: it matters.
+  std::string (*too_small)(const EffectParameters& p, const SignificanceScale& scale) = nullptr;
+  // Why fitted parameters make no sense for a real sensor (plausibility.hpp); empty: fine.
+  std::string (*senseless)(const EffectParameters& p) = nullptr;
+  // Why a fit breaks physics (the ranking rules it out); empty: fine.
+  std::string (*unphysical)(const FittedSlice& fit) = nullptr;
+};
+
+// The largest gyro scale error or clock rate error a descriptor's `senseless` accepts: no
+// phone or MEMS gyro is 30 % off, so a fit that needs more mimics another effect
+// (4_judge/plausibility.hpp).
+constexpr double kLargestSensibleScaleError = 0.30;
+
+struct EffectDescriptor {
+  const char* name = nullptr;  // the SPEC §4 name, also the report's
+  // Parameters in theta (flight_model.hpp), scaled so that a unit change moves the
+  // readings by about one rad/s.
+  int parameter_count = 0;
+  // Parameters found by search rather than by the fitter, which the ranking charges all
+  // the same (the impulse's time).
+  int searched_parameters = 0;
+  bool sensor = false;             // describes the gyro, not the motion: IMU input only
+  bool sets_tensor = false;        // `apply` sets the tensor afresh, so it acts first
+  bool starts_at_release = false;  // the fitted initial rate is the first sample's
+  bool neutral_at_zero = true;     // theta = 0 is the nominal model
+  bool rotation_gauge = false;     // a rotation: turns that change nothing are no parameter
+  // Effects a gyro alone cannot tell from this one whatever the flight (SPEC §4), padded
+  // with `none`.
+  std::array<Effect, 2> gyro_equivalents{};
+  EffectHooks hooks;
+};
+
+#define ALOFT_EFFECT(name) extern const EffectDescriptor name##_effect;
+#include "diagnose/2_model/effects/effect_list.def"
+#undef ALOFT_EFFECT
+
+// The descriptor of a registered effect.
+const EffectDescriptor& describe(Effect effect);
+
+// Every registered effect, in registry order (`none` first).
+std::vector<Effect> registered_effects();
+
+// Hooks several effects share.
+std::string no_objection(const EffectParameters&);
+std::string no_physics_objection(const FittedSlice&);
+
+}  // namespace aloft::host::diagnose

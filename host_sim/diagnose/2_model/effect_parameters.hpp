@@ -1,0 +1,41 @@
+// Physical parameters of a fitted effect, in the units a user reads (SPEC §4 `params`
+// keys are made from these). Each effect's descriptor fills the fields it owns from its
+// slice of theta (flight_model.hpp) and reads them back for the report and the bars.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+
+#include "diagnose/2_model/nominal_inertia.hpp"
+
+namespace aloft::host::diagnose {
+
+struct EffectParameters {
+  Eigen::Vector3d principal_kg_m2 = Eigen::Vector3d::Zero();  // inertia_moments (ascending nominal order)
+  // Inertia effects, as a user reads them (SPEC §4): the moments in the body file's axis
+  // order (entry i: the principal axis nearest body axis i), the nominal ones in the same
+  // order, and the whole tensor in body axes.
+  Eigen::Vector3d principal_body_order_kg_m2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d nominal_body_order_kg_m2 = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d tensor_kg_m2 = Eigen::Matrix3d::Zero();
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  // axes / misalignment
+  double angle_deg = 0.0;
+  double k_N_m_s2 = 0.0;                             // aero_torque
+  double rotor_J_kg_m2 = 0.0, c_N_m_s = 0.0;         // internal_damping
+  Eigen::Vector3d vector = Eigen::Vector3d::Zero();  // impulse N·m·s, bias rad/s, scale
+  double time_s = 0.0;                               // impulse
+  double rate_error = 0.0;                           // clock_drift
+};
+
+// For principal axis i (columns of `axes`, body axes), the body axis it lies nearest:
+// a permutation, chosen greedily by the largest |cosine|.
+std::array<int, 3> nearest_body_axes(const Eigen::Matrix3d& axes);
+
+// Fills the user-facing inertia fields (body-order moments, nominal ones, the tensor in
+// body axes) from principal moments along `axes` (columns, body axes).
+void describe_inertia(EffectParameters& p, const Eigen::Vector3d& moments, const Eigen::Matrix3d& axes,
+                      const NominalInertia& nominal);
+
+}  // namespace aloft::host::diagnose

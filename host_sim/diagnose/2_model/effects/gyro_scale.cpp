@@ -1,0 +1,52 @@
+// `gyro_scale`: measured_i = (1 + s_i) true_i. theta = s (sensor axes).
+#include "diagnose/2_model/effect_descriptor.hpp"
+#include "diagnose/2_model/json_values.hpp"
+#include "diagnose/2_model/printf_text.hpp"
+
+namespace aloft::host::diagnose {
+namespace {
+
+double tolerance(double, double) { return 0.005; }
+
+void apply(const Eigen::VectorXd& theta, const NominalInertia&, ModelTerms& terms) {
+  terms.scale += theta.head<3>();
+}
+
+EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia&, double) {
+  EffectParameters p;
+  p.vector = theta.head<3>();
+  return p;
+}
+
+std::string text(const EffectParameters& p) {
+  return printf_text("scale errors %.4f, %.4f, %.4f", p.vector(0), p.vector(1), p.vector(2));
+}
+
+nlohmann::json json(const EffectParameters& p) { return {{"scale_error", json_vec(p.vector)}}; }
+
+// Every error below 0.1 %.
+std::string too_small(const EffectParameters& p, const SignificanceScale&) {
+  if (p.vector.cwiseAbs().maxCoeff() < 0.001) return printf_text("its scale errors are below %.2g %%", 0.1);
+  return {};
+}
+
+// No phone or MEMS gyro is off by more than that; a fit that needs it mimics another effect.
+std::string senseless(const EffectParameters& p) {
+  Eigen::Index axis = 0;
+  if (!(p.vector.cwiseAbs().maxCoeff(&axis) > kLargestSensibleScaleError)) return {};
+  return printf_text("ruled out: a gyro scale error of %+.0f %% is beyond any real gyro (limit %.0f %%)",
+                     100.0 * p.vector(axis), 100.0 * kLargestSensibleScaleError);
+}
+
+}  // namespace
+
+constexpr EffectDescriptor gyro_scale_effect = [] {
+  EffectDescriptor d;
+  d.name = "gyro_scale";
+  d.parameter_count = 3;
+  d.sensor = true;
+  d.hooks = {tolerance, apply, parameters, text, json, too_small, senseless, no_physics_objection};
+  return d;
+}();
+
+}  // namespace aloft::host::diagnose

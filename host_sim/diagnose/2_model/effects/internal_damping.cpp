@@ -1,0 +1,65 @@
+// `internal_damping`: energy lost inside the body at constant |L|, modelled as a
+// spherical rotor in a viscous cavity. theta = (a, b): rotor J = 0.9 I_min logistic(a),
+// coupling c = J exp(b). The rotor co-rotates with the body at release, so the fitted
+// initial rate is the first sample's; "no rotor" is a limit, not a point of theta.
+#include <algorithm>
+#include <cmath>
+
+#include "diagnose/2_model/effect_descriptor.hpp"
+#include "diagnose/2_model/printf_text.hpp"
+
+namespace aloft::host::diagnose {
+namespace {
+
+// Rotor coupling rates above this are a rigid body for every flight we see; the cap keeps
+// flight_model.cpp's explicit steps (at most 5 ms) stable (c/J h < 2).
+constexpr double kMaxRotorRate = 400.0;
+
+double logistic(double a) { return 1.0 / (1.0 + std::exp(-a)); }
+
+double rotor_of(const Eigen::VectorXd& theta, const NominalInertia& nominal) {
+  return 0.9 * nominal.principal_moments(0) * logistic(theta(0));
+}
+
+double rotor_rate_of(const Eigen::VectorXd& theta) { return std::min(std::exp(theta(1)), kMaxRotorRate); }
+
+double tolerance(double, double) { return 2.0; }  // log scales of rotor size and rate
+
+void apply(const Eigen::VectorXd& theta, const NominalInertia& nominal, ModelTerms& terms) {
+  terms.rotor = rotor_of(theta, nominal);
+  terms.rotor_rate = rotor_rate_of(theta);
+}
+
+EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& nominal, double) {
+  EffectParameters p;
+  p.rotor_J_kg_m2 = rotor_of(theta, nominal);
+  p.c_N_m_s = p.rotor_J_kg_m2 * rotor_rate_of(theta);
+  return p;
+}
+
+std::string text(const EffectParameters& p) {
+  return printf_text("rotor J = %.3g kg m^2, c = %.3g N m s", p.rotor_J_kg_m2, p.c_N_m_s);
+}
+
+nlohmann::json json(const EffectParameters& p) {
+  return {{"model", "spherical_rotor_in_viscous_cavity"},
+          {"rotor_J_kg_m2", p.rotor_J_kg_m2},
+          {"c_N_m_s", p.c_N_m_s}};
+}
+
+// No bar of its own: the shrink of the held-out gap decides.
+std::string too_small(const EffectParameters&, const SignificanceScale&) { return {}; }
+
+}  // namespace
+
+constexpr EffectDescriptor internal_damping_effect = [] {
+  EffectDescriptor d;
+  d.name = "internal_damping";
+  d.parameter_count = 2;
+  d.starts_at_release = true;
+  d.neutral_at_zero = false;
+  d.hooks = {tolerance, apply, parameters, text, json, too_small, no_objection, no_physics_objection};
+  return d;
+}();
+
+}  // namespace aloft::host::diagnose

@@ -1,0 +1,364 @@
+#include "diagnose/2_model/flight_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "diagnose/2_model/effect_descriptor.hpp"
+
+namespace aloft::host::diagnose {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using State = Eigen::Matrix<double, 6, 1>;  // body rate, then the rotor's rate (damping only)
+
+// Longest integration step: RK4 at 5 ms keeps the relative error of a 15 rad/s motion
+// near 1e-6 over a second, far below any gyro's noise; 1 kHz data takes one step a sample.
+constexpr double kMaxStep = 0.005;
+
+// The slice of theta that belongs to `effect` (empty when it is not in the model).
+Eigen::VectorXd slice_of(const EffectModel& model, const Eigen::VectorXd& theta, Effect effect) {
+  const int offset = theta_offset(model, effect);
+  if (offset < 0) return Eigen::VectorXd();
+  return theta.segment(offset, effect_parameter_count(effect));
+}
+
+// Everything a flight needs from (model, theta), computed once per prediction.
+class FlightDynamics {
+ public:
+  FlightDynamics(const ModelTerms& terms, const Flight& flight)
+      : inertia_(terms.inertia),
+        drag_(terms.drag),
+        rotor_(terms.rotor),
+        rotor_rate_(terms.rotor_rate),
+        has_jump_(terms.has_jump),
+        time_factor_(terms.time_factor),
+        jump_(terms.jump),
+        bias_(terms.bias),
+        scale_(terms.scale) {
+    const Mat3 sensor_to_body = flight.sensor_to_body.toRotationMatrix();
+    sensor_rotation_ =
+        terms.misaligned ? Mat3(sensor_to_body * terms.misalignment.toRotationMatrix()) : sensor_to_body;
+    // The shell carries the nominal tensor less the rotor, so that with the rotor locked
+    // the body is the nominal one.
+    shell_ = inertia_ - rotor_ * Mat3::Identity();
+    shell_inverse_ = shell_.inverse();
+    body_to_sensor_ = sensor_rotation_.transpose();
+  }
+
+  bool has_rotor() const { return rotor_ > 0.0; }
+  bool has_jump() const { return has_jump_; }
+  double time_factor() const { return time_factor_; }
+
+  State rate(const State& x) const {
+    const Vec3 w = x.head<3>();
+    Vec3 torque = (shell_ * w).cross(w);
+    if (drag_ != 0.0) torque -= drag_ * w.norm() * w;
+    State dx;
+    if (has_rotor()) {
+      const Vec3 wr = x.tail<3>();
+      const Vec3 coupling = rotor_rate_ * rotor_ * (wr - w);
+      dx.head<3>() = shell_inverse_ * (torque + coupling);
+      dx.tail<3>() = -w.cross(wr) - rotor_rate_ * (wr - w);
+    } else {
+      dx.head<3>() = shell_inverse_ * torque;
+      dx.tail<3>().setZero();
+    }
+    return dx;
+  }
+
+  // Body rate alone, for every effect but the rotor's (the common, hot case).
+  Vec3 rigid_rate(const Vec3& w) const {
+    Vec3 torque = (shell_ * w).cross(w);
+    if (drag_ != 0.0) torque -= drag_ * w.norm() * w;
+    return shell_inverse_ * torque;
+  }
+
+  void rk4(State& x, double h) const {
+    if (!has_rotor()) {
+      const Vec3 w = x.head<3>();
+      const Vec3 k1 = rigid_rate(w);
+      const Vec3 k2 = rigid_rate(w + 0.5 * h * k1);
+      const Vec3 k3 = rigid_rate(w + 0.5 * h * k2);
+      const Vec3 k4 = rigid_rate(w + h * k3);
+      x.head<3>() = w + (h / 6.0) * (k1 + 2.0 * (k2 + k3) + k4);
+      return;
+    }
+    const State k1 = rate(x);
+    const State k2 = rate(x + 0.5 * h * k1);
+    const State k3 = rate(x + 0.5 * h * k2);
+    const State k4 = rate(x + h * k3);
+    x += (h / 6.0) * (k1 + 2.0 * (k2 + k3) + k4);
+  }
+
+  // Two states one rk4 step each, every component in the two lanes of a packed pair: two
+  // independent chains of dependent operations run side by side instead of one after the
+  // other. The arithmetic is rk4's, term by term in the order Eigen evaluates rate()'s
+  // expressions, so each state ends bit for bit where rk4 would take it. N = 3: the rigid
+  // body's rate alone; N = 6: with the rotor's.
+  template <std::size_t N>
+  using Lanes = std::array<Eigen::Array2d, N>;
+
+  template <std::size_t N>
+  [[gnu::always_inline]] void rk4_pair(State& x, double hx, State& y, double hy) const {
+    Lanes<N> w;
+    for (std::size_t i = 0; i < N; ++i)
+      w[i] = Eigen::Array2d(x(static_cast<Eigen::Index>(i)), y(static_cast<Eigen::Index>(i)));
+    const Eigen::Array2d h(hx, hy);
+    const auto along = [](const Lanes<N>& a, const Eigen::Array2d& s, const Lanes<N>& k) {
+      Lanes<N> out;
+      for (std::size_t i = 0; i < N; ++i) out[i] = a[i] + s * k[i];
+      return out;
+    };
+    const Lanes<N> k1 = rates(w);
+    const Lanes<N> k2 = rates(along(w, 0.5 * h, k1));
+    const Lanes<N> k3 = rates(along(w, 0.5 * h, k2));
+    const Lanes<N> k4 = rates(along(w, h, k3));
+    const Eigen::Array2d sixth = h / 6.0;
+    for (std::size_t i = 0; i < N; ++i) {
+      const Eigen::Array2d next = w[i] + sixth * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
+      x(static_cast<Eigen::Index>(i)) = next(0);
+      y(static_cast<Eigen::Index>(i)) = next(1);
+    }
+  }
+
+  // A 3x3 matrix times a vector as Eigen's fixed-size product sums it: rows 0 and 1 as a
+  // packet, left to right; row 2 on its own, the last two terms first.
+  [[gnu::always_inline]] static Lanes<3> times(const Mat3& m, const Eigen::Array2d& v0,
+                                               const Eigen::Array2d& v1, const Eigen::Array2d& v2) {
+    return {m(0, 0) * v0 + m(0, 1) * v1 + m(0, 2) * v2, m(1, 0) * v0 + m(1, 1) * v1 + m(1, 2) * v2,
+            m(2, 0) * v0 + (m(2, 1) * v1 + m(2, 2) * v2)};
+  }
+  static Lanes<3> cross(const Eigen::Array2d* a, const Eigen::Array2d* b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  }
+
+  // rate() (N = 6) or rigid_rate() (N = 3) of both lanes.
+  template <std::size_t N>
+  [[gnu::always_inline]] Lanes<N> rates(const Lanes<N>& x) const {
+    const Lanes<3> m = times(shell_, x[0], x[1], x[2]);
+    Lanes<3> torque = cross(m.data(), x.data());
+    if (drag_ != 0.0) {
+      const Eigen::Array2d speed = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
+      for (std::size_t i = 0; i < 3; ++i) torque[i] -= drag_ * speed * x[i];
+    }
+    Lanes<N> dx;
+    if constexpr (N == 3) {
+      dx = times(shell_inverse_, torque[0], torque[1], torque[2]);
+    } else {
+      const double coupling_rate = rotor_rate_ * rotor_;
+      Lanes<3> body;
+      for (std::size_t i = 0; i < 3; ++i) body[i] = torque[i] + coupling_rate * (x[i + 3] - x[i]);
+      const Lanes<3> spin = times(shell_inverse_, body[0], body[1], body[2]);
+      const Lanes<3> turn = cross(x.data(), x.data() + 3);
+      for (std::size_t i = 0; i < 3; ++i) {
+        dx[i] = spin[i];
+        dx[i + 3] = -turn[i] - rotor_rate_ * (x[i + 3] - x[i]);
+      }
+    }
+    return dx;
+  }
+
+  // The steps of at most kMaxStep that cover a span, and their length.
+  static int steps_over(double span) {
+    // One step a sample at kHz rates: no divisions (the same count either way).
+    if (std::abs(span) < kMaxStep) return 1;
+    return std::max(1, static_cast<int>(std::ceil(std::abs(span) / kMaxStep - 1e-9)));
+  }
+  static double step_of(double span, int steps) { return steps == 1 ? span : span / steps; }
+
+  // Integrates over [from, to] (either direction) in steps of at most kMaxStep.
+  void advance(State& x, double from, double to) const {
+    const int steps = steps_over(to - from);
+    const double h = step_of(to - from, steps);
+    for (int i = 0; i < steps; ++i) rk4(x, h);
+  }
+
+  // advance() of two independent states, paired (rk4_pair) while both have steps to go:
+  // each state gets exactly the steps advance() would give it.
+  void advance_pair(State& x, double x_from, double x_to, State& y, double y_from, double y_to) const {
+    const int x_steps = steps_over(x_to - x_from), y_steps = steps_over(y_to - y_from);
+    const double hx = step_of(x_to - x_from, x_steps), hy = step_of(y_to - y_from, y_steps);
+    const int both = std::min(x_steps, y_steps);
+    for (int i = 0; i < both; ++i) {
+      if (has_rotor()) {
+        rk4_pair<6>(x, hx, y, hy);
+      } else {
+        rk4_pair<3>(x, hx, y, hy);
+      }
+    }
+    for (int i = both; i < x_steps; ++i) rk4(x, hx);
+    for (int i = both; i < y_steps; ++i) rk4(y, hy);
+  }
+
+  // The impulse changes L by I_nom dw; forwards adds it, backwards takes it away.
+  void apply_jump(State& x, double sign) const {
+    x.head<3>() += sign * (shell_inverse_ * (nominal_impulse_scale_ * jump_));
+  }
+  void set_impulse_scale(const Mat3& nominal_tensor) { nominal_impulse_scale_ = nominal_tensor; }
+
+  Vec3 reading(const State& x) const { return scale_.cwiseProduct(body_to_sensor_ * x.head<3>()) + bias_; }
+
+ private:
+  Mat3 inertia_;
+  Mat3 sensor_rotation_;
+  Mat3 shell_;
+  Mat3 shell_inverse_;
+  Mat3 body_to_sensor_;
+  Mat3 nominal_impulse_scale_ = Mat3::Identity();
+  double drag_ = 0.0;
+  double rotor_ = 0.0;
+  double rotor_rate_ = 0.0;
+  bool has_jump_ = false;
+  double time_factor_ = 1.0;
+  Vec3 jump_ = Vec3::Zero();
+  Vec3 bias_ = Vec3::Zero();
+  Vec3 scale_ = Vec3::Ones();
+};
+
+}  // namespace
+
+std::size_t reference_index(Effect effect, const Flight& flight) {
+  if (describe(effect).starts_at_release || flight.size() == 0) return 0;
+  return flight.size() / 2;
+}
+
+Eigen::Vector3d body_rate_of_reading(const Flight& flight, const Eigen::Vector3d& reading) {
+  return flight.sensor_to_body * reading;
+}
+
+std::size_t compound_reference_index(const EffectModel& model, const Flight& flight) {
+  for (Effect e : model_effects(model)) {
+    if (describe(e).starts_at_release) return reference_index(e, flight);
+  }
+  return reference_index(Effect::none, flight);
+}
+
+std::vector<Effect> model_effects(const EffectModel& model) {
+  std::vector<Effect> effects;
+  for (Effect e : model.base) {
+    if (e != Effect::none) effects.push_back(e);
+  }
+  if (model.effect != Effect::none) effects.push_back(model.effect);
+  return effects;
+}
+
+int theta_offset(const EffectModel& model, Effect effect) {
+  int offset = 0;
+  for (Effect e : model_effects(model)) {
+    if (e == effect) return offset;
+    offset += effect_parameter_count(e);
+  }
+  return -1;
+}
+
+int model_parameter_count(const EffectModel& model) {
+  int count = 0;
+  for (Effect e : model_effects(model)) count += effect_parameter_count(e);
+  return count;
+}
+
+ModelTerms model_terms(const EffectModel& model, const Eigen::VectorXd& theta) {
+  ModelTerms terms(model.nominal);
+  const std::vector<Effect> effects = model_effects(model);
+  for (bool first : {true, false}) {
+    for (Effect e : effects) {
+      const EffectDescriptor& d = describe(e);
+      if (d.sets_tensor == first) d.hooks.apply(slice_of(model, theta, e), model.nominal, terms);
+    }
+  }
+  return terms;
+}
+
+Eigen::Vector3d body_rate_for_reading(const EffectModel& model, const Flight& flight,
+                                      const Eigen::VectorXd& theta, const Eigen::Vector3d& reading) {
+  // The sensor model backwards: take the bias off, undo the scale, then the rotation.
+  const ModelTerms terms = model_terms(model, theta);
+  Vec3 w = reading - terms.bias;
+  w = w.cwiseQuotient(terms.scale);
+  if (terms.misaligned) w = terms.misalignment * w;
+  return flight.sensor_to_body * w;
+}
+
+void predict_readings(const EffectModel& model, const Flight& flight, std::size_t ref,
+                      const Eigen::Vector3d& omega_ref, const Eigen::VectorXd& theta,
+                      std::vector<Eigen::Vector3d>& readings) {
+  const std::size_t n = flight.size();
+  readings.resize(n);
+  if (n == 0) return;
+  FlightDynamics dynamics(model_terms(model, theta), flight);
+  dynamics.set_impulse_scale(model.nominal.tensor);
+  const bool has_jump = dynamics.has_jump();
+  const double t_ref = flight.time_s[ref];
+  // True (simulation) time of a recorded time stamp; differs only under clock drift.
+  auto true_time = [&](double t) { return t_ref + (t - t_ref) * dynamics.time_factor(); };
+  const double t_jump = has_jump ? true_time(model.impulse_time_s) : 0.0;
+
+  State start;
+  start.head<3>() = omega_ref;
+  start.tail<3>() = omega_ref;  // rotor co-rotating at the reference (damping only)
+  readings[ref] = dynamics.reading(start);
+
+  // Forwards from the reference and backwards from it; an impulse strictly between two
+  // samples (or on the later one) is applied where it falls.
+  const auto jump_within = [&](double early, double late) {
+    return has_jump && t_jump > early && t_jump <= late;
+  };
+  // The forward walk's step to sample k, and the backward walk's to sample k.
+  const auto step_up = [&](State& x, std::size_t k) {
+    const double a = true_time(flight.time_s[k - 1]);
+    const double b = true_time(flight.time_s[k]);
+    if (jump_within(a, b)) {
+      dynamics.advance(x, a, t_jump);
+      dynamics.apply_jump(x, 1.0);
+      if (b > t_jump) dynamics.advance(x, t_jump, b);
+    } else {
+      dynamics.advance(x, a, b);
+    }
+    readings[k] = dynamics.reading(x);
+  };
+  const auto step_down = [&](State& x, std::size_t k) {
+    const double a = true_time(flight.time_s[k + 1]);
+    const double b = true_time(flight.time_s[k]);
+    if (jump_within(b, a)) {
+      if (a > t_jump) dynamics.advance(x, a, t_jump);
+      dynamics.apply_jump(x, -1.0);
+      dynamics.advance(x, t_jump, b);
+    } else {
+      dynamics.advance(x, a, b);
+    }
+    readings[k] = dynamics.reading(x);
+  };
+  // The two walks are independent: while both have samples to go, they step together
+  // (advance_pair) where neither crosses the impulse.
+  State up = start, down = start;
+  std::size_t next_up = ref + 1, next_down = ref;  // the backward walk's next sample is next_down - 1
+  for (; next_up < n && next_down > 0; ++next_up, --next_down) {
+    const double a_up = true_time(flight.time_s[next_up - 1]), b_up = true_time(flight.time_s[next_up]);
+    const double a_down = true_time(flight.time_s[next_down]),
+                 b_down = true_time(flight.time_s[next_down - 1]);
+    if (!jump_within(a_up, b_up) && !jump_within(b_down, a_down)) {
+      dynamics.advance_pair(up, a_up, b_up, down, a_down, b_down);
+      readings[next_up] = dynamics.reading(up);
+      readings[next_down - 1] = dynamics.reading(down);
+    } else {
+      step_up(up, next_up);
+      step_down(down, next_down - 1);
+    }
+  }
+  for (; next_up < n; ++next_up) step_up(up, next_up);
+  for (; next_down > 0; --next_down) step_down(down, next_down - 1);
+}
+
+EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta) {
+  return effect_parameters(model, theta, model.effect);
+}
+
+EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& all_theta,
+                                   Effect effect) {
+  const Eigen::VectorXd theta = slice_of(model, all_theta, effect);
+  if (theta.size() != effect_parameter_count(effect)) return EffectParameters();
+  return describe(effect).hooks.parameters(theta, model.nominal, model.impulse_time_s);
+}
+
+}  // namespace aloft::host::diagnose

@@ -1,0 +1,435 @@
+#include "diagnose/3_fit/effect_fit.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "common/parallel_for.hpp"
+#include "diagnose/2_model/effect_descriptor.hpp"
+#include "diagnose/3_fit/initial_state_fit.hpp"
+#include "diagnose/3_fit/levenberg_marquardt.hpp"
+
+namespace aloft::host::diagnose {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+// The initial rate guess at sample `ref`: the nominal fit's rate there if there is one,
+// else the mean of the usable readings within two samples of it.
+Vec3 starting_rate(const FlightData& data, std::size_t ref, const EffectFit* nominal_fit, std::size_t index,
+                   const NominalInertia& nominal) {
+  const Flight& flight = *data.flight;
+  if (nominal_fit != nullptr && index < nominal_fit->flights.size()) {
+    std::vector<Vec3> readings;
+    predict(*nominal_fit, nominal, index, flight, readings);
+    return body_rate_of_reading(flight, readings[ref]);
+  }
+  Vec3 sum = Vec3::Zero();
+  int count = 0;
+  const std::size_t lo = ref >= 2 ? ref - 2 : 0;
+  const std::size_t hi = std::min(flight.size(), ref + 3);
+  for (std::size_t k = lo; k < hi; ++k) {
+    if (flight.usable[k]) {
+      sum += flight.omega[k];
+      ++count;
+    }
+  }
+  return body_rate_of_reading(flight, count > 0 ? Vec3(sum / count) : flight.omega[ref]);
+}
+
+void residuals_of(const FlightData& data, const std::vector<Vec3>& readings, Eigen::VectorXd& r) {
+  const Flight& flight = *data.flight;
+  r.setZero(static_cast<Eigen::Index>(3 * flight.size()));
+  for (std::size_t k = 0; k < flight.size(); ++k) {
+    if (!data.mask[k] || !flight.usable[k]) continue;
+    r.segment<3>(static_cast<Eigen::Index>(3 * k)) =
+        (readings[k] - flight.omega[k]).cwiseProduct(data.inverse_sigma);
+  }
+}
+
+// Marginal standard errors of the first `count` parameters.
+Eigen::VectorXd standard_errors(const Eigen::MatrixXd& normal, int count, double variance) {
+  Eigen::VectorXd se = Eigen::VectorXd::Constant(count, std::numeric_limits<double>::infinity());
+  if (count == 0 || normal.rows() == 0) return se;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(normal);
+  const Eigen::VectorXd& values = solver.eigenvalues();
+  const double cutoff = 1e-12 * std::max(values.maxCoeff(), 1e-300);
+  for (int i = 0; i < count; ++i) {
+    double var = 0.0;
+    bool informed = true;
+    for (int k = 0; k < values.size(); ++k) {
+      const double v = solver.eigenvectors()(i, k);
+      if (values(k) <= cutoff) {
+        if (std::abs(v) > 1e-6) informed = false;
+        continue;
+      }
+      var += v * v / values(k);
+    }
+    if (informed) se(i) = std::sqrt(var * variance);
+  }
+  return se;
+}
+
+// Covariance of the first `count` parameters (initial rates marginalised), over the
+// directions the data informs.
+Eigen::MatrixXd covariance(const Eigen::MatrixXd& normal, int count, double variance) {
+  if (count == 0 || normal.rows() == 0) return Eigen::MatrixXd::Zero(count, count);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(normal);
+  const Eigen::VectorXd& values = solver.eigenvalues();
+  const double cutoff = 1e-12 * std::max(values.maxCoeff(), 1e-300);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(count, count);
+  for (int k = 0; k < values.size(); ++k) {
+    if (values(k) <= cutoff) continue;
+    const Eigen::VectorXd v = solver.eigenvectors().col(k).head(count);
+    out += v * v.transpose() / values(k);
+  }
+  return out * variance;
+}
+
+struct Setup {
+  Effect effect;
+  const NominalInertia* nominal;
+  const std::vector<FlightData>* data;
+  std::vector<std::size_t> refs;
+  double impulse_time_s = 0.0;
+  std::vector<Effect> base;    // compound: effects fitted jointly with `effect`
+  Eigen::VectorXd base_theta;  // their fitted values (impulse scan, starting point)
+  unsigned threads = 1;        // flights fitted concurrently (a pooled fit)
+
+  EffectModel model() const { return EffectModel{effect, *nominal, impulse_time_s, base}; }
+};
+
+ArrowProblem problem_of(const Setup& setup, int shared_count) {
+  ArrowProblem problem;
+  problem.shared_count = shared_count;
+  problem.local_count = 3;
+  problem.block_count = static_cast<int>(setup.data->size());
+  problem.threads = setup.threads;
+  problem.residuals = [&setup](int block, const Eigen::VectorXd& shared, const Eigen::VectorXd& local,
+                               Eigen::VectorXd& r) {
+    const FlightData& d = (*setup.data)[static_cast<std::size_t>(block)];
+    const EffectModel model = setup.model();
+    std::vector<Vec3> readings;
+    predict_readings(model, *d.flight, setup.refs[static_cast<std::size_t>(block)], Vec3(local), shared,
+                     readings);
+    residuals_of(d, readings, r);
+  };
+  return problem;
+}
+
+EffectFit result_of(const Setup& setup, const LeastSquaresResult& solution, int shared_count) {
+  EffectFit fit;
+  fit.effect = setup.effect;
+  fit.base = setup.base;
+  fit.theta = solution.shared;
+  fit.cost = solution.cost;
+  fit.residual_count = 0;
+  for (std::size_t i = 0; i < setup.data->size(); ++i) {
+    FlightState state;
+    state.ref = setup.refs[i];
+    state.omega_ref = Vec3(solution.local[i]);
+    state.impulse_time_s = setup.impulse_time_s;
+    fit.flights.push_back(state);
+    const FlightData& d = (*setup.data)[i];
+    for (std::size_t k = 0; k < d.flight->size(); ++k) {
+      if (d.mask[k] && d.flight->usable[k]) fit.residual_count += 3;
+    }
+  }
+  const int parameters = shared_count + 3 * static_cast<int>(setup.data->size());
+  const int dof = std::max(1, fit.residual_count - parameters);
+  fit.theta_standard_error =
+      standard_errors(solution.normal_matrix, shared_count, std::max(fit.cost / dof, 1e-12));
+  fit.theta_covariance = covariance(solution.normal_matrix, shared_count, std::max(fit.cost / dof, 1e-12));
+  return fit;
+}
+
+// Each flight's starting rate: the guess of starting_rate, refined with `theta` held by
+// the separatrix-safe initial-state fit (initial_state_fit.hpp). The rotor of internal
+// damping has no neutral theta, so its flights start from the rigid body's rates.
+std::vector<Eigen::VectorXd> starting_rates(const Setup& setup, const EffectFit* nominal_fit,
+                                            const Eigen::VectorXd& theta) {
+  const bool rigid = !describe(setup.effect).neutral_at_zero;
+  const EffectModel model{rigid ? Effect::none : setup.effect, *setup.nominal, setup.impulse_time_s,
+                          setup.base};
+  const Eigen::VectorXd held = rigid ? Eigen::VectorXd(theta.head(model_parameter_count(model))) : theta;
+  // At theta = 0 every effect is the nominal model, whose fitted rates are already the
+  // answer: nothing to refine (never so for a compound model: its base is fitted).
+  const bool nominal_model = nominal_fit != nullptr && setup.base.empty() && (rigid || theta.isZero());
+  std::vector<Eigen::VectorXd> rates(setup.data->size());
+  const auto rate_of = [&](std::size_t i) {
+    const Vec3 guess = starting_rate((*setup.data)[i], setup.refs[i], nominal_fit, i, *setup.nominal);
+    rates[i] = nominal_model
+                   ? guess
+                   : fit_initial_state(model, (*setup.data)[i], setup.refs[i], held, &guess).omega_ref;
+  };
+  if (setup.threads > 1 && rates.size() > 1) {
+    parallel_for(rates.size(), setup.threads, rate_of);
+  } else {
+    for (std::size_t i = 0; i < rates.size(); ++i) rate_of(i);
+  }
+  return rates;
+}
+
+// The impulse time is not a smooth parameter (the jump moves from one sample to the
+// next), so it is searched. First a linearised scan of every time between samples at
+// once: about the nominal motion (dw = 0) the readings' sensitivity to a jump just before
+// sample j is A_k A_j^-1 for the samples on the far side of the jump from the reference
+// (A_k = d reading_k / d omega_ref, the flow map), so one Gauss-Newton step for (omega_ref,
+// dw) at every j needs only running sums of A_k^T W A_k and A_k^T W r_k. Then full fits at
+// the best few times of the scan and their neighbours; the best of those wins.
+std::vector<std::size_t> scan_impulse_times(const Setup& setup, const std::vector<Eigen::VectorXd>& rates) {
+  const FlightData& data = (*setup.data)[0];
+  const Flight& flight = *data.flight;
+  const std::size_t n = flight.size();
+  const std::size_t ref = setup.refs[0];
+  // About the base model with its fitted parameters (the nominal one for a single effect).
+  const EffectModel nominal_model{Effect::none, *setup.nominal, 0.0, setup.base};
+  const Eigen::VectorXd no_theta = setup.base_theta;
+  std::vector<Vec3> base, moved;
+  predict_readings(nominal_model, flight, ref, Vec3(rates[0]), no_theta, base);
+  std::vector<Eigen::Matrix3d> a(n);
+  for (int i = 0; i < 3; ++i) {
+    Vec3 w = rates[0];
+    const double h = 1e-6 * std::max(1.0, w.norm());
+    w(i) += h;
+    predict_readings(nominal_model, flight, ref, w, no_theta, moved);
+    for (std::size_t k = 0; k < n; ++k) a[k].col(i) = (moved[k] - base[k]) / h;
+  }
+  // Weighted per-sample blocks of the normal equations.
+  std::vector<Eigen::Matrix3d> m(n, Eigen::Matrix3d::Zero());
+  std::vector<Vec3> v(n, Vec3::Zero());
+  Eigen::Matrix3d m_all = Eigen::Matrix3d::Zero();
+  Vec3 v_all = Vec3::Zero();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!data.mask[k] || !flight.usable[k]) continue;
+    const Eigen::Matrix3d wa = data.inverse_sigma.asDiagonal() * a[k];
+    const Vec3 wr = (base[k] - flight.omega[k]).cwiseProduct(data.inverse_sigma);
+    m[k] = wa.transpose() * wa;
+    v[k] = wa.transpose() * wr;
+    m_all += m[k];
+    v_all += v[k];
+  }
+  // suffix[j] = sum over k >= j.
+  std::vector<Eigen::Matrix3d> m_after(n + 1, Eigen::Matrix3d::Zero());
+  std::vector<Vec3> v_after(n + 1, Vec3::Zero());
+  for (std::size_t k = n; k-- > 0;) {
+    m_after[k] = m_after[k + 1] + m[k];
+    v_after[k] = v_after[k + 1] + v[k];
+  }
+  std::vector<std::pair<double, std::size_t>> gains;
+  for (std::size_t j = 2; j + 1 < n; ++j) {                        // jump between samples j-1 and j
+    if (flight.time_s[j - 1] < flight.settling_until_s) continue;  // the gyro's filter settling
+    const bool after_reference = j > ref;
+    const std::size_t anchor = after_reference ? j : j - 1;
+    const Eigen::Matrix3d side_m = after_reference ? m_after[j] : Eigen::Matrix3d(m_all - m_after[j]);
+    const Vec3 side_v = after_reference ? v_after[j] : Vec3(v_all - v_after[j]);
+    const Eigen::Matrix3d inv = a[anchor].inverse();
+    Eigen::Matrix<double, 6, 6> hess;
+    hess.topLeftCorner<3, 3>() = m_all;
+    hess.topRightCorner<3, 3>() = side_m * inv;
+    hess.bottomLeftCorner<3, 3>() = hess.topRightCorner<3, 3>().transpose();
+    hess.bottomRightCorner<3, 3>() = inv.transpose() * side_m * inv;
+    Eigen::Matrix<double, 6, 1> grad;
+    grad.head<3>() = v_all;
+    grad.tail<3>() = inv.transpose() * side_v;
+    const Eigen::Matrix<double, 6, 1> step = hess.ldlt().solve(grad);
+    const double gain = grad.dot(step);
+    if (std::isfinite(gain)) gains.emplace_back(gain, j);
+  }
+  std::sort(gains.begin(), gains.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  // The best two times at least 10 samples apart. A real knock lasts a few milliseconds
+  // and the linear scan tends to flag its start, so the full fits look around each.
+  std::vector<std::size_t> peaks;
+  for (const auto& g : gains) {
+    bool far = true;
+    for (std::size_t p : peaks) far = far && (g.second + 10 < p || p + 10 < g.second);
+    if (far) peaks.push_back(g.second);
+    if (peaks.size() == 2) break;
+  }
+  return peaks;
+}
+
+EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
+  const Flight& flight = *(*setup.data)[0].flight;
+  const int p = static_cast<int>(setup.base_theta.size()) + 3;
+  Eigen::VectorXd zero = Eigen::VectorXd::Zero(p);
+  zero.head(setup.base_theta.size()) = setup.base_theta;
+  const std::vector<Eigen::VectorXd> rates = starting_rates(setup, nominal_fit, zero);
+  LeastSquaresOptions quick;
+  quick.max_iterations = 10;
+  quick.normal_at_solution = false;  // only the costs are compared
+  const std::size_t n = flight.size();
+  std::size_t best = 0;
+  double best_cost = std::numeric_limits<double>::infinity();
+  // Each trial starts from the best solution so far: neighbouring times have nearly the
+  // same jump and rates, so a few iterations settle it.
+  Eigen::VectorXd best_theta = zero;
+  std::vector<Eigen::VectorXd> best_rates = rates;
+  auto try_time = [&](std::size_t j, bool from_nominal) {
+    if (j < 2 || j + 1 >= n || flight.time_s[j - 1] < flight.settling_until_s) return;
+    setup.impulse_time_s = 0.5 * (flight.time_s[j - 1] + flight.time_s[j]);
+    const LeastSquaresResult r = from_nominal ? minimise(problem_of(setup, p), zero, rates, quick)
+                                              : minimise(problem_of(setup, p), best_theta, best_rates, quick);
+    if (r.cost < best_cost) {
+      best_cost = r.cost;
+      best = j;
+      best_theta = r.shared;
+      best_rates = r.local;
+    }
+  };
+  // Around each scanned peak: every third gap within 12 samples, then the neighbours of
+  // the best of those.
+  for (std::size_t peak : scan_impulse_times(setup, rates)) {
+    try_time(peak, true);
+    for (long off = -12; off <= 12; off += 3) {
+      if (off != 0) try_time(static_cast<std::size_t>(std::max(0L, static_cast<long>(peak) + off)), false);
+    }
+  }
+  const std::size_t centre = best;
+  for (long off : {-2L, -1L, 1L, 2L})
+    try_time(static_cast<std::size_t>(std::max(0L, static_cast<long>(centre) + off)), false);
+  if (best == 0) best = flight.size() / 2;
+  setup.impulse_time_s = 0.5 * (flight.time_s[best - 1] + flight.time_s[best]);
+  const ArrowProblem problem = problem_of(setup, p);
+  return result_of(setup, minimise(problem, best_theta, best_rates), p);
+}
+
+}  // namespace
+
+EffectModel model_of(const EffectFit& fit, const NominalInertia& nominal, std::size_t index) {
+  EffectModel model{fit.effect, nominal, 0.0, fit.base};
+  if (index < fit.flights.size()) model.impulse_time_s = fit.flights[index].impulse_time_s;
+  return model;
+}
+
+void predict(const EffectFit& fit, const NominalInertia& nominal, std::size_t index, const Flight& flight,
+             std::vector<Eigen::Vector3d>& readings) {
+  const FlightState& state = fit.flights[index];
+  predict_readings(model_of(fit, nominal, index), flight, state.ref, state.omega_ref, fit.theta, readings);
+}
+
+double weighted_squares(const FlightData& data, const std::vector<Eigen::Vector3d>& readings,
+                        int* residual_count) {
+  double sum = 0.0;
+  int count = 0;
+  const Flight& flight = *data.flight;
+  for (std::size_t k = 0; k < flight.size(); ++k) {
+    if (!data.mask[k] || !flight.usable[k]) continue;
+    sum += (readings[k] - flight.omega[k]).cwiseProduct(data.inverse_sigma).squaredNorm();
+    count += 3;
+  }
+  if (residual_count != nullptr) *residual_count = count;
+  return sum;
+}
+
+EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::vector<FlightData>& data,
+                     const EffectFit* nominal_fit, const Eigen::VectorXd* theta_start, unsigned threads) {
+  Setup setup{effect, &nominal, &data, {}, 0.0, {}, Eigen::VectorXd(), threads};
+  for (const FlightData& d : data) setup.refs.push_back(reference_index(effect, *d.flight));
+  if (effect == Effect::impulse) {
+    if (data.size() != 1) throw std::invalid_argument("an impulse is fitted to one flight only");
+    return fit_impulse(setup, nominal_fit);
+  }
+  const int p = effect_parameter_count(effect);
+  const ArrowProblem problem = problem_of(setup, p);
+  const bool seeded = theta_start != nullptr && theta_start->size() == p;
+  Eigen::VectorXd theta = seeded ? *theta_start : Eigen::VectorXd::Zero(p);
+  const std::vector<Eigen::VectorXd> rates = starting_rates(setup, nominal_fit, theta);
+  if (!seeded && effect == Effect::internal_damping) {
+    // The rotor's size and coupling enter non-linearly, and "no rotor" is a limit, not a
+    // point: start from the best of a small grid of plausible rotors, each given a few
+    // iterations with the initial rate free (a tumbling flight's nominal fit can be far
+    // from the rate that suits a damped one).
+    LeastSquaresOptions quick;
+    quick.max_iterations = 4;
+    quick.normal_at_solution = false;  // only the costs are compared
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<Eigen::VectorXd> best_rates = rates;
+    for (double fraction : {0.03, 0.1, 0.3}) {
+      for (double rate : {3.0, 10.0, 30.0, 100.0}) {
+        Eigen::VectorXd trial(2);
+        trial << std::log(fraction / 0.9 / (1.0 - fraction / 0.9)), std::log(rate);
+        const LeastSquaresResult r = minimise(problem, trial, rates, quick);
+        if (r.cost < best) {
+          best = r.cost;
+          theta = r.shared;
+          best_rates = r.local;
+        }
+      }
+    }
+    return result_of(setup, minimise(problem, theta, best_rates), p);
+  }
+  return result_of(setup, minimise(problem, theta, rates), p);
+}
+
+EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalInertia& nominal,
+                           const std::vector<FlightData>& data, const Eigen::VectorXd* theta_start) {
+  if (base.effect == Effect::none && base.base.empty()) {
+    return fit_effect(added, nominal, data, &base, theta_start);
+  }
+  Setup setup{added, &nominal, &data, {}, 0.0, base.base, base.theta};
+  if (base.effect != Effect::none) setup.base.push_back(base.effect);
+  const EffectModel model = setup.model();
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    setup.refs.push_back(compound_reference_index(model, *data[i].flight));
+    if (i < base.flights.size() && theta_offset(model, Effect::impulse) >= 0 && added != Effect::impulse) {
+      setup.impulse_time_s = base.flights[i].impulse_time_s;
+    }
+  }
+  if (added == Effect::impulse) {
+    if (data.size() != 1) throw std::invalid_argument("an impulse is fitted to one flight only");
+    return fit_impulse(setup, &base);
+  }
+  const int p = model_parameter_count(model);
+  const ArrowProblem problem = problem_of(setup, p);
+  std::vector<Eigen::VectorXd> rates;
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    const bool same_ref = i < base.flights.size() && base.flights[i].ref == setup.refs[i];
+    rates.emplace_back(same_ref ? Vec3(base.flights[i].omega_ref)
+                                : starting_rate(data[i], setup.refs[i], &base, i, nominal));
+  }
+  Eigen::VectorXd theta = Eigen::VectorXd::Zero(p);
+  theta.head(base.theta.size()) = base.theta;
+  if (theta_start != nullptr && theta_start->size() == p) {
+    theta = *theta_start;
+  } else if (added == Effect::internal_damping) {
+    theta.tail<2>() << std::log(0.1 / 0.9 / (1.0 - 0.1 / 0.9)), std::log(10.0);
+  }
+  return result_of(setup, minimise(problem, theta, rates), p);
+}
+
+std::vector<Eigen::VectorXd> leave_one_flight_out(const EffectFit& fit, const NominalInertia& nominal,
+                                                  const std::vector<FlightData>& data, unsigned threads) {
+  Setup setup{fit.effect, &nominal, &data, {}, 0.0, fit.base, Eigen::VectorXd(), threads};
+  for (const FlightState& f : fit.flights) setup.refs.push_back(f.ref);
+  const ArrowProblem problem = problem_of(setup, static_cast<int>(fit.theta.size()));
+  std::vector<Eigen::VectorXd> rates;
+  for (const FlightState& f : fit.flights) rates.emplace_back(Eigen::VectorXd(f.omega_ref));
+  return leave_one_block_out(problem, fit.theta, rates);
+}
+
+EffectFit fit_initial_rates(const EffectFit& fixed, const NominalInertia& nominal,
+                            const std::vector<FlightData>& data, const EffectFit* nominal_fit) {
+  Setup setup{fixed.effect, &nominal, &data, {}, 0.0, fixed.base, Eigen::VectorXd()};
+  for (const FlightData& d : data) {
+    setup.refs.push_back(compound_reference_index(setup.model(), *d.flight));
+  }
+  const Eigen::VectorXd theta = fixed.theta;
+  ArrowProblem problem = problem_of(setup, 0);
+  ArrowProblem held = problem;
+  held.residuals = [&problem, theta](int block, const Eigen::VectorXd&, const Eigen::VectorXd& local,
+                                     Eigen::VectorXd& r) { problem.residuals(block, theta, local, r); };
+  LeastSquaresOptions rates_only;
+  rates_only.normal_at_solution = false;  // no effect parameter to give an error for
+  const LeastSquaresResult solution =
+      minimise(held, Eigen::VectorXd(), starting_rates(setup, nominal_fit, theta), rates_only);
+  EffectFit fit = result_of(setup, solution, 0);
+  fit.theta = theta;
+  fit.theta_standard_error = fixed.theta_standard_error;
+  return fit;
+}
+
+}  // namespace aloft::host::diagnose

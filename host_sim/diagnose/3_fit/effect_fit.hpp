@@ -1,0 +1,81 @@
+// Fitting one candidate effect to one or more flights: the effect's parameters (shared by
+// every flight given) and each flight's initial rate, by weighted least squares on the
+// samples a mask lets through. Residuals are (predicted - measured) / sigma per axis, so
+// the cost is a chi-square when sigma is the noise floor.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <vector>
+
+#include "diagnose/2_model/nominal_inertia.hpp"
+#include "diagnose/2_model/effect.hpp"
+#include "diagnose/1_input/flight.hpp"
+#include "diagnose/2_model/flight_model.hpp"
+#include "diagnose/3_fit/flight_data.hpp"
+
+namespace aloft::host::diagnose {
+
+struct FlightState {
+  std::size_t ref = 0;  // sample whose body rate is omega_ref
+  Eigen::Vector3d omega_ref = Eigen::Vector3d::Zero();
+  double impulse_time_s = 0.0;  // impulse only
+};
+
+struct EffectFit {
+  Effect effect = Effect::none;
+  std::vector<Effect> base;  // a compound model: effects fitted with `effect` (flight_model.hpp)
+  Eigen::VectorXd theta;     // effect parameters, shared by the flights (see flight_model.hpp)
+  std::vector<FlightState> flights;
+  double cost = 0.0;       // weighted sum of squared training residuals
+  int residual_count = 0;  // training residuals (3 per sample)
+  // Standard errors of theta from cost/dof * (J^T J)^-1 (initial rates marginalised);
+  // infinite where the data does not inform a parameter.
+  Eigen::VectorXd theta_standard_error;
+  // The same errors' full covariance (uninformed directions left out: their variance is
+  // not bounded by the data).
+  Eigen::MatrixXd theta_covariance;
+};
+
+// The model of `fit` for flight `index` (impulse time included).
+EffectModel model_of(const EffectFit& fit, const NominalInertia& nominal, std::size_t index);
+
+// Predicted readings of flight `index` under `fit`.
+void predict(const EffectFit& fit, const NominalInertia& nominal, std::size_t index, const Flight& flight,
+             std::vector<Eigen::Vector3d>& readings);
+
+// Fits `effect` to `data`. `nominal_fit`, the `none` fit of the same data, gives the
+// starting rates (nullptr: start from the readings themselves). An impulse belongs to one
+// flight: fitting it to several flights at once is refused (std::invalid_argument).
+// `theta_start` (optional) starts the effect parameters elsewhere than at nominal.
+// `threads`: the flights of a pooled fit are evaluated on up to this many threads (the
+// result is the same whatever the count).
+EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::vector<FlightData>& data,
+                     const EffectFit* nominal_fit, const Eigen::VectorXd* theta_start = nullptr,
+                     unsigned threads = 1);
+
+// Fits the effects of `base` (a fit of the same data) with `added` jointly: a compound
+// model, the next step of a stepwise selection (stepwise_selection.hpp). The base
+// parameters start at their fitted values, the added ones at zero (or `theta_start`, the
+// whole compound theta); the rates start at the base fit's. An impulse in the base keeps
+// its fitted time; an added impulse is searched about the base model.
+EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalInertia& nominal,
+                           const std::vector<FlightData>& data, const Eigen::VectorXd* theta_start = nullptr);
+
+// The effect parameters without each flight in turn (one Gauss-Newton step from `fit`, the
+// all-flights solution; levenberg_marquardt.hpp), the flights on up to `threads` threads.
+// Not for impulses.
+std::vector<Eigen::VectorXd> leave_one_flight_out(const EffectFit& fit, const NominalInertia& nominal,
+                                                  const std::vector<FlightData>& data, unsigned threads = 1);
+
+// Refits only the flights' initial rates with the effect parameters of `fixed` held: how a
+// fitted effect is carried over to a flight it never saw.
+EffectFit fit_initial_rates(const EffectFit& fixed, const NominalInertia& nominal,
+                            const std::vector<FlightData>& data, const EffectFit* nominal_fit);
+
+// Weighted sum of squared residuals of `readings` on the masked samples, and their count.
+double weighted_squares(const FlightData& data, const std::vector<Eigen::Vector3d>& readings,
+                        int* residual_count = nullptr);
+
+}  // namespace aloft::host::diagnose

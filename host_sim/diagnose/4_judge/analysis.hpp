@@ -1,0 +1,129 @@
+// What the judging makes of a flight or of a pooled session: the nominal model's gap
+// (baseline, where), every candidate judged held out, the stepwise selection's steps and
+// the verdict. The flow (5_flow/diagnosis.hpp) fills one per flight and one pooled.
+//
+// Ranking. Every candidate (none included) is fitted with the flight's initial rate and
+// judged on held-out samples (3_fit/held_out.hpp); its score is the held-out chi-square (squared
+// residuals over the noise floor, divided by the best candidate's chi-square per residual
+// when that exceeds 1) plus kPenaltyPerParameter (confidence.hpp) for each parameter it adds. The
+// verdict is the best-scoring candidate if it beats `none` by more than kVerdictMargin,
+// else `none`: under noise alone the best of nine candidates gains a few units of
+// chi-square by chance, never tens.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diagnose/2_model/effect.hpp"
+#include "diagnose/2_model/effect_parameters.hpp"
+#include "diagnose/3_fit/effect_fit.hpp"
+#include "diagnose/4_judge/invariants.hpp"
+#include "diagnose/4_judge/tensor_report.hpp"
+
+namespace aloft::host::diagnose {
+
+struct Baseline {
+  double rms_da_deg = 0.0;
+  double rms_rel_err = 0.0;
+};
+
+struct TimeSlice {
+  double from_s = 0.0, to_s = 0.0;
+  double rms_da_deg = 0.0, rms_rel_err = 0.0;
+};
+
+struct Where {
+  std::optional<double> onset_s;  // absolute time (file clock); none when never
+  std::string dominant_axis = "x";
+  Eigen::Vector3d rms_gap_body_rad_s = Eigen::Vector3d::Zero();  // baseline gap per body axis
+  Eigen::Vector3d noise_floor = Eigen::Vector3d::Zero();         // per sensor axis
+  double gap_over_noise = 0.0;  // baseline chi-square per residual (1: noise only)
+  std::vector<TimeSlice> slices;
+  std::optional<Invariants> invariants;  // per flight only
+};
+
+struct Candidate {
+  Effect effect = Effect::none;
+  // Compound models (stepwise_selection.hpp): the effects fitted with `effect`, and
+  // whether this candidate is the model its step starts from (the one to beat).
+  std::vector<Effect> base;
+  bool reference = false;
+  EffectFit fit;  // on all the data
+  EffectParameters params;
+  double heldout_chi_square = 0.0;
+  int heldout_residuals = 0;
+  double heldout_rms_da_deg = 0.0;
+  double heldout_rms_rel_err = 0.0;
+  double score = 0.0;
+  double shrink = 0.0;                 // 1 - rel_err(with) / rel_err(none), held out
+  double shrink_da = 0.0;              // the same for DA
+  double reference_rms_rel_err = 0.0;  // held out, of the model this candidate is ranked against
+  bool identifiable = true;
+  bool physical = true;
+  bool evaluated = true;  // false: not applicable here (reason in note)
+  std::string note;
+  std::vector<Effect> indistinguishable;  // candidates the data cannot tell from this one
+  // Session only: the effect parameters fitted without each flight (leave one flight out).
+  std::vector<Eigen::VectorXd> heldout_theta;
+  // Held-out predictions per flight and sample (each from the fold that did not see it).
+  std::vector<std::vector<Eigen::Vector3d>> heldout_readings;
+  // Per flight only: the fits of the two folds (the next step starts from them).
+  std::vector<EffectFit> fold_fits;
+};
+
+// One effect of the final model (SPEC §4 verdict.effects).
+struct VerdictEffect {
+  Effect effect = Effect::none;
+  std::vector<Effect> equivalent;
+  EffectParameters params;                 // from the final model's fit
+  int step = 0;                            // the step it joined at (1: first)
+  double heldout_rms_rel_err_after = 0.0;  // of the model as it stood after that step
+  double heldout_rms_da_after_deg = 0.0;
+  double step_shrink = 0.0;  // 1 - rel_err(after its step) / rel_err(before)
+  double shrink = 0.0;       // 1 - rel_err(final model) / rel_err(final model without it)
+};
+
+// One step of the stepwise selection: the model it starts from, every candidate
+// addition judged held out, and what was added (nothing: the selection stopped).
+struct ModelStep {
+  std::vector<Effect> model;          // effects before the step
+  std::vector<Candidate> candidates;  // best first; the reference is the starting model
+  int added = -1;                     // index into candidates, -1: nothing joined
+  std::vector<Effect> equivalent;     // the added effect's class at this step
+  double dispersion = 1.0;
+  double heldout_rms_rel_err_before = 0.0, heldout_rms_rel_err_after = 0.0;
+  double heldout_rms_da_before_deg = 0.0, heldout_rms_da_after_deg = 0.0;
+  double shrink = 0.0;  // 1 - after / before (relative error)
+};
+
+struct Verdict {
+  Effect effect = Effect::none;
+  std::vector<Effect> equivalent;
+  int chosen = -1;  // index into Analysis::candidates
+  double heldout_rms_da_before_deg = 0.0, heldout_rms_da_after_deg = 0.0;
+  double heldout_rms_rel_err_before = 0.0, heldout_rms_rel_err_after = 0.0;
+  bool confident = true;
+  std::vector<std::string> could_not_judge;
+  // The final model, most important first (empty when the verdict is none).
+  std::vector<VerdictEffect> effects;
+};
+
+struct Analysis {
+  Baseline baseline;
+  std::optional<TensorReport> tensor;  // SPEC §4 `tensor` (tensor_report.hpp)
+  Where where;
+  std::vector<Candidate> candidates;  // best first
+  Verdict verdict;
+  // The best candidate's held-out chi-square per residual, floored at 1: how much of the
+  // gap no candidate explains (scores are divided by it; see candidate_ranking.cpp).
+  double dispersion = 1.0;
+  std::vector<std::string> notes;
+  // The stepwise selection (steps[0] is the single-effect step, whose candidates are
+  // `candidates` above), and the final model it settled on (effect none: nothing joined).
+  std::vector<ModelStep> steps;
+  Candidate model;
+};
+}  // namespace aloft::host::diagnose

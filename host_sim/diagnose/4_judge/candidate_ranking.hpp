@@ -1,0 +1,54 @@
+// Turning held-out gaps into a ranking and a verdict (rules in diagnosis.hpp), shared by
+// the per-flight and the pooled analysis.
+#pragma once
+
+#include <vector>
+
+#include "diagnose/4_judge/analysis.hpp"
+
+namespace aloft::host::diagnose {
+
+// Held-out DA and relative error of predicted vs measured readings over the masked
+// samples of every flight; accumulates into the given sums.
+struct GapSums {
+  double da_sq = 0.0, rel_sq = 0.0;
+  double chi_square = 0.0;
+  int samples = 0, residuals = 0;
+  void add(const Eigen::Vector3d& predicted, const Eigen::Vector3d& measured,
+           const Eigen::Vector3d& inverse_sigma);
+  double rms_da_deg() const;
+  double rms_rel_err() const;
+};
+
+// What the ranking needs to know about the data judged.
+struct RankingContext {
+  bool gyro_input = true;
+  std::vector<const Flight*> flights;
+  std::vector<Eigen::Vector3d> inverse_sigma;  // per flight
+  double mean_speed = 0.0;                     // rad/s
+  double duration_s = 0.0;                     // of the data that informs shared parameters
+  const NominalInertia* nominal = nullptr;     // the stepwise selection's parameters need it
+  double resolution = 0.0;                     // rad/s (noise_floor.hpp); 0: unknown
+};
+
+// One step of the ranking: scores every candidate of `all` against the one marked
+// `reference` (the model the step starts from), sorts best first, and picks the best
+// physical candidate if it beats the reference by more than `margin`, with the effects
+// the data cannot tell from it (score within the margin, predictions within 0.3 sigma).
+struct StepRanking {
+  double dispersion = 1.0;
+  int reference = -1;  // indices into the sorted `all`
+  int best = -1;
+  bool beats_reference = false;
+  std::vector<Effect> equivalent;  // of `best`, itself first
+};
+StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context, double margin);
+
+// Fills score, shrink, physical, identifiable and indistinguishable; sorts best first;
+// makes the verdict. `gyro_input` selects the equivalence classes that always hold.
+// `inverse_sigma[f]` weighs flight f (for the indistinguishability test).
+void rank_candidates(Analysis& analysis, const RankingContext& context);
+void rank_candidates(Analysis& analysis, bool gyro_input, const std::vector<const Flight*>& flights,
+                     const std::vector<Eigen::Vector3d>& inverse_sigma, double mean_speed, double duration_s);
+
+}  // namespace aloft::host::diagnose

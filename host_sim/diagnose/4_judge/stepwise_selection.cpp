@@ -1,0 +1,214 @@
+#include "diagnose/4_judge/stepwise_selection.hpp"
+
+#include <algorithm>
+
+#include "diagnose/4_judge/practical_significance.hpp"
+
+namespace aloft::host::diagnose {
+namespace {
+
+std::vector<Effect> effects_of(const Candidate& c) {
+  std::vector<Effect> out;
+  for (Effect e : c.base) {
+    if (e != Effect::none) out.push_back(e);
+  }
+  if (c.effect != Effect::none) out.push_back(c.effect);
+  return out;
+}
+
+bool contains(const std::vector<Effect>& list, Effect e) {
+  return std::find(list.begin(), list.end(), e) != list.end();
+}
+
+bool same_set(std::vector<Effect> a, std::vector<Effect> b) {
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  return a == b;
+}
+
+// May `e` join a model whose effects are `model` and whose steps found `classes`? Not
+// when it is in the model, or in the class of an effect already in it: the data cannot
+// tell the two apart, so the joint fit would be degenerate.
+bool may_join(Effect e, const std::vector<Effect>& model, const std::vector<std::vector<Effect>>& classes,
+              bool gyro_input) {
+  if (e == Effect::none || contains(model, e)) return false;
+  for (Effect m : model) {
+    if (contains(always_equivalent(m, gyro_input), e)) return false;
+  }
+  for (const auto& c : classes) {
+    if (contains(c, e)) return false;
+  }
+  return true;
+}
+
+// The evaluated candidate whose model is exactly `effects`, among every step's.
+const Candidate* find_model(const Analysis& a, const std::vector<Effect>& effects) {
+  for (const Candidate& c : a.candidates) {
+    if (c.evaluated && same_set(effects_of(c), effects)) return &c;
+  }
+  for (const ModelStep& s : a.steps) {
+    for (const Candidate& c : s.candidates) {
+      if (c.evaluated && same_set(effects_of(c), effects)) return &c;
+    }
+  }
+  return nullptr;
+}
+
+// Held-out relative error of the model `effects` (fitting it when no step did).
+double heldout_rel_err_of(const Analysis& a, const std::vector<Effect>& effects,
+                          const CandidateEvaluator& evaluate) {
+  if (const Candidate* c = find_model(a, effects)) return c->heldout_rms_rel_err;
+  std::vector<Effect> head(effects.begin(), effects.end() - 1);
+  const Candidate* base = find_model(a, head);
+  if (base == nullptr) return 0.0;
+  const Candidate c = evaluate(*base, effects.back());
+  return c.evaluated ? c.heldout_rms_rel_err : 0.0;
+}
+
+ModelStep first_step(const Analysis& a) {
+  ModelStep step;
+  const Verdict& v = a.verdict;
+  step.dispersion = a.dispersion;
+  step.heldout_rms_rel_err_before = v.heldout_rms_rel_err_before;
+  step.heldout_rms_da_before_deg = v.heldout_rms_da_before_deg;
+  step.heldout_rms_rel_err_after = v.heldout_rms_rel_err_after;
+  step.heldout_rms_da_after_deg = v.heldout_rms_da_after_deg;
+  if (v.effect != Effect::none && v.chosen >= 0) {
+    step.added = v.chosen;
+    step.equivalent = v.equivalent;
+    step.shrink = a.candidates[static_cast<std::size_t>(v.chosen)].shrink;
+  }
+  return step;
+}
+
+// One step from `current`; returns whether an effect joined (then `current` is the new model).
+bool next_step(Analysis& a, const RankingContext& context, const CandidateEvaluator& evaluate,
+               const std::vector<std::vector<Effect>>& classes, Candidate& current) {
+  ModelStep step;
+  step.model = effects_of(current);
+  Candidate stay = current;
+  stay.reference = true;
+  stay.indistinguishable.clear();
+  step.candidates.push_back(std::move(stay));
+  for (Effect e : candidate_effects(context.gyro_input)) {
+    if (!may_join(e, step.model, classes, context.gyro_input)) continue;
+    Candidate c = evaluate(current, e);
+    c.reference = false;
+    step.candidates.push_back(std::move(c));
+  }
+  if (step.candidates.size() < 2) return false;
+  const StepRanking r = rank_step(step.candidates, context, kVerdictMargin);
+  step.dispersion = r.dispersion;
+  const Candidate& reference = step.candidates[static_cast<std::size_t>(r.reference)];
+  step.heldout_rms_rel_err_before = step.heldout_rms_rel_err_after = reference.heldout_rms_rel_err;
+  step.heldout_rms_da_before_deg = step.heldout_rms_da_after_deg = reference.heldout_rms_da_deg;
+  const bool joins = r.beats_reference &&
+                     step.candidates[static_cast<std::size_t>(r.best)].shrink >= kMinimumStepShrink &&
+                     matters(step.candidates[static_cast<std::size_t>(r.best)], context);
+  if (joins) {
+    const Candidate& best = step.candidates[static_cast<std::size_t>(r.best)];
+    step.added = r.best;
+    step.equivalent = r.equivalent;
+    step.heldout_rms_rel_err_after = best.heldout_rms_rel_err;
+    step.heldout_rms_da_after_deg = best.heldout_rms_da_deg;
+    step.shrink = best.shrink;
+    current = best;
+  }
+  a.steps.push_back(std::move(step));
+  return joins;
+}
+
+// The final model's effects, each with its step, its parameters and what the model
+// loses without it; most important (largest loss) first.
+// Sets the verdict from them (its effect, class, chosen candidate and held-out error after).
+void describe_final_model(Analysis& analysis, const RankingContext& context,
+                          const CandidateEvaluator& evaluate, const Candidate& current) {
+  Verdict& v = analysis.verdict;
+  const std::vector<Effect> final_effects = effects_of(current);
+  const EffectModel model = context.nominal != nullptr && !current.fit.flights.empty()
+                                ? model_of(current.fit, *context.nominal, 0)
+                                : EffectModel(current.effect, NominalInertia(), 0.0, current.base);
+  int step_number = 0;
+  for (const ModelStep& s : analysis.steps) {
+    ++step_number;
+    if (s.added < 0) continue;
+    const Candidate& joined = step_number == 1 ? analysis.candidates[static_cast<std::size_t>(s.added)]
+                                               : s.candidates[static_cast<std::size_t>(s.added)];
+    VerdictEffect e;
+    e.effect = joined.effect;
+    e.equivalent = s.equivalent;
+    e.step = step_number;
+    e.params =
+        context.nominal != nullptr ? effect_parameters(model, current.fit.theta, e.effect) : joined.params;
+    e.heldout_rms_rel_err_after = s.heldout_rms_rel_err_after;
+    e.heldout_rms_da_after_deg = s.heldout_rms_da_after_deg;
+    e.step_shrink = s.shrink;
+    std::vector<Effect> rest;
+    for (Effect f : final_effects) {
+      if (f != e.effect) rest.push_back(f);
+    }
+    const double without =
+        rest.empty() ? v.heldout_rms_rel_err_before : heldout_rel_err_of(analysis, rest, evaluate);
+    e.shrink = without > 0 ? 1.0 - current.heldout_rms_rel_err / without : 0.0;
+    v.effects.push_back(e);
+  }
+  std::stable_sort(v.effects.begin(), v.effects.end(),
+                   [](const VerdictEffect& x, const VerdictEffect& y) { return x.shrink > y.shrink; });
+  v.effect = v.effects.front().effect;
+  v.equivalent = v.effects.front().equivalent;
+  for (std::size_t i = 0; i < analysis.candidates.size(); ++i) {
+    if (analysis.candidates[i].effect == v.effect && analysis.candidates[i].base.empty())
+      v.chosen = static_cast<int>(i);
+  }
+  v.heldout_rms_rel_err_after = current.heldout_rms_rel_err;
+  v.heldout_rms_da_after_deg = current.heldout_rms_da_deg;
+  if (!current.identifiable && final_effects.size() > 1) {
+    v.confident = false;
+    v.could_not_judge.push_back(
+        "the compound model explains the gap but its parameters are poorly determined");
+  }
+}
+
+}  // namespace
+
+void select_stepwise(Analysis& analysis, const RankingContext& context, const CandidateEvaluator& evaluate) {
+  Verdict& v = analysis.verdict;
+  analysis.steps.clear();
+  analysis.steps.push_back(first_step(analysis));
+  v.effects.clear();
+  const auto none =
+      std::find_if(analysis.candidates.begin(), analysis.candidates.end(),
+                   [](const Candidate& c) { return c.effect == Effect::none && c.base.empty(); });
+  std::string why;
+  if (v.effect != Effect::none && v.chosen >= 0 &&
+      !matters(analysis.candidates[static_cast<std::size_t>(v.chosen)], context, &why)) {
+    analysis.notes.push_back(std::string(effect_name(v.effect)) +
+                             " beats the noise but is too small to matter: " + why);
+    v.effect = Effect::none;
+    v.equivalent = {Effect::none};
+    v.could_not_judge.clear();
+    if (none != analysis.candidates.end()) {
+      v.chosen = static_cast<int>(none - analysis.candidates.begin());
+      v.heldout_rms_rel_err_after = none->heldout_rms_rel_err;
+      v.heldout_rms_da_after_deg = none->heldout_rms_da_deg;
+    }
+    analysis.steps.front() = first_step(analysis);
+  }
+  if (v.effect == Effect::none || v.chosen < 0) {
+    if (none != analysis.candidates.end()) analysis.model = *none;
+    judge_confidence(analysis);
+    return;
+  }
+  Candidate current = analysis.candidates[static_cast<std::size_t>(v.chosen)];
+  std::vector<std::vector<Effect>> classes = {v.equivalent};
+  while (static_cast<int>(effects_of(current).size()) < kMaximumEffects &&
+         next_step(analysis, context, evaluate, classes, current)) {
+    classes.push_back(analysis.steps.back().equivalent);
+  }
+  analysis.model = current;
+
+  describe_final_model(analysis, context, evaluate, current);
+  judge_confidence(analysis);
+}
+
+}  // namespace aloft::host::diagnose

@@ -1,0 +1,176 @@
+#include "diagnose/4_judge/tensor_intervals.hpp"
+
+#include "diagnose/4_judge/confidence.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+namespace aloft::host::diagnose {
+namespace {
+
+constexpr double kDeg = 180.0 / 3.14159265358979323846;
+constexpr double kNormal975 = 1.959964;
+constexpr double kChiSquare3At95 = 7.814728;  // a 95 % region of a 3-vector
+
+// Student's t 0.975 quantile on `dof` degrees of freedom (table, then the normal limit).
+double student_t_975(int dof) {
+  static const std::array<double, 30> table = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306,
+                                               2.262,  2.228, 2.201, 2.179, 2.160, 2.145, 2.131, 2.120,
+                                               2.110,  2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064,
+                                               2.060,  2.056, 2.052, 2.048, 2.045, 2.042};
+  if (dof < 1) return table[0];
+  return dof <= 30 ? table[static_cast<std::size_t>(dof - 1)] : kNormal975 + 2.4 / dof;
+}
+
+const Candidate* find(const Analysis& a, Effect e) {
+  for (const Candidate& c : a.candidates) {
+    if (c.effect == e && c.evaluated) return &c;
+  }
+  return nullptr;
+}
+
+// d(log moment k)/d(theta) for the ascending principal moments (flight_model.hpp: u0, u1
+// free, u2 = -u0 - u1; the rescaling to the nominal sum cancels in every ratio).
+Eigen::RowVector2d log_moment_gradient(int k) {
+  if (k == 0) return Eigen::RowVector2d(1.0, 0.0);
+  if (k == 1) return Eigen::RowVector2d(0.0, 1.0);
+  return Eigen::RowVector2d(-1.0, -1.0);
+}
+
+// Rows: d(log ratio)/d(theta) of I2/I1 and I3/I1 in body file order.
+Eigen::Matrix2d log_ratio_gradient(const Eigen::Vector3i& order) {
+  Eigen::Matrix2d g;
+  g.row(0) = log_moment_gradient(order(1)) - log_moment_gradient(order(0));
+  g.row(1) = log_moment_gradient(order(2)) - log_moment_gradient(order(0));
+  return g;
+}
+
+Eigen::Vector2d ratios_of(const Eigen::Vector3d& moments, const Eigen::Vector3i& order) {
+  return Eigen::Vector2d(moments(order(1)) / moments(order(0)), moments(order(2)) / moments(order(0)));
+}
+
+// How much serial correlation of the held-out residuals inflates a variance: the AR(1)
+// factor (1 + rho) / (1 - rho), rho the lag-1 autocorrelation (clamped to [0, 0.95]).
+double serial_inflation(const Candidate& c, const std::vector<const Flight*>& flights) {
+  double product = 0.0, square = 0.0;
+  for (std::size_t f = 0; f < flights.size() && f < c.heldout_readings.size(); ++f) {
+    const Flight& flight = *flights[f];
+    const auto& p = c.heldout_readings[f];
+    for (std::size_t k = 0; k + 1 < flight.size() && k + 1 < p.size(); ++k) {
+      if (!flight.usable[k] || !flight.usable[k + 1]) continue;
+      const Eigen::Vector3d a = p[k] - flight.omega[k], b = p[k + 1] - flight.omega[k + 1];
+      product += a.dot(b);
+      square += a.squaredNorm();
+    }
+  }
+  const double rho = square > 0.0 ? std::clamp(product / square, 0.0, 0.95) : 0.0;
+  return (1.0 + rho) / (1.0 - rho);
+}
+
+TensorReport base_report(const Candidate& moments, const NominalInertia& nominal) {
+  TensorReport r;
+  r.axis_order = principal_axis_order(nominal);
+  r.ratio_best = ratios_of(moments.params.principal_kg_m2, r.axis_order);
+  r.ratio_nominal = ratios_of(nominal.principal_moments, r.axis_order);
+  return r;
+}
+
+// Intervals from the log ratios' standard errors and a quantile.
+void set_intervals(TensorReport& r, const Eigen::Vector2d& log_se, double quantile) {
+  for (int i = 0; i < 2; ++i) {
+    r.ratio_low(i) = r.ratio_best(i) * std::exp(-quantile * log_se(i));
+    r.ratio_high(i) = r.ratio_best(i) * std::exp(quantile * log_se(i));
+  }
+  r.consistent_with_nominal = true;
+  for (int i = 0; i < 2; ++i) {
+    r.consistent_with_nominal = r.consistent_with_nominal && r.ratio_nominal(i) >= r.ratio_low(i) &&
+                                r.ratio_nominal(i) <= r.ratio_high(i);
+  }
+}
+
+// The axes bound: the fitted rotation plus the 95 % radius of its error ellipsoid.
+void set_axes(TensorReport& r, const Candidate* axes, const Eigen::Matrix3d& covariance, double widen) {
+  if (axes == nullptr) return;
+  const double largest =
+      std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvalues().maxCoeff());
+  r.axes_95_deg = axes->params.angle_deg + widen * std::sqrt(kChiSquare3At95 * largest) * kDeg;
+  r.axes_known = std::isfinite(r.axes_95_deg);
+}
+
+Eigen::Matrix3d model_covariance_3(const Candidate& c, double inflation) {
+  if (c.fit.theta_covariance.rows() != 3) return Eigen::Matrix3d::Zero();
+  return Eigen::Matrix3d(c.fit.theta_covariance) * inflation;
+}
+
+}  // namespace
+
+bool flight_tensor_report(const Analysis& analysis, const std::vector<const Flight*>& flights,
+                          const NominalInertia& nominal, TensorReport& report) {
+  const Candidate* moments = find(analysis, Effect::inertia_moments);
+  if (moments == nullptr || moments->fit.theta_covariance.rows() != 2) return false;
+  TensorReport r = base_report(*moments, nominal);
+  const double inflation = serial_inflation(*moments, flights);
+  const Eigen::Matrix2d g = log_ratio_gradient(r.axis_order);
+  const Eigen::Matrix2d cov = g * moments->fit.theta_covariance * g.transpose() * inflation;
+  set_intervals(r, cov.diagonal().cwiseMax(0.0).cwiseSqrt(), kNormal975);
+  const Candidate* axes = find(analysis, Effect::inertia_axes);
+  if (axes != nullptr) set_axes(r, axes, model_covariance_3(*axes, serial_inflation(*axes, flights)), 1.0);
+  r.flights = static_cast<int>(flights.size());
+  r.method = "fit covariance (noise from the residuals), widened for their serial correlation";
+  report = r;
+  return true;
+}
+
+bool pooled_tensor_report(const Analysis& pooled, const std::vector<const Flight*>& flights,
+                          const NominalInertia& nominal, TensorReport& report) {
+  const Candidate* moments = find(pooled, Effect::inertia_moments);
+  const std::size_t n = flights.size();
+  if (moments == nullptr || moments->fit.theta_covariance.rows() != 2 || moments->heldout_theta.size() != n ||
+      n < 2) {
+    return false;
+  }
+  TensorReport r = base_report(*moments, nominal);
+  const Eigen::Matrix2d g = log_ratio_gradient(r.axis_order);
+  const Eigen::Matrix2d model =
+      g * moments->fit.theta_covariance * g.transpose() * serial_inflation(*moments, flights);
+  // Jackknife over flights: (n-1)/n times the spread of the leave-one-out estimates.
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const Eigen::VectorXd& t : moments->heldout_theta) mean += g * t;
+  mean /= static_cast<double>(n);
+  Eigen::Vector2d spread = Eigen::Vector2d::Zero();
+  for (const Eigen::VectorXd& t : moments->heldout_theta) spread += (g * t - mean).cwiseAbs2();
+  const Eigen::Vector2d jackknife = spread * (static_cast<double>(n) - 1.0) / static_cast<double>(n);
+  const double t = student_t_975(static_cast<int>(n) - 1);
+  set_intervals(r, jackknife.cwiseMax(model.diagonal().cwiseMax(0.0)).cwiseSqrt(), t);
+
+  const Candidate* axes = find(pooled, Effect::inertia_axes);
+  if (axes != nullptr && axes->heldout_theta.size() == n) {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const Eigen::VectorXd& d : axes->heldout_theta) centre += d.head<3>();
+    centre /= static_cast<double>(n);
+    Eigen::Matrix3d jack = Eigen::Matrix3d::Zero();
+    for (const Eigen::VectorXd& d : axes->heldout_theta)
+      jack += (d.head<3>() - centre) * (d.head<3>() - centre).transpose();
+    jack *= (static_cast<double>(n) - 1.0) / static_cast<double>(n);
+    const Eigen::Matrix3d own = model_covariance_3(*axes, serial_inflation(*axes, flights));
+    const double jl = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(jack).eigenvalues().maxCoeff();
+    const double ol = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(own).eigenvalues().maxCoeff();
+    set_axes(r, axes, jl > ol ? jack : own, t / kNormal975);
+  }
+  r.flights = static_cast<int>(n);
+  r.method = "jackknife over flights (Student t, n-1 dof), never narrower than the pooled fit's covariance";
+  report = r;
+  return true;
+}
+
+void attach_flight_tensor_report(Analysis& analysis, const Flight& flight, const NominalInertia& nominal) {
+  TensorReport report;
+  if (flight_tensor_report(analysis, {&flight}, nominal, report)) analysis.tensor = report;
+  temper_confidence(analysis);
+}
+
+}  // namespace aloft::host::diagnose

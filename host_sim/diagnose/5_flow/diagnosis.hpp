@@ -1,0 +1,68 @@
+// The diagnosis of the sim-to-real gap (SPEC §4): where the measured motion leaves the
+// nominal torque-free model, which candidate effect explains the gap on data the fit did
+// not see, and how far the gap shrinks with it.
+// The judged analysis each holds is 4_judge/analysis.hpp.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diagnose/1_input/flight.hpp"
+#include "diagnose/1_input/time_gaps.hpp"
+#include "diagnose/2_model/nominal_inertia.hpp"
+#include "diagnose/4_judge/analysis.hpp"
+#include "diagnose/4_judge/confidence.hpp"
+#include "diagnose/4_judge/flip_period.hpp"
+#include "diagnose/4_judge/noise_floor.hpp"
+
+namespace aloft::host::diagnose {
+
+struct FlightDiagnosis {
+  std::string name;
+  std::string comment;
+  double start_s = 0.0, end_s = 0.0;
+  std::size_t samples = 0;
+  double rate_hz = 0.0;
+  NoiseFloor noise;
+  std::vector<TimeGap> gaps;
+  std::size_t unusable_samples = 0;
+  Analysis analysis;
+  const Flight* flight = nullptr;  // the data it was made from (plots)
+  // Session only: the flip period measured and predicted (flip_period.hpp), nominal and
+  // with the pooled final model fitted without this flight.
+  std::optional<FlipPeriod> flip_period;
+};
+
+// Mean relative flip-period error over the flights of a session that flip about the
+// intermediate axis (segment comment says "intermediate"; all flights with a period if
+// none says so).
+struct FlipPeriodSummary {
+  int flights = 0;
+  // From the first sample (flip_period.hpp).
+  double mean_error_nominal = 0.0;
+  double mean_error_diagnosed = 0.0;  // over the same flights
+  int diagnosed_flights = 0;
+  // From each flight's fitted initial state, over the flights with both predictions.
+  double mean_error_nominal_fitted = 0.0;
+  double mean_error_diagnosed_fitted = 0.0;
+  int fitted_flights = 0;
+};
+
+struct SessionDiagnosis {
+  Analysis pooled;
+  bool single_flight = false;  // one judged flight: `pooled` is that flight's own analysis
+  std::vector<FlightDiagnosis> flights;
+  std::optional<FlipPeriodSummary> flip_period;
+};
+
+// One flight. Never throws for data it cannot judge: the verdict says so instead.
+FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nominal);
+
+// A session: every flight on its own, and the pooled analysis with effects shared by all
+// flights, judged by leaving one flight out. `threads` >= 1.
+SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const NominalInertia& nominal,
+                                  int threads = 2);
+
+}  // namespace aloft::host::diagnose
