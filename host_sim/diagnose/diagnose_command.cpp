@@ -160,8 +160,8 @@ void run_diagnose(const DiagnoseOptions& o) {
     std::cout << diagnose::flight_summary(d);
     if (!o.plot.empty()) diagnose::write_flight_plots(d, nominal, o.plot);
   }
-  // The same words as `aloft study`'s note on its nominal figure (README, "Study and
-  // diagnose on the same data"): the two commands answer different questions.
+  // The same words as `aloft study`'s note on its nominal figure (docs/study.md,
+  // "Study and diagnose on the same data"): the two commands answer different questions.
   const char* const measures =
       "nominal model from the initial rate fitted to the whole flight (its best case); "
       "aloft study seeds a simulation from each measured sample instead, which drifts further";

@@ -1,7 +1,7 @@
 // The two frames in which the study compares a simulated angular velocity with the
 // measured one. The seed paper says only that "each pair of consecutive rotation
 // matrices defined an instantaneous axis of rotation"; it does not say in which axes
-// that axis was expressed, and the choice changes the numbers (README, the study):
+// that axis was expressed, and the choice changes the numbers (docs/study.md):
 //  - body: in the body's own axes, the vector part of q_j^-1 q_{j+1}. A wrong tensor
 //    makes ω drift through the body, so the deviation grows with time from the seed;
 //  - world: in the fixed lab axes, the vector part of q_{j+1} q_j^-1 (the body axis

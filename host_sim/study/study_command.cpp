@@ -41,7 +41,7 @@ struct StudyOptions {
 };
 
 // What the nominal figure of a recording measures, beside `aloft diagnose`'s baseline for
-// the same data (README, "Study and diagnose on the same data"): different questions.
+// the same data (docs/study.md, "Study and diagnose on the same data"): different questions.
 constexpr const char* kNominalMeasures =
     "one simulation seeded from each measured sample, run over the whole flight (the paper's "
     "measure); aloft diagnose fits the start to the whole flight instead, the model's best case";
@@ -256,7 +256,7 @@ void add_study_command(CLI::App& app) {
   add_throw_options(*cmd, options->throw_options);
   cmd->add_flag("--calibrate-to-paper", options->calibrate_to_paper,
                 "search the throw (spin rate, axis, marker noise) that matches the paper's GF "
-                "and CP rows, per frame, and predict its Monte Carlo rows (README); writes "
+                "and CP rows, per frame, and predict its Monte Carlo rows (docs/study.md); writes "
                 "calibration.json");
   cmd->callback([options] { study(*options); });
 }

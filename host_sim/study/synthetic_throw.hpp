@@ -17,7 +17,7 @@
 //    (Merriaux et al., "A study of Vicon system positioning performance", Sensors
 //    17:1591, 2017); 0.1 mm is the middle of 0.025-0.5 mm on a logarithmic scale. With
 //    four markers 65-80 mm from the centre it makes about 1 mrad of orientation noise.
-//    The study's result depends on this number in proportion (see the README).
+//    The study's result depends on this number in proportion (see docs/study.md).
 //  - Markers 6 mm proud of the surface (a 12 mm marker's centre), spread over the side
 //    and one end so that no three are close to collinear, unevenly, as stuck on by hand
 //    (the paper says only "four ... markers adhered to the cylinder's surface"; the

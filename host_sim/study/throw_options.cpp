@@ -35,7 +35,7 @@ bool ThrowOptions::searched_given() const {
 void add_throw_options(CLI::App& cmd, ThrowOptions& o) {
   cmd.add_option("--throw", o.preset,
                  "built-in throw preset: built-in (default), paper-body or paper-world (inferred "
-                 "from the paper's GF and CP rows in that frame, README)");
+                 "from the paper's GF and CP rows in that frame, docs/study.md)");
   cmd.add_option("--spin-rate", o.spin_rate_rev_s, "built-in throw: spin rate, rev/s (1.5)");
   cmd.add_option("--spin-tilt", o.spin_tilt_deg,
                  "built-in throw: spin axis angle from the cylinder axis z, deg (50)");

@@ -1,6 +1,6 @@
 // Named built-in throws (`aloft study --throw NAME`):
 //  - built-in: the defaults of study/synthetic_throw.hpp, argued there; the numbers in
-//    the README's study section come from it;
+//    docs/study.md come from it;
 //  - paper-body, paper-world: the throws inferred from the paper's GF and CP rows alone,
 //    with DA in body or in world axes, by `aloft study --calibrate-to-paper`
 //    (study/paper_calibration.hpp), so that the Monte Carlo rows they give are a

@@ -1,6 +1,6 @@
 // What the accuracy tests measure, shared by the tests (test_exact_tops.cpp,
 // test_invariants.cpp) and the table that prints the measurements (accuracy_table.cpp,
-// the README's "Accuracy" table): the integrators against exact torque-free motions and
+// the "Accuracy" table of docs/accuracy-and-speed.md): the integrators against exact torque-free motions and
 // their invariants, over 1 s at 1 kHz with |w| up to 15 rad/s.
 #pragma once
 

@@ -1,6 +1,6 @@
-// The README's "Accuracy" table, measured: a hidden test case (tag [.accuracy_table]) that
-// prints the table's rows, the measured worst case of each check beside the issue's
-// bound and the bound the tests hold it to (tolerances.hpp). Catch2 builds only.
+// The "Accuracy" table of docs/accuracy-and-speed.md, measured: a hidden test case (tag [.accuracy_table])
+// that prints the table's rows, the measured worst case of each check beside the bound and the bound
+// the tests hold it to (tolerances.hpp). Catch2 builds only.
 //   build/host/tests/core/aloft_core_tests "[.accuracy_table]" -o /dev/null
 #include <cstdio>
 #include <cstdlib>
@@ -14,7 +14,7 @@ namespace {
 using aloft_test::Accuracy;
 using Order = aloft::SplittingIntegrator<double>::Order;
 
-// 1.5e-9 as the README writes it (printf would give 1.5e-09).
+// 1.5e-9 as the table writes it (printf would give 1.5e-09).
 std::string sci(double value, int decimals) {
   char text[32];
   std::snprintf(text, sizeof text, "%.*e", decimals, value);
@@ -53,7 +53,7 @@ double worst_asymmetric_top() {
 
 }  // namespace
 
-TEST_CASE("the README's accuracy table, measured", "[.accuracy_table]") {
+TEST_CASE("the docs' accuracy table, measured", "[.accuracy_table]") {
   const aloft::InertiaTensor<double> inertia = aloft_test::tumbling_body();
   const aloft::RigidBodyState<double> start = aloft_test::tumbling_start(inertia);
   const aloft_test::Drift rk4 = aloft_test::invariant_drift(aloft::Rk4Integrator<double>(inertia), start);

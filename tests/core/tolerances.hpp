@@ -1,5 +1,5 @@
 // Tolerances of the core tests, per scalar type. The accuracy bounds are issue 2's
-// figures tightened to what was measured on x86-64 (README, "Accuracy"), with a margin
+// figures tightened to what was measured on x86-64 (docs/accuracy-and-speed.md, "Accuracy"), with a margin
 // of about 3x for other compilers and targets.
 #pragma once
 

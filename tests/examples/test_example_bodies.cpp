@@ -1,4 +1,4 @@
-// The body files in examples/ (README, "The body file"): each one read by aloft and used
+// The body files in examples/ (docs/file-formats.md, "The body file"): each one read by aloft and used
 // the way its kind is used — the paper's cylinder against the study's numbers, the
 // marker set to pose a marker trial, the IMU body's sensor rotation in a diagnosis.
 #include <catch2/catch.hpp>

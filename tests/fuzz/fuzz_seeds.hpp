@@ -153,8 +153,8 @@ inline std::map<std::string, std::vector<Seed>> seed_corpus() {
   // The dispatch sees every trial format (FIFO bytes and record dumps are not trials).
   std::vector<Seed> all;
   for (const auto& [harness, seeds] : corpus) {
-    if (harness == "body_json" || harness == "osim" || harness == "icm42688p_fifo" ||
-        harness == "records") continue;
+    if (harness == "body_json" || harness == "osim" || harness == "icm42688p_fifo" || harness == "records")
+      continue;
     for (const Seed& s : seeds) all.push_back({harness + "_" + s.name, s.bytes});
   }
   corpus["trial_dispatch"] = all;

@@ -207,8 +207,7 @@ TEST_CASE("replay: the command line takes exactly one recording", "[replay][bad]
 // The spin-aware release detector (issue 21 item 2, the `release` helper's work) must pass
 // this; the plain free-fall detector cannot (|a| = 5 m/s² in flight here), hence
 //  until it is merged: then drop the tag.
-TEST_CASE("replay: an off-centre accelerometer (imu.position given) still finds the flight",
-          "[replay]") {
+TEST_CASE("replay: an off-centre accelerometer (imu.position given) still finds the flight", "[replay]") {
   ScratchDir dir;
   aloft::test::ThrowSpec spec;
   spec.imu_position_m = Eigen::Vector3d(0.035, 0.0, 0.01);

@@ -1,7 +1,7 @@
 // The shape of the built-in study's result (issues 4 and 9), in body axes: CP far above
 // GF, medians growing with the bound, axes-only near GF, as in the paper. Unlike the
 // paper, whose "both ±10" median sits 2.0 deg above its "moments ±10 %" one, aloft's
-// "both" is only a few hundredths above "moments" (README, the study): asserted as such.
+// "both" is only a few hundredths above "moments" (docs/study.md): asserted as such.
 #include <catch2/catch.hpp>
 
 #include "study/built_in_study.hpp"

@@ -1,7 +1,7 @@
 // Everything `aloft diagnose` knows about one unmodelled effect, in one place: a
 // descriptor per effect (effects/<name>.cpp), registered by one line in
 // effects/effect_list.def. The rest of diagnose asks the descriptor and never switches
-// on the effect, so adding an effect is: write its file, add its line (README,
+// on the effect, so adding an effect is: write its file, add its line (docs/diagnose.md,
 // "Adding an effect").
 //
 // Fill in every field; a test (tests/diagnose/test_effect_descriptor.cpp) checks that

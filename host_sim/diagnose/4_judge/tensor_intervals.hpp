@@ -1,6 +1,6 @@
 // The tensor report's intervals (tensor_report.hpp) from a judged analysis.
 //
-// How the intervals are made (README "Is my tensor right?" argues the choice):
+// How the intervals are made (docs/diagnose.md, "Is my tensor right?", argues the choice):
 // - The ratios come from the inertia_moments candidate, whose parameters are log moments,
 //   so a log ratio is linear in them and its error follows from theirs exactly.
 // - One flight: the fit's own covariance (noise taken from the residuals, cost/dof), widened

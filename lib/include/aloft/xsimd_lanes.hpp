@@ -3,7 +3,7 @@
 // (aloft/principal_dynamics.hpp, aloft/lane_angle.hpp) run on it unchanged; xsimd's own
 // select, abs and sqrt are found by argument-dependent lookup. Host only: the Cortex-M4F
 // has no SIMD floating point, and there the same kernels run on plain float.
-// Why xsimd: README, "Speed of the core".
+// Why xsimd: docs/accuracy-and-speed.md, "Speed of the core".
 #pragma once
 
 #include <xsimd/xsimd.hpp>

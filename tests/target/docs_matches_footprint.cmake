@@ -1,23 +1,35 @@
 # A document's footprint table states what footprint.json measured: each row's first
 # number in its "measured" cell ("7,500 B", "2,835") equals the sum of its keys.
-#   cmake -DFOOTPRINT=.../footprint.json -DREADME=.../README.md
-#         [-DSECTION=heading] [-DROWS=label=key+key;...] -P readme_matches_footprint.cmake
-# SECTION limits the search to the lines under that heading (up to the next one of the
-# same level); ROWS defaults to the README's cortex-m4f table.
+#   cmake -DFOOTPRINT=.../footprint.json -DDOC=.../docs/firmware.md
+#         [-DSECTION=heading] [-DROWS=label=key+key;...] -P docs_matches_footprint.cmake
+# SECTION limits the search to the lines under that heading (up to the next heading of
+# the same or a higher level); ROWS defaults to the cortex-m4f table's rows.
 if(NOT ROWS)
   set(ROWS "flash=text_bytes+data_bytes" "RAM=bss_bytes" "worst-case stack=stack_bytes"
            "instructions per onboard-check update=instructions_per_update")
 endif()
 file(READ ${FOOTPRINT} json)
-file(STRINGS ${README} lines)
+file(STRINGS ${DOC} lines)
 if(SECTION)
   string(REGEX MATCH "^#+" level "${SECTION}")
+  string(LENGTH "${level}" level)
   set(inside OFF)
   set(section_lines "")
+  set(in_code OFF)  # a "# comment" in a code block is not a heading
   foreach(line IN LISTS lines)
+    set(heading_level 99)
+    if(line MATCHES "^```")
+      if(in_code)
+        set(in_code OFF)
+      else()
+        set(in_code ON)
+      endif()
+    elseif(NOT in_code AND line MATCHES "^(#+) ")
+      string(LENGTH "${CMAKE_MATCH_1}" heading_level)
+    endif()
     if(line STREQUAL SECTION)
       set(inside ON)
-    elseif(inside AND line MATCHES "^${level} ")
+    elseif(inside AND heading_level LESS_EQUAL level)
       set(inside OFF)
     elseif(inside)
       list(APPEND section_lines "${line}")
@@ -46,7 +58,7 @@ foreach(row_spec IN LISTS ROWS)
   if(found STREQUAL "")
     string(APPEND failures "\n  no row '${label}'")
   elseif(NOT found EQUAL measured)
-    string(APPEND failures "\n  ${label}: ${README} says ${found}, footprint.json ${measured}")
+    string(APPEND failures "\n  ${label}: ${DOC} says ${found}, footprint.json ${measured}")
   endif()
   string(APPEND matched " ${label} ${measured};")
 endforeach()

@@ -1,0 +1,45 @@
+# README.md is at most 200 lines; every relative link [text](target) in README.md and
+# docs/*.md resolves to an existing file (anchors dropped; http(s) and mailto links are not
+# followed); the README's ```cpp block is EXAMPLE's text, verbatim.
+#   cmake -DSOURCE=repo -DEXAMPLE=.../readme_firmware_example.cpp -P check_docs.cmake
+cmake_minimum_required(VERSION 3.20)
+set(failures "")
+file(READ ${SOURCE}/README.md readme)
+string(REGEX MATCHALL "\n" newlines "${readme}")
+list(LENGTH newlines count)
+if(count GREATER 200)
+  string(APPEND failures "\n  README.md has ${count} lines (at most 200)")
+endif()
+
+file(GLOB pages ${SOURCE}/docs/*.md)
+set(links 0)
+foreach(page ${SOURCE}/README.md ${pages})
+  get_filename_component(dir ${page} DIRECTORY)
+  file(READ ${page} text)
+  # Brackets would group a CMake list's elements: they become words first.
+  string(REPLACE "[" "_OPEN_" text "${text}")
+  string(REPLACE "]" "_CLOSE_" text "${text}")
+  string(REGEX MATCHALL "_CLOSE_\\([^)#; ]+[^); ]*\\)" found "${text}")
+  foreach(link IN LISTS found)
+    string(REGEX REPLACE "^_CLOSE_\\(([^)#]*).*\\)$" "\\1" target "${link}")
+    if(target MATCHES "^(https?|mailto):")
+      continue()
+    endif()
+    math(EXPR links "${links} + 1")
+    if(NOT EXISTS ${dir}/${target})
+      file(RELATIVE_PATH name ${SOURCE} ${page})
+      string(APPEND failures "\n  ${name}: link to ${target}, which does not exist")
+    endif()
+  endforeach()
+endforeach()
+
+file(READ ${EXAMPLE} example)
+string(FIND "${readme}" "```cpp\n${example}```" at)
+if(at EQUAL -1)
+  string(APPEND failures "\n  README.md's ```cpp block is not ${EXAMPLE} verbatim")
+endif()
+
+if(failures)
+  message(FATAL_ERROR "README.md and docs/:${failures}")
+endif()
+message("README.md: ${count} lines; ${links} relative links in README.md and docs/ resolve")
