@@ -259,7 +259,8 @@ class ReleaseDetector {
     const Scalar e_j = residual(history, j, h, r);
     const Scalar e_next = residual(history, j + 1, h, r);
     if (!(e_next >= Scalar(0)) || !(e_j > e_next)) return history.t_us(j0);
-    const Scalar part = (e_j - mark) / (e_j - e_next);
+    Scalar part = (e_j - mark) / (e_j - e_next);
+    if (part > Scalar(1)) part = Scalar(1);  // j0 itself above the mark: no later than j + 1
     return history.t_us(j) + static_cast<std::uint64_t>(part * static_cast<Scalar>(history.dt_us(j + 1)));
   }
   static constexpr std::uint32_t step_window = 6;  // samples before j0 searched for the step's top
