@@ -157,9 +157,10 @@ class OnboardPipeline {
   void detect(std::uint32_t c) {
     if (check_) {
       std::uint32_t landing = 0;
-      if (detector_.find_landing(history_, c, half_span_, r_flight_, next_feed_, landing)) {
+      std::uint64_t landing_us = 0;
+      if (detector_.find_landing(history_, c, half_span_, r_flight_, next_feed_, landing, landing_us)) {
         feed_until(landing);
-        end_flight(true, history_.t_us(landing));
+        end_flight(true, landing_us);
         return;
       }
       // Held back a few samples, so a landing can still be dated back over them.
@@ -172,15 +173,19 @@ class OnboardPipeline {
                                 : have_estimate_             ? &r_estimate_
                                                              : nullptr;
     std::uint32_t release = 0;
-    if (!detector_.find_release(history_, c, half_span_, known, rearmed_at_us_, release, r_flight_)) return;
-    start_flight(release, known == nullptr);
+    std::uint64_t release_us = 0;
+    if (!detector_.find_release(history_, c, half_span_, known, rearmed_at_us_, release, release_us,
+                                r_flight_)) {
+      return;
+    }
+    start_flight(release, release_us, known == nullptr);
     feed_until(c + 1);
   }
 
-  void start_flight(std::uint32_t release, bool fit_r_in_flight) {
+  void start_flight(std::uint32_t release, std::uint64_t release_us, bool fit_r_in_flight) {
     check_.emplace(inertia_, check_settings_);
     current_ = FlightResult<Scalar>();
-    current_.release_us = history_.t_us(release);
+    current_.release_us = release_us;
     next_feed_ = release;
     release_index_ = release;
     fit_r_in_flight_ = fit_r_in_flight;

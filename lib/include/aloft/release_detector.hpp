@@ -32,6 +32,7 @@ struct ReleaseDetectorSettings {
   Scalar release_fraction = Scalar(0.5);     // release: first sample below this fraction of the limit
   Scalar level_margin_m_s2 = Scalar(0.2);    // and below twice the flight's mean residual plus this
   std::uint32_t fade_out_at_most_us = 3000;  // a fading hand force is extrapolated this far at most
+  Scalar step_fraction = Scalar(0.5);        // samples further apart: release at this fraction of the step
   std::uint16_t landing_samples = 3;         // consecutive samples that are not free: landing
   Scalar max_lever_arm_m = Scalar(0.15);     // |r| beyond this is not an IMU inside the body
   Scalar fit_rms_fraction = Scalar(0.5);     // a fitted r must leave its rms below this fraction of the limit
@@ -60,10 +61,13 @@ class ReleaseDetector {
   }
 
   // Evaluates sample c while waiting for release; r is the known lever arm or null.
-  // True when release is confirmed: `release` is its sample index, `r_used` the lever
-  // arm it was found with (fitted when r is null).
+  // True when release is confirmed: `release` is the index of its first free-flight
+  // sample, `release_us` its time (earlier than that sample's stamp when the samples are
+  // too far apart to resolve the hand's force fading out), `r_used` the lever arm it was
+  // found with (fitted when r is null).
   bool find_release(const History& history, std::uint32_t c, std::uint32_t h, const Vec3<Scalar>* r,
-                    std::uint64_t not_before_us, std::uint32_t& release, Vec3<Scalar>& r_used) {
+                    std::uint64_t not_before_us, std::uint32_t& release, std::uint64_t& release_us,
+                    Vec3<Scalar>& r_used) {
     BodyKinematics<Scalar> k;
     if (!history.kinematics(c, h, k) || !torque_free(k) ||
         (r != nullptr && centre_specific_force(k, *r) > limit(k, *r))) {
@@ -80,14 +84,19 @@ class ReleaseDetector {
     }
     if (!confirmed(history, start, c, h) || history.t_us(start) < not_before_us) return false;
     release = first_at_flight_level(history, start, c, h, r_used);
+    release_us = history.t_us(release);
+    if (release > 0 && history.dt_us(release) >= settings_.fade_out_at_most_us) {
+      release_us = crossing_before(history, release, h, r_used);
+    }
     return true;
   }
 
   // Evaluates sample c while airborne. True when landing is confirmed (`landing` is the
-  // index of its first sample).
+  // index of its first sample, `landing_us` its time: between that sample and the one
+  // before when the samples are far apart, see level_crossing).
   // `not_before`: the first sample that may still be dated the landing (not yet fed).
   bool find_landing(const History& history, std::uint32_t c, std::uint32_t h, const Vec3<Scalar>& r,
-                    std::uint32_t not_before, std::uint32_t& landing) {
+                    std::uint32_t not_before, std::uint32_t& landing, std::uint64_t& landing_us) {
     BodyKinematics<Scalar> k;
     bool evidence = false;
     if (history.kinematics(c, h, k)) {
@@ -112,7 +121,25 @@ class ReleaseDetector {
            residual_above(history, landing - 1, h, r, level)) {
       --landing;
     }
+    landing_us = history.t_us(landing);
+    if (landing > not_before && history.dt_us(landing) >= settings_.fade_out_at_most_us) {
+      landing_us = level_crossing(history, landing, h, r, level);
+    }
     return true;
+  }
+
+  // Samples too far apart to see the force build up: the landing lies between the last
+  // sample at flight level and the next. The residual, interpolated linearly between them,
+  // crosses the level too early on a rising, filtered edge and the next sample is up to an
+  // interval late: the landing is dated halfway between the two (measured on generated
+  // catches and impacts at 100 and 250 Hz, tests/host/test_release_detection.cpp).
+  std::uint64_t level_crossing(const History& history, std::uint32_t j, std::uint32_t h,
+                               const Vec3<Scalar>& r, Scalar level) const {
+    const Scalar before = residual(history, j - 1, h, r);
+    const Scalar after = residual(history, j, h, r);
+    if (!(before >= Scalar(0)) || !(after > level) || !(before < level)) return history.t_us(j);
+    const Scalar part = Scalar(0.5) + Scalar(0.5) * (level - before) / (after - before);
+    return history.t_us(j - 1) + static_cast<std::uint64_t>(part * static_cast<Scalar>(history.dt_us(j)));
   }
 
   // Samples from this index on may still turn out to be the landing (not to be fed yet).
@@ -156,9 +183,9 @@ class ReleaseDetector {
     return n >= settings_.confirm_samples && history.t_us(c) - history.t_us(start) >= settings_.confirm_us;
   }
 
-  // The first sample of [start, c] whose residual is down at the level of the stretch's
-  // later half (surely in flight): a hand force that fades out stays above it until it
-  // is gone, where a fixed fraction of the limit would be crossed while it still acts.
+  // The first sample of the trailing run of [start, c] whose residual is down at the level
+  // of the stretch's later half: a hand force that fades out stays above it until it is
+  // gone, where a fixed fraction of the limit would be crossed while it still acts.
   std::uint32_t first_at_flight_level(const History& history, std::uint32_t start, std::uint32_t c,
                                       std::uint32_t h, const Vec3<Scalar>& r) {
     Scalar sum = Scalar(0);
@@ -170,11 +197,15 @@ class ReleaseDetector {
       ++n;
     }
     flight_level_ = n > 0 ? sum / static_cast<Scalar>(n) : Scalar(0);
-    const Scalar level = Scalar(2) * flight_level_ + settings_.level_margin_m_s2;
-    for (std::uint32_t j = start; j < c; ++j) {
-      if (!residual_above(history, j, h, r, level)) return after_fade_out(history, j, c, h, r, level);
-    }
-    return c;
+    // The later half can still hold the end of a fading force (the stretch is only a few
+    // milliseconds long): its level never counts above the floor.
+    Scalar level = Scalar(2) * flight_level_ + settings_.level_margin_m_s2;
+    if (level > settings_.free_flight.accel_floor_m_s2) level = settings_.free_flight.accel_floor_m_s2;
+    // From the newest sample back: the release follows the last sample still above that
+    // level, so a force that dips under it while it fades is not taken for the release.
+    std::uint32_t j0 = c;
+    while (j0 > start && !residual_above(history, j0 - 1, h, r, level)) --j0;
+    return after_fade_out(history, j0, c, h, r, level);
   }
 
   // A contact force fades to zero at a finite rate, and its last part hides in the noise:
@@ -201,6 +232,38 @@ class ReleaseDetector {
     while (j < c && history.t_us(j) < zero_us) ++j;
     return j;
   }
+
+  // Samples too far apart to see a hand's force fade (and an anti-alias filter that smears
+  // the step over one or two of them): the release is where the residual, interpolated
+  // between samples, crossed `step_fraction` of its value at the top of the step before
+  // j0. The filter's delay keeps that crossing after the true release unless the force
+  // faded over several sample intervals.
+  std::uint64_t crossing_before(const History& history, std::uint32_t j0, std::uint32_t h,
+                                const Vec3<Scalar>& r) const {
+    // The top: the largest residual of the few samples before j0 (flight noise after the
+    // step can leave j0 a sample or two late).
+    std::uint32_t top = j0;
+    Scalar e_top = Scalar(0);
+    for (std::uint32_t j = j0; j > 0 && j + step_window > j0;) {
+      --j;
+      const Scalar e = residual(history, j, h, r);
+      if (e > e_top) {
+        top = j;
+        e_top = e;
+      }
+    }
+    if (top == j0) return history.t_us(j0);
+    const Scalar mark = settings_.step_fraction * e_top;
+    std::uint32_t j = j0 - 1;
+    while (j > top && residual(history, j, h, r) <= mark) --j;
+    const Scalar e_j = residual(history, j, h, r);
+    const Scalar e_next = residual(history, j + 1, h, r);
+    if (!(e_next >= Scalar(0)) || !(e_j > e_next)) return history.t_us(j0);
+    Scalar part = (e_j - mark) / (e_j - e_next);
+    if (part > Scalar(1)) part = Scalar(1);  // j0 itself above the mark: no later than j + 1
+    return history.t_us(j) + static_cast<std::uint64_t>(part * static_cast<Scalar>(history.dt_us(j + 1)));
+  }
+  static constexpr std::uint32_t step_window = 6;  // samples before j0 searched for the step's top
 
   // |a - K r| at sample j, or -1 when its kinematics are not available.
   Scalar residual(const History& history, std::uint32_t j, std::uint32_t h, const Vec3<Scalar>& r) const {
