@@ -67,17 +67,20 @@ void write_samples(std::FILE* source, std::FILE* fifo, const aloft::host::Record
   for (std::size_t k = 0; k < recording.samples.size(); ++k) {
     const aloft::ImuSample<float>& s = recording.samples[k];
     if (std::fabs(static_cast<double>(s.t_us) - static_cast<double>(k) * kPeriodUs) > 0.5) {
-      throw std::runtime_error("sample " + std::to_string(k + 1) + " is not at 1 kHz: the fake chip plays a steady rate");
+      throw std::runtime_error("sample " + std::to_string(k + 1) +
+                               " is not at 1 kHz: the fake chip plays a steady rate");
     }
     const aloft_test::ChipSample c = chip_sample(s);
-    std::fprintf(source, "    {{%d, %d, %d}, {%d, %d, %d}, 0},\n", c.accel[0], c.accel[1], c.accel[2], c.gyro[0],
-                 c.gyro[1], c.gyro[2]);
+    std::fprintf(source, "    {{%d, %d, %d}, {%d, %d, %d}, 0},\n", c.accel[0], c.accel[1], c.accel[2],
+                 c.gyro[0], c.gyro[1], c.gyro[2]);
     std::uint8_t packet[aloft_test::kEncoderPacket3Bytes];
     const auto stamp = static_cast<std::uint16_t>((kStampStart + (k + 1) * 1000u) & 0xFFFFu);
     aloft_test::encode_packet3(c, stamp, true, packet);
-    if (std::fwrite(packet, 1, sizeof packet, fifo) != sizeof packet) throw std::runtime_error("cannot write");
+    if (std::fwrite(packet, 1, sizeof packet, fifo) != sizeof packet)
+      throw std::runtime_error("cannot write");
   }
-  std::fprintf(source, "};\nconst std::uint32_t replay_chip_sample_count = %zuu;\n", recording.samples.size());
+  std::fprintf(source, "};\nconst std::uint32_t replay_chip_sample_count = %zuu;\n",
+               recording.samples.size());
 }
 
 }  // namespace
