@@ -18,7 +18,11 @@
 #include "imu_source.hpp"
 
 #if defined(ALOFT_STM32F405_FAKE_BUS)
+#include "aloft/flight_record_from_result.hpp"
+#include "aloft/record_ring.hpp"
+#include "fake_flash.hpp"
 #include "fake_imu_bus.hpp"  // provides fake_imu_bus(): see CMakeLists.txt
+#include "record_area_dump.hpp"
 #include "replay_throw.hpp"
 #else
 #include "spi1_imu_bus.hpp"
@@ -34,15 +38,40 @@ constexpr const char* bus_name = "the fake bus";
 aloft::ImuBus board_imu_bus() { return aloft_stm32f405::fake_imu_bus(); }
 constexpr int exit_stream_ended = 0;
 
-// The replay checks the recorded throw with the body it was thrown with, as the host's
-// `aloft replay --body` does (replay_throw.hpp).
-aloft::Status make_inertia(aloft::InertiaTensor<float>& inertia) {
-  aloft::Mat3<float> tensor;
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) tensor(r, c) = aloft_stm32f405::replay_inertia_kg_m2[r][c];
+// Flight records: QEMU does not model the flash controller, so the replay image keeps its
+// record ring on the RAM fake (tests/core/fake_flash.hpp, three 512-byte blocks) and
+// writes the record area out by semihosting at the end (ALOFT_STM32F405_RECORDS_PATH,
+// given by the test); the host reads it back with `aloft records`' reader.
+aloft::testing::FakeFlash<512, 3> record_flash;
+aloft::RecordRing record_ring(record_flash.device());
+std::uint32_t record_tensor_hash = 0, record_settings_hash = 0;
+
+// Stores the flight's record and says which sequence number it got.
+void store_record(const aloft::FlightResult<float>& f) {
+  ReportWriter out;
+  aloft::FlightRecord record = aloft::make_flight_record(f, record_tensor_hash, record_settings_hash);
+  const aloft::Status stored = record_ring.append(record);
+  if (stored != aloft::Status::ok) {
+    out.text("record not stored: ").text(aloft::describe(stored)).line();
+    return;
   }
-  return aloft::InertiaTensor<float>::make_from_tensor(tensor, inertia);
+  out.text("record_sequence ").integer(record.sequence).line();
 }
+
+aloft::Status start_records(const aloft::Mat3<float>& tensor,
+                            const aloft::OnboardPipelineSettings<float>& s) {
+  record_tensor_hash = aloft::tensor_hash(tensor);
+  record_settings_hash = aloft::settings_hash(s, aloft_stm32f405::live_simulations);
+  return record_ring.mount();
+}
+
+void write_records() {
+  ReportWriter out;
+  const aloft::Status written =
+      aloft::port::write_record_area(record_flash.device(), ALOFT_STM32F405_RECORDS_PATH);
+  out.text("record area written: ").text(aloft::describe(written)).line();
+}
+
 aloft::OnboardPipelineSettings<float> pipeline_settings() {
   namespace t = aloft_stm32f405;
   aloft::OnboardPipelineSettings<float> settings;
@@ -53,6 +82,18 @@ aloft::OnboardPipelineSettings<float> pipeline_settings() {
   settings.imu_position_m = aloft::Vec3<float>(r[0], r[1], r[2]);
   return settings;
 }
+
+// The replay checks the recorded throw with the body it was thrown with, as the host's
+// `aloft replay --body` does (replay_throw.hpp).
+aloft::Status make_inertia(aloft::InertiaTensor<float>& inertia) {
+  aloft::Mat3<float> tensor;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) tensor(r, c) = aloft_stm32f405::replay_inertia_kg_m2[r][c];
+  }
+  const aloft::Status made = aloft::InertiaTensor<float>::make_from_tensor(tensor, inertia);
+  if (made != aloft::Status::ok) return made;
+  return start_records(tensor, pipeline_settings());
+}
 #else
 constexpr const char* bus_name = "SPI1";
 aloft::ImuBus board_imu_bus() {
@@ -60,6 +101,8 @@ aloft::ImuBus board_imu_bus() {
   return aloft::port::stm32f405::spi1_imu_bus();
 }
 constexpr int exit_stream_ended = 5;
+void store_record(const aloft::FlightResult<float>&) {}
+void write_records() {}
 using aloft_stm32f405::make_inertia;
 using aloft_stm32f405::pipeline_settings;
 #endif
@@ -81,7 +124,10 @@ aloft::FlightResult<float> flight;
 // times in the driver's base: µs after the first sample.
 void report_finished_flights() {
   ReportWriter out;
-  while (pipeline->take_finished_flight(flight)) aloft_replay_example::write_flight_lines(out, flight, 0);
+  while (pipeline->take_finished_flight(flight)) {
+    aloft_replay_example::write_flight_lines(out, flight, 0);
+    store_record(flight);
+  }
 }
 
 // Runs the pipeline until the stream ends; the exit status.
@@ -108,6 +154,7 @@ int run(const aloft::ImuBus& bus) {
   report_finished_flights();
   out.text("stream_samples ").integer(pipeline->stream().samples).line();
   out.text("stream_gaps ").integer(pipeline->stream().gaps).line();
+  write_records();
   out.text("stream ended: no sample for ").integer(static_cast<std::int64_t>(stream_end_after_us / 1000u));
   out.text(" ms after ").integer(pipeline->stream().samples).text(" samples").line();
   return exit_stream_ended;
