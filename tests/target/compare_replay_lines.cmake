@@ -2,9 +2,18 @@
 # same "key value" lines per flight (port/cortex_m/replay_example/flight_lines.hpp), and
 # every one must be equal, float results to the bit. At least one flight, with
 # comparisons, must be there: an empty answer checks nothing.
-#   cmake -DFIRMWARE_COMMAND=<list> -DHOST_COMMAND=<list> -P compare_replay_lines.cmake
+#   cmake -DFIRMWARE_COMMAND=<list> -DHOST_COMMAND=<list> [-DKEYS=<list>] [-DREMOVE_FIRST=FILE]
+#         -P compare_replay_lines.cmake
+# KEYS replaces the keys compared; REMOVE_FIRST is deleted before the firmware runs (a file
+# it writes, that the host command then reads).
 set(keys flight release_s landing_s samples gaps imu_position_from comparisons rms_da_deg rms_da_rad_bits
          rms_rel_err rms_rel_err_bits stream_samples stream_gaps)
+if(DEFINED KEYS)
+  set(keys ${KEYS})
+endif()
+if(DEFINED REMOVE_FIRST)
+  file(REMOVE ${REMOVE_FIRST})
+endif()
 list(JOIN keys "|" key_pattern)
 
 function(run_and_read label command result)

@@ -1,18 +1,54 @@
-// The stand-in for the ICM-42688-P driver: imu_source.hpp (TODO there).
+// The ICM-42688-P driver behind imu_source.hpp; its state is static here, so its RAM shows
+// in .bss (no heap).
 #include "imu_source.hpp"
+
+#include <optional>
 
 namespace aloft_stm32f405 {
 
-aloft::Status imu_bring_up(const aloft::ImuBus& bus, std::uint8_t& who_am_i) {
-  who_am_i = 0;
-  const aloft::Status read = bus.read(bus.context, who_am_i_register, &who_am_i, 1);
-  if (read != aloft::Status::ok) return read;
-  return who_am_i == who_am_i_expected ? aloft::Status::ok : aloft::Status::sensor_not_found;
+namespace {
+
+using Driver = aloft::icm42688p::Icm42688pDriver<float>;
+
+std::optional<Driver> driver;
+
+// Where the driver's sink writes during one poll.
+struct Batch {
+  aloft::ImuSample<float>* out;
+  std::uint16_t capacity;
+  std::uint16_t count;
+};
+
+void append(void* context, const aloft::ImuSample<float>& sample) {
+  Batch& batch = *static_cast<Batch*>(context);
+  if (batch.count < batch.capacity) batch.out[batch.count++] = sample;
 }
 
-aloft::Status imu_poll(const aloft::ImuBus&, aloft::ImuSample<float>*, std::uint16_t, std::uint16_t& count) {
-  count = 0;
-  return aloft::Status::ok;
+}  // namespace
+
+aloft::Status imu_bring_up(const aloft::ImuBus& bus, std::uint8_t& who_am_i) {
+  driver.emplace(bus, aloft::icm42688p::DriverSettings());
+  const aloft::Status begun = driver->begin();
+  who_am_i = who_am_i_expected;
+  // After the soft reset bank 0 is selected: WHO_AM_I is read again for the report.
+  if (begun == aloft::Status::sensor_not_found) {
+    who_am_i = 0;
+    const aloft::Status read = bus.read(bus.context, who_am_i_register, &who_am_i, 1);
+    if (read != aloft::Status::ok) return read;
+  }
+  return begun;
 }
+
+aloft::Status imu_poll(aloft::ImuSample<float>* out, std::uint16_t capacity, std::uint16_t& count) {
+  Batch batch{out, capacity, 0};
+  aloft::icm42688p::SampleSink<float> sink;
+  sink.context = &batch;
+  sink.push = append;
+  const aloft::Status polled = driver->poll(sink);
+  count = batch.count;
+  return polled;
+}
+
+const aloft::icm42688p::DriverCounters& imu_counters() { return driver->counters(); }
 
 }  // namespace aloft_stm32f405

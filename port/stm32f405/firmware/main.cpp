@@ -13,11 +13,17 @@
 
 #include "aloft_port/port.hpp"
 #include "aloft_port/report_writer.hpp"
+#include "flight_lines.hpp"
 #include "flight_settings.hpp"
 #include "imu_source.hpp"
 
 #if defined(ALOFT_STM32F405_FAKE_BUS)
+#include "aloft/flight_record_from_result.hpp"
+#include "aloft/record_ring.hpp"
+#include "fake_flash.hpp"
 #include "fake_imu_bus.hpp"  // provides fake_imu_bus(): see CMakeLists.txt
+#include "record_area_dump.hpp"
+#include "replay_throw.hpp"
 #else
 #include "spi1_imu_bus.hpp"
 #endif
@@ -31,6 +37,63 @@ using aloft_stm32f405::Pipeline;
 constexpr const char* bus_name = "the fake bus";
 aloft::ImuBus board_imu_bus() { return aloft_stm32f405::fake_imu_bus(); }
 constexpr int exit_stream_ended = 0;
+
+// Flight records: QEMU does not model the flash controller, so the replay image keeps its
+// record ring on the RAM fake (tests/core/fake_flash.hpp, three 512-byte blocks) and
+// writes the record area out by semihosting at the end (ALOFT_STM32F405_RECORDS_PATH,
+// given by the test); the host reads it back with `aloft records`' reader.
+aloft::testing::FakeFlash<512, 3> record_flash;
+aloft::RecordRing record_ring(record_flash.device());
+std::uint32_t record_tensor_hash = 0, record_settings_hash = 0;
+
+// Stores the flight's record and says which sequence number it got.
+void store_record(const aloft::FlightResult<float>& f) {
+  ReportWriter out;
+  aloft::FlightRecord record = aloft::make_flight_record(f, record_tensor_hash, record_settings_hash);
+  const aloft::Status stored = record_ring.append(record);
+  if (stored != aloft::Status::ok) {
+    out.text("record not stored: ").text(aloft::describe(stored)).line();
+    return;
+  }
+  out.text("record_sequence ").integer(record.sequence).line();
+}
+
+aloft::Status start_records(const aloft::Mat3<float>& tensor,
+                            const aloft::OnboardPipelineSettings<float>& s) {
+  record_tensor_hash = aloft::tensor_hash(tensor);
+  record_settings_hash = aloft::settings_hash(s, aloft_stm32f405::live_simulations);
+  return record_ring.mount();
+}
+
+void write_records() {
+  ReportWriter out;
+  const aloft::Status written =
+      aloft::port::write_record_area(record_flash.device(), ALOFT_STM32F405_RECORDS_PATH);
+  out.text("record area written: ").text(aloft::describe(written)).line();
+}
+
+aloft::OnboardPipelineSettings<float> pipeline_settings() {
+  namespace t = aloft_stm32f405;
+  aloft::OnboardPipelineSettings<float> settings;
+  const float* q = t::replay_sensor_to_body_wxyz;
+  settings.check.sensor_to_body = aloft::Quat<float>(q[0], q[1], q[2], q[3]);
+  settings.imu_position_known = t::replay_imu_position_known;
+  const float* r = t::replay_imu_position_m;
+  settings.imu_position_m = aloft::Vec3<float>(r[0], r[1], r[2]);
+  return settings;
+}
+
+// The replay checks the recorded throw with the body it was thrown with, as the host's
+// `aloft replay --body` does (replay_throw.hpp).
+aloft::Status make_inertia(aloft::InertiaTensor<float>& inertia) {
+  aloft::Mat3<float> tensor;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) tensor(r, c) = aloft_stm32f405::replay_inertia_kg_m2[r][c];
+  }
+  const aloft::Status made = aloft::InertiaTensor<float>::make_from_tensor(tensor, inertia);
+  if (made != aloft::Status::ok) return made;
+  return start_records(tensor, pipeline_settings());
+}
 #else
 constexpr const char* bus_name = "SPI1";
 aloft::ImuBus board_imu_bus() {
@@ -38,6 +101,10 @@ aloft::ImuBus board_imu_bus() {
   return aloft::port::stm32f405::spi1_imu_bus();
 }
 constexpr int exit_stream_ended = 5;
+void store_record(const aloft::FlightResult<float>&) {}
+void write_records() {}
+using aloft_stm32f405::make_inertia;
+using aloft_stm32f405::pipeline_settings;
 #endif
 constexpr int exit_setup_failed = 1;
 constexpr int exit_sensor_not_found = 3;
@@ -45,62 +112,49 @@ constexpr int exit_bus_failed = 4;
 
 // The stream has ended when no sample came for this long (MCU clock).
 constexpr std::uint64_t stream_end_after_us = 100000;
-constexpr std::uint16_t batch_capacity = 16;
+constexpr std::uint16_t batch_capacity = aloft::icm42688p::Icm42688pDriver<float>::kBurstPackets;
 
 // Static storage, so the pipeline's whole memory shows in .bss; emplaced once the tensor
 // is validated (no heap).
 std::optional<Pipeline> pipeline;
 aloft::ImuSample<float> batch[batch_capacity];
+aloft::FlightResult<float> flight;
 
-// Whole microseconds as seconds with six decimals.
-void seconds(ReportWriter& out, std::uint64_t us) {
-  out.integer(static_cast<std::int64_t>(us / 1000000u)).text(".");
-  char digits[7];
-  std::uint32_t fraction = static_cast<std::uint32_t>(us % 1000000u);
-  for (int i = 5; i >= 0; --i, fraction /= 10u) digits[i] = static_cast<char>('0' + fraction % 10u);
-  digits[6] = '\0';
-  out.text(digits);
-}
-
-void report_flight(const aloft::FlightResult<float>& flight, std::uint64_t t0_us) {
-  const float rad_to_deg = 57.2957795f;
+// Each finished flight, in the lines the host's replay prints too (flight_lines.hpp);
+// times in the driver's base: µs after the first sample.
+void report_finished_flights() {
   ReportWriter out;
-  out.text("flight ").integer(flight.flight_number).text(": release_s ");
-  seconds(out, flight.release_us - t0_us);
-  out.text(" landing_s ");
-  if (flight.landed) {
-    seconds(out, flight.landing_us - t0_us);
-  } else {
-    out.text("null");
+  while (pipeline->take_finished_flight(flight)) {
+    aloft_replay_example::write_flight_lines(out, flight, 0);
+    store_record(flight);
   }
-  out.text(" samples ").integer(flight.samples).text(" gaps ").integer(flight.gaps);
-  out.text(" rms_da_deg ").fixed(flight.overall.rms_da() * rad_to_deg, 6);
-  out.text(" rms_rel_err ").fixed(flight.overall.rms_relative_error(), 6).line();
 }
 
 // Runs the pipeline until the stream ends; the exit status.
 int run(const aloft::ImuBus& bus) {
   ReportWriter out;
-  std::uint64_t t0_us = 0;
   std::uint64_t last_sample_at_us = bus.now_us(bus.context);
-  aloft::FlightResult<float> flight;
   while (bus.now_us(bus.context) - last_sample_at_us < stream_end_after_us) {
     std::uint16_t count = 0;
-    const aloft::Status polled = aloft_stm32f405::imu_poll(bus, batch, batch_capacity, count);
-    if (polled != aloft::Status::ok) {
+    const aloft::Status polled = aloft_stm32f405::imu_poll(batch, batch_capacity, count);
+    if (polled == aloft::Status::register_not_kept) {
+      out.text("ICM-42688-P on ").text(bus_name).text(": a register lost its setting; rewritten").line();
+    } else if (polled != aloft::Status::ok) {
       out.text("ICM-42688-P on ").text(bus_name).text(": ").text(aloft::describe(polled)).line();
       return exit_bus_failed;
     }
     if (count > 0) last_sample_at_us = bus.now_us(bus.context);
     for (std::uint16_t i = 0; i < count; ++i) {
-      if (pipeline->stream().samples == 0) t0_us = batch[i].t_us;
       const aloft::Status pushed = pipeline->push(batch[i]);
       if (pushed != aloft::Status::ok) out.text("sample dropped: ").text(aloft::describe(pushed)).line();
-      if (pipeline->take_finished_flight(flight)) report_flight(flight, t0_us);
+      report_finished_flights();
     }
   }
   pipeline->finish();
-  if (pipeline->take_finished_flight(flight)) report_flight(flight, t0_us);
+  report_finished_flights();
+  out.text("stream_samples ").integer(pipeline->stream().samples).line();
+  out.text("stream_gaps ").integer(pipeline->stream().gaps).line();
+  write_records();
   out.text("stream ended: no sample for ").integer(static_cast<std::int64_t>(stream_end_after_us / 1000u));
   out.text(" ms after ").integer(pipeline->stream().samples).text(" samples").line();
   return exit_stream_ended;
@@ -124,12 +178,12 @@ int main() {
     return exit_bus_failed;
   }
   aloft::InertiaTensor<float> inertia;
-  const aloft::Status made = aloft_stm32f405::make_inertia(inertia);
+  const aloft::Status made = make_inertia(inertia);
   if (made != aloft::Status::ok) {
     out.text("inertia tensor rejected: ").text(aloft::describe(made)).line();
     return exit_setup_failed;
   }
-  pipeline.emplace(inertia, aloft_stm32f405::pipeline_settings());
+  pipeline.emplace(inertia, pipeline_settings());
   out.text("ICM-42688-P found on ").text(bus_name).text("; onboard pipeline running, K = ");
   out.integer(aloft_stm32f405::live_simulations).line();
   return run(bus);

@@ -12,45 +12,28 @@
 #include "common/body_file.hpp"
 #include "replay/imu_csv_recording.hpp"
 #include "replay/replay_run.hpp"
+#include "settings_source.hpp"
 
 namespace {
-
-std::string literal(float v) {
-  char text[40];
-  std::snprintf(text, sizeof(text), "%.9g", static_cast<double>(v));
-  std::string s = text;
-  if (s.find_first_of(".e") == std::string::npos) s += ".0";
-  return s + "f";
-}
 
 void write_samples(std::FILE* out, const aloft::host::Recording& recording) {
   std::fprintf(out, "const StoredSample stored_samples[] = {\n");
   for (const aloft::ImuSample<float>& s : recording.samples) {
     if (s.t_us > 0xffffffffu) throw std::runtime_error("recording longer than 4294 s");
     std::fprintf(out, "    {%" PRIu64 "u, {%s, %s, %s}, {%s, %s, %s}, %uu},\n", s.t_us,
-                 literal(s.gyro_rad_s.x()).c_str(), literal(s.gyro_rad_s.y()).c_str(),
-                 literal(s.gyro_rad_s.z()).c_str(), literal(s.accel_m_s2.x()).c_str(),
-                 literal(s.accel_m_s2.y()).c_str(), literal(s.accel_m_s2.z()).c_str(), unsigned(s.flags));
+                 aloft_replay_example::float_literal(s.gyro_rad_s.x()).c_str(),
+                 aloft_replay_example::float_literal(s.gyro_rad_s.y()).c_str(),
+                 aloft_replay_example::float_literal(s.gyro_rad_s.z()).c_str(),
+                 aloft_replay_example::float_literal(s.accel_m_s2.x()).c_str(),
+                 aloft_replay_example::float_literal(s.accel_m_s2.y()).c_str(),
+                 aloft_replay_example::float_literal(s.accel_m_s2.z()).c_str(), unsigned(s.flags));
   }
   std::fprintf(out, "};\nconst unsigned stored_sample_count = %zuu;\n", recording.samples.size());
 }
 
 void write_settings(std::FILE* out, const aloft::host::ReplaySettings& settings, std::int64_t t0_us) {
   std::fprintf(out, "const std::int64_t stored_t0_us = %" PRId64 ";\n", t0_us);
-  std::fprintf(out, "const float stored_inertia_kg_m2[3][3] = {\n");
-  for (int r = 0; r < 3; ++r) {
-    std::fprintf(out, "    {%s, %s, %s},\n", literal(settings.tensor_kg_m2(r, 0)).c_str(),
-                 literal(settings.tensor_kg_m2(r, 1)).c_str(), literal(settings.tensor_kg_m2(r, 2)).c_str());
-  }
-  const aloft::Quat<float>& q = settings.sensor_to_body;
-  std::fprintf(out, "};\nconst float stored_sensor_to_body_wxyz[4] = {%s, %s, %s, %s};\n",
-               literal(q.w()).c_str(), literal(q.x()).c_str(), literal(q.y()).c_str(),
-               literal(q.z()).c_str());
-  const aloft::Vec3<float> r = settings.imu_position_m.value_or(aloft::Vec3<float>::Zero());
-  std::fprintf(out, "const bool stored_imu_position_known = %s;\n",
-               settings.imu_position_m ? "true" : "false");
-  std::fprintf(out, "const float stored_imu_position_m[3] = {%s, %s, %s};\n", literal(r.x()).c_str(),
-               literal(r.y()).c_str(), literal(r.z()).c_str());
+  aloft_replay_example::write_settings_source(out, settings, "stored");
 }
 
 }  // namespace
