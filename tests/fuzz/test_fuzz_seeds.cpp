@@ -18,7 +18,7 @@
 TEST_CASE("every fuzz seed is read by its reader", "[fuzz][seeds]") {
   aloft::test::ScratchDir dir;
   const auto corpus = aloft::fuzz::seed_corpus();
-  REQUIRE(corpus.size() == 10);
+  REQUIRE(corpus.size() == 11);
   for (const auto& [harness, seeds] : corpus) {
     REQUIRE_FALSE(seeds.empty());
     for (const auto& seed : seeds) {
