@@ -26,6 +26,7 @@
 #include "aloft/imu_sample.hpp"
 #include "aloft/onboard_check.hpp"
 #include "aloft/release_detector.hpp"
+#include "aloft/whole_microseconds.hpp"
 
 namespace aloft {
 
@@ -141,12 +142,12 @@ class OnboardPipeline {
 
   bool stamps_far_apart(std::uint64_t dt_us) const {
     return interval_us_ > Scalar(0) &&
-           static_cast<Scalar>(dt_us) > settings_.gap_interval_factor * interval_us_;
+           scalar_of_us<Scalar>(dt_us) > settings_.gap_interval_factor * interval_us_;
   }
 
   // Running sample interval (µs) and the half span h of the w_dot difference in samples.
   void track_interval(std::uint64_t dt_us) {
-    const Scalar dt = static_cast<Scalar>(dt_us);
+    const Scalar dt = scalar_of_us<Scalar>(dt_us);
     interval_us_ = interval_us_ > Scalar(0) ? interval_us_ + (dt - interval_us_) / Scalar(16) : dt;
     const Scalar span = static_cast<Scalar>(settings_.release.derivative_half_span_us) / interval_us_;
     half_span_ = span < Scalar(1.5) ? 1u

@@ -21,6 +21,7 @@
 
 #include "aloft/lever_arm_estimate.hpp"
 #include "aloft/sample_history.hpp"
+#include "aloft/whole_microseconds.hpp"
 
 namespace aloft {
 
@@ -139,7 +140,7 @@ class ReleaseDetector {
     const Scalar after = residual(history, j, h, r);
     if (!(before >= Scalar(0)) || !(after > level) || !(before < level)) return history.t_us(j);
     const Scalar part = Scalar(0.5) + Scalar(0.5) * (level - before) / (after - before);
-    return history.t_us(j - 1) + static_cast<std::uint64_t>(part * static_cast<Scalar>(history.dt_us(j)));
+    return history.t_us(j - 1) + whole_us(part * static_cast<Scalar>(history.dt_us(j)));
   }
 
   // Samples from this index on may still turn out to be the landing (not to be fed yet).
@@ -223,11 +224,11 @@ class ReleaseDetector {
       if (e1 < Scalar(0) || e1 > Scalar(2) * level) break;
     }
     if (!(e1 > Scalar(2) * level) || !(e1 > e0)) return j0;
-    const Scalar span_us = static_cast<Scalar>(history.t_us(j0) - history.t_us(j1));
+    const Scalar span_us = scalar_of_us<Scalar>(history.t_us(j0) - history.t_us(j1));
     Scalar to_zero_us = span_us * e0 / (e1 - e0);
     const Scalar cap_us = static_cast<Scalar>(settings_.fade_out_at_most_us);
     if (to_zero_us > cap_us) to_zero_us = cap_us;
-    const std::uint64_t zero_us = history.t_us(j0) + static_cast<std::uint64_t>(to_zero_us);
+    const std::uint64_t zero_us = history.t_us(j0) + whole_us(to_zero_us);
     std::uint32_t j = j0;
     while (j < c && history.t_us(j) < zero_us) ++j;
     return j;
@@ -261,7 +262,7 @@ class ReleaseDetector {
     if (!(e_next >= Scalar(0)) || !(e_j > e_next)) return history.t_us(j0);
     Scalar part = (e_j - mark) / (e_j - e_next);
     if (part > Scalar(1)) part = Scalar(1);  // j0 itself above the mark: no later than j + 1
-    return history.t_us(j) + static_cast<std::uint64_t>(part * static_cast<Scalar>(history.dt_us(j + 1)));
+    return history.t_us(j) + whole_us(part * static_cast<Scalar>(history.dt_us(j + 1)));
   }
   static constexpr std::uint32_t step_window = 6;  // samples before j0 searched for the step's top
 

@@ -133,7 +133,8 @@ void report_finished_flights() {
 void push_sample(void*, const aloft::ImuSample<float>& sample) {
   ++samples_this_poll;
   const aloft::Status pushed = pipeline->push(sample);
-  if (pushed != aloft::Status::ok) ReportWriter().text("sample dropped: ").text(aloft::describe(pushed)).line();
+  if (pushed != aloft::Status::ok)
+    ReportWriter().text("sample dropped: ").text(aloft::describe(pushed)).line();
   report_finished_flights();
 }
 
