@@ -9,6 +9,7 @@
 
 #include <cstdint>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/free_flight_residual.hpp"
 
 namespace aloft {
@@ -23,7 +24,7 @@ class LeverArmFit {
     ata_ += k.a.squaredNorm();
     ++count_;
   }
-  void merge(const LeverArmFit& other) {
+  ALOFT_COLD void merge(const LeverArmFit& other) {
     ktk_ += other.ktk_;
     kta_ += other.kta_;
     ata_ += other.ata_;
@@ -40,7 +41,7 @@ class LeverArmFit {
   }
 
   // Root mean square of |a - K r| over the samples (m/s²).
-  Scalar rms_residual(const Vec3<Scalar>& r) const {
+  ALOFT_COLD Scalar rms_residual(const Vec3<Scalar>& r) const {
     if (count_ == 0) return Scalar(0);
     const Scalar sse = ata_ - Scalar(2) * r.dot(kta_) + r.dot(ktk_ * r);
     return std::sqrt((sse > Scalar(0) ? sse : Scalar(0)) / static_cast<Scalar>(count_));

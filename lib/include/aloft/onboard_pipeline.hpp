@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/imu_sample.hpp"
 #include "aloft/onboard_check.hpp"
 #include "aloft/release_detector.hpp"
@@ -110,7 +111,7 @@ class OnboardPipeline {
   }
 
   // The recording ended: an open flight ends unlanded.
-  void finish() {
+  ALOFT_COLD void finish() {
     if (!check_) return;
     feed_until(detector_.pending_from(history_.count() - 1));
     end_flight(false, last_t_us_);
@@ -183,7 +184,7 @@ class OnboardPipeline {
     feed_until(c + 1);
   }
 
-  void start_flight(std::uint32_t release, std::uint64_t release_us, bool fit_r_in_flight) {
+  ALOFT_COLD void start_flight(std::uint32_t release, std::uint64_t release_us, bool fit_r_in_flight) {
     check_.emplace(inertia_, check_settings_);
     current_ = FlightResult<Scalar>();
     current_.release_us = release_us;
@@ -233,12 +234,12 @@ class OnboardPipeline {
   }
 
   // The simulations alive before a long gap cannot be carried across it.
-  void restart_check() {
+  ALOFT_COLD void restart_check() {
     current_.overall.merge(check_->overall());
     check_.emplace(inertia_, check_settings_);
   }
 
-  void end_flight(bool landed, std::uint64_t at_us) {
+  ALOFT_COLD void end_flight(bool landed, std::uint64_t at_us) {
     current_.overall.merge(check_->overall());
     check_.reset();
     detector_.reset();
@@ -255,7 +256,7 @@ class OnboardPipeline {
     finished_ = true;
   }
 
-  void report_lever_arm() {
+  ALOFT_COLD void report_lever_arm() {
     if (settings_.imu_position_known) {
       current_.imu_position_m = settings_.imu_position_m;
       current_.lever_arm_fit_rms_m_s2 = flight_fit_.rms_residual(settings_.imu_position_m);

@@ -19,6 +19,7 @@
 
 #include <cstdint>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/lever_arm_estimate.hpp"
 #include "aloft/sample_history.hpp"
 #include "aloft/whole_microseconds.hpp"
@@ -134,7 +135,7 @@ class ReleaseDetector {
   // crosses the level too early on a rising, filtered edge and the next sample is up to an
   // interval late: the landing is dated halfway between the two (measured on generated
   // catches and impacts at 100 and 250 Hz, tests/host/test_release_detection.cpp).
-  std::uint64_t level_crossing(const History& history, std::uint32_t j, std::uint32_t h,
+  ALOFT_COLD std::uint64_t level_crossing(const History& history, std::uint32_t j, std::uint32_t h,
                                const Vec3<Scalar>& r, Scalar level) const {
     const Scalar before = residual(history, j - 1, h, r);
     const Scalar after = residual(history, j, h, r);
@@ -187,7 +188,7 @@ class ReleaseDetector {
   // The first sample of the trailing run of [start, c] whose residual is down at the level
   // of the stretch's later half: a hand force that fades out stays above it until it is
   // gone, where a fixed fraction of the limit would be crossed while it still acts.
-  std::uint32_t first_at_flight_level(const History& history, std::uint32_t start, std::uint32_t c,
+  ALOFT_COLD std::uint32_t first_at_flight_level(const History& history, std::uint32_t start, std::uint32_t c,
                                       std::uint32_t h, const Vec3<Scalar>& r) {
     Scalar sum = Scalar(0);
     std::uint32_t n = 0;
@@ -213,7 +214,7 @@ class ReleaseDetector {
   // the line through the residual at j0 (already at flight level) and at the newest
   // earlier sample still above twice that level meets zero at the release. The first
   // sample from then on is the release (noise at j0 can only move it later).
-  std::uint32_t after_fade_out(const History& history, std::uint32_t j0, std::uint32_t c, std::uint32_t h,
+  ALOFT_COLD std::uint32_t after_fade_out(const History& history, std::uint32_t j0, std::uint32_t c, std::uint32_t h,
                                const Vec3<Scalar>& r, Scalar level) const {
     const Scalar e0 = residual(history, j0, h, r);
     std::uint32_t j1 = j0;
@@ -239,7 +240,7 @@ class ReleaseDetector {
   // between samples, crossed `step_fraction` of its value at the top of the step before
   // j0. The filter's delay keeps that crossing after the true release unless the force
   // faded over several sample intervals.
-  std::uint64_t crossing_before(const History& history, std::uint32_t j0, std::uint32_t h,
+  ALOFT_COLD std::uint64_t crossing_before(const History& history, std::uint32_t j0, std::uint32_t h,
                                 const Vec3<Scalar>& r) const {
     // The top: the largest residual of the few samples before j0 (flight noise after the
     // step can leave j0 a sample or two late).

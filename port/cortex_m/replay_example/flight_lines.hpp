@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/onboard_pipeline.hpp"
 #include "aloft_port/report_writer.hpp"
 
@@ -43,7 +44,7 @@ inline std::int64_t bits_of(float value) {
   return static_cast<std::int64_t>(bits);
 }
 
-inline void write_flight_lines(aloft::port::ReportWriter& out, const aloft::FlightResult<float>& f,
+ALOFT_COLD inline void write_flight_lines(aloft::port::ReportWriter& out, const aloft::FlightResult<float>& f,
                                std::int64_t t0_us) {
   out.text("flight ").integer(f.flight_number).line();
   write_seconds(out.text("release_s "), t0_us + static_cast<std::int64_t>(f.release_us));
