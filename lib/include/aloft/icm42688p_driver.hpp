@@ -67,7 +67,7 @@ constexpr int kConfigEntries = 18;
 // The configuration table (entry i of kConfigEntries), in the order it is written:
 // interface, FIFO and time stamps, ranges and rates, filters, and the sensors switched
 // on last (the AAF registers are static: written while the sensors are off).
-inline ConfigEntry config_entry(const DriverSettings& s, int i) {
+ALOFT_COLD inline ConfigEntry config_entry(const DriverSettings& s, int i) {
   const std::uint8_t odr =
       s.odr == OutputDataRate::hz4000 ? kOdr4kHz : (s.odr == OutputDataRate::hz2000 ? kOdr2kHz : kOdr1kHz);
   const AafRow aaf =

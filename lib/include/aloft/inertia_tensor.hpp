@@ -35,7 +35,7 @@ class InertiaTensor {
   // default rounding only; a host reading *measured* moments of a flat body may allow
   // their uncertainty (see host_sim/common/body_file.cpp).
   ALOFT_COLD static Status make_from_tensor(const Mat3<Scalar>& tensor, InertiaTensor& out,
-                                 Scalar triangle_slack = relative_tolerance()) {
+                                            Scalar triangle_slack = relative_tolerance()) {
     for (int i = 0; i < 9; ++i) {
       if (!std::isfinite(tensor.data()[i])) return Status::non_finite_input;
     }

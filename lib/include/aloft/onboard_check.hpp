@@ -18,6 +18,7 @@
 
 #include <cstdint>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/deviation.hpp"
 #include "aloft/flight_detector.hpp"
 #include "aloft/lane_angle.hpp"
@@ -47,7 +48,7 @@ class OnboardCheck {
   static_assert(K >= 1, "at least one live simulation");
 
  public:
-  OnboardCheck(const InertiaTensor<Scalar>& inertia, const OnboardCheckSettings<Scalar>& settings)
+  ALOFT_COLD OnboardCheck(const InertiaTensor<Scalar>& inertia, const OnboardCheckSettings<Scalar>& settings)
       : coefficients_(PrincipalFrame<Scalar>(inertia).coefficients()),
         settings_(settings),
         sensor_to_principal_(PrincipalFrame<Scalar>(inertia).to_body_matrix().transpose() *

@@ -136,7 +136,7 @@ class ReleaseDetector {
   // interval late: the landing is dated halfway between the two (measured on generated
   // catches and impacts at 100 and 250 Hz, tests/host/test_release_detection.cpp).
   ALOFT_COLD std::uint64_t level_crossing(const History& history, std::uint32_t j, std::uint32_t h,
-                               const Vec3<Scalar>& r, Scalar level) const {
+                                          const Vec3<Scalar>& r, Scalar level) const {
     const Scalar before = residual(history, j - 1, h, r);
     const Scalar after = residual(history, j, h, r);
     if (!(before >= Scalar(0)) || !(after > level) || !(before < level)) return history.t_us(j);
@@ -189,7 +189,7 @@ class ReleaseDetector {
   // of the stretch's later half: a hand force that fades out stays above it until it is
   // gone, where a fixed fraction of the limit would be crossed while it still acts.
   ALOFT_COLD std::uint32_t first_at_flight_level(const History& history, std::uint32_t start, std::uint32_t c,
-                                      std::uint32_t h, const Vec3<Scalar>& r) {
+                                                 std::uint32_t h, const Vec3<Scalar>& r) {
     Scalar sum = Scalar(0);
     std::uint32_t n = 0;
     for (std::uint32_t j = start + (c - start) / 2; j <= c; ++j) {
@@ -214,8 +214,8 @@ class ReleaseDetector {
   // the line through the residual at j0 (already at flight level) and at the newest
   // earlier sample still above twice that level meets zero at the release. The first
   // sample from then on is the release (noise at j0 can only move it later).
-  ALOFT_COLD std::uint32_t after_fade_out(const History& history, std::uint32_t j0, std::uint32_t c, std::uint32_t h,
-                               const Vec3<Scalar>& r, Scalar level) const {
+  ALOFT_COLD std::uint32_t after_fade_out(const History& history, std::uint32_t j0, std::uint32_t c,
+                                          std::uint32_t h, const Vec3<Scalar>& r, Scalar level) const {
     const Scalar e0 = residual(history, j0, h, r);
     std::uint32_t j1 = j0;
     Scalar e1 = e0;
@@ -241,7 +241,7 @@ class ReleaseDetector {
   // j0. The filter's delay keeps that crossing after the true release unless the force
   // faded over several sample intervals.
   ALOFT_COLD std::uint64_t crossing_before(const History& history, std::uint32_t j0, std::uint32_t h,
-                                const Vec3<Scalar>& r) const {
+                                           const Vec3<Scalar>& r) const {
     // The top: the largest residual of the few samples before j0 (flight noise after the
     // step can leave j0 a sample or two late).
     std::uint32_t top = j0;
@@ -273,8 +273,8 @@ class ReleaseDetector {
     return history.kinematics(j, h, k) ? centre_specific_force(k, r) : Scalar(-1);
   }
 
-  bool residual_above(const History& history, std::uint32_t j, std::uint32_t h, const Vec3<Scalar>& r,
-                      Scalar level) const {
+  ALOFT_COLD bool residual_above(const History& history, std::uint32_t j, std::uint32_t h,
+                                 const Vec3<Scalar>& r, Scalar level) const {
     BodyKinematics<Scalar> k;
     if (!history.kinematics(j, h, k)) return true;
     const Scalar e = centre_specific_force(k, r);

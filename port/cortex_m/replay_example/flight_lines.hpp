@@ -25,7 +25,7 @@
 
 namespace aloft_replay_example {
 
-inline void write_seconds(aloft::port::ReportWriter& out, std::int64_t us) {
+ALOFT_COLD inline void write_seconds(aloft::port::ReportWriter& out, std::int64_t us) {
   if (us < 0) {
     out.text("-");
     us = -us;
@@ -45,7 +45,7 @@ inline std::int64_t bits_of(float value) {
 }
 
 ALOFT_COLD inline void write_flight_lines(aloft::port::ReportWriter& out, const aloft::FlightResult<float>& f,
-                               std::int64_t t0_us) {
+                                          std::int64_t t0_us) {
   out.text("flight ").integer(f.flight_number).line();
   write_seconds(out.text("release_s "), t0_us + static_cast<std::int64_t>(f.release_us));
   out.line();

@@ -23,7 +23,8 @@ class ReportWriter {
     return *this;
   }
 
-  ReportWriter& integer(std::int64_t value) {
+  // Text output is for reports, never on a per-sample path: kept small and out of line.
+  [[gnu::cold, gnu::noinline]] ReportWriter& integer(std::int64_t value) {
     char buffer[24];
     char* end = buffer + sizeof(buffer);
     char* p = end;
@@ -46,7 +47,7 @@ class ReportWriter {
   // through double, which a single-precision FPU does in software. Digits beyond the
   // 1e9 place are written as zeros (a float has only 7 significant digits anyway).
   // NaN and infinities are written as "nan", "inf", "-inf".
-  ReportWriter& fixed(float value, int decimals) {
+  [[gnu::cold, gnu::noinline]] ReportWriter& fixed(float value, int decimals) {
     if (std::isnan(value)) return text("nan");
     if (std::isinf(value)) return text(value > 0.0f ? "inf" : "-inf");
     if (decimals < 0) decimals = 0;

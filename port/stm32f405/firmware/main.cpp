@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "aloft/cold_path.hpp"
 #include "aloft_port/port.hpp"
 #include "aloft_port/report_writer.hpp"
 #include "flight_lines.hpp"
@@ -121,7 +122,7 @@ std::uint32_t samples_this_poll = 0;
 
 // Each finished flight, in the lines the host's replay prints too (flight_lines.hpp);
 // times in the driver's base: µs after the first sample.
-void report_finished_flights() {
+ALOFT_COLD void report_finished_flights() {
   ReportWriter out;
   while (pipeline->take_finished_flight(flight)) {
     aloft_replay_example::write_flight_lines(out, flight, 0);
@@ -167,7 +168,8 @@ int run(const aloft::ImuBus& bus) {
 
 }  // namespace
 
-int main() {
+// Set-up and the report: optimised for size (the per-sample work is in push_sample).
+ALOFT_COLD int main() {
   aloft::port::init();
   ReportWriter out;
   const aloft::ImuBus bus = board_imu_bus();
