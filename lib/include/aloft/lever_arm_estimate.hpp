@@ -14,14 +14,28 @@
 
 namespace aloft {
 
+// One sample's terms of the sums, formed once when the sample joins several fits.
+template <typename Scalar>
+struct LeverArmTerms {
+  explicit LeverArmTerms(const BodyKinematics<Scalar>& k) {
+    const Mat3<Scalar> m = lever_arm_matrix(k.w, k.w_dot);
+    ktk = m.transpose() * m;
+    kta = m.transpose() * k.a;
+    ata = k.a.squaredNorm();
+  }
+  Mat3<Scalar> ktk;
+  Vec3<Scalar> kta;
+  Scalar ata;
+};
+
 template <typename Scalar>
 class LeverArmFit {
  public:
-  void add(const BodyKinematics<Scalar>& k) {
-    const Mat3<Scalar> m = lever_arm_matrix(k.w, k.w_dot);
-    ktk_ += m.transpose() * m;
-    kta_ += m.transpose() * k.a;
-    ata_ += k.a.squaredNorm();
+  void add(const BodyKinematics<Scalar>& k) { add(LeverArmTerms<Scalar>(k)); }
+  void add(const LeverArmTerms<Scalar>& t) {
+    ktk_ += t.ktk;
+    kta_ += t.kta;
+    ata_ += t.ata;
     ++count_;
   }
   ALOFT_COLD void merge(const LeverArmFit& other) {

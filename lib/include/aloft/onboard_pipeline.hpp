@@ -225,9 +225,10 @@ class OnboardPipeline {
   // The lever-arm fit takes the samples the gyro calls torque-free.
   void fit_sample(std::uint32_t i) {
     BodyKinematics<Scalar> k;
-    if (!history_.kinematics(i, half_span_, k) || !detector_.torque_free(k)) return;
-    flight_fit_.add(k);
-    half_fit_[(flight_fit_.count() / 16u) % 2u].add(k);
+    if (!history_.kinematics(i, half_span_, k) || !detector_.torque_free_remembered(i, half_span_, k)) return;
+    const LeverArmTerms<Scalar> terms(k);
+    flight_fit_.add(terms);
+    half_fit_[(flight_fit_.count() / 16u) % 2u].add(terms);
     // A given or earlier r gives way to this flight's own fit once it has seen enough.
     const std::uint32_t enough = fit_r_in_flight_ ? 8u : 64u;
     if (flight_fit_.count() >= enough) r_flight_ = flight_fit_.solve(settings_.release.ridge_rad_s2);

@@ -71,7 +71,7 @@ class ReleaseDetector {
                     std::uint64_t not_before_us, std::uint32_t& release, std::uint64_t& release_us,
                     Vec3<Scalar>& r_used) {
     BodyKinematics<Scalar> k;
-    if (!history.kinematics(c, h, k) || !torque_free(k) ||
+    if (!history.kinematics(c, h, k) || !torque_free_at(c, h, k) ||
         (r != nullptr && centre_specific_force(k, *r) > limit(k, *r))) {
       in_run_ = false;
       return false;
@@ -102,11 +102,11 @@ class ReleaseDetector {
     BodyKinematics<Scalar> k;
     bool evidence = false;
     if (history.kinematics(c, h, k)) {
-      const Scalar e = centre_specific_force(k, r);
-      evidence = !torque_free(k) || e > limit(k, r);
+      const ResidualAndLimit<Scalar> e = residual_and_limit(settings_.free_flight, k, r);
+      evidence = !torque_free_at(c, h, k) || e.residual > e.limit;
       if (!evidence) {
         landing_run_ = 0;
-        flight_level_ += (e - flight_level_) / Scalar(32);
+        flight_level_ += (e.residual - flight_level_) / Scalar(32);
       }
     } else {
       evidence = (history.flags(c) & imu_accel_clipped) != 0;  // else: no verdict, run kept
@@ -150,6 +150,26 @@ class ReleaseDetector {
   bool torque_free(const BodyKinematics<Scalar>& k) const {
     return relative_torque(settings_.free_flight, inertia_, k) <= settings_.free_flight.torque_relative;
   }
+  // The torque test of sample i (kinematics k over +-h), remembered for the 32 newest
+  // samples tested: the pipeline's lever-arm fit takes the same samples a few steps later
+  // (torque_free_remembered) and need not repeat it.
+  bool torque_free_at(std::uint32_t i, std::uint32_t h, const BodyKinematics<Scalar>& k) {
+    const bool free = torque_free(k);
+    if (h != memo_h_ || i != memo_newest_ + 1u) memo_known_ = 0;  // only a gapless run is kept
+    const std::uint32_t bit = 1u << (i % 32u);
+    memo_h_ = h;
+    memo_newest_ = i;
+    memo_known_ |= bit;
+    memo_free_ = free ? (memo_free_ | bit) : (memo_free_ & ~bit);
+    return free;
+  }
+  bool torque_free_remembered(std::uint32_t i, std::uint32_t h, const BodyKinematics<Scalar>& k) const {
+    const std::uint32_t bit = 1u << (i % 32u);
+    if (h == memo_h_ && i <= memo_newest_ && memo_newest_ - i < 32u && (memo_known_ & bit) != 0) {
+      return (memo_free_ & bit) != 0;
+    }
+    return torque_free(k);
+  }
   Scalar limit(const BodyKinematics<Scalar>& k, const Vec3<Scalar>& r) const {
     return free_flight_accel_limit(settings_.free_flight, k, r);
   }
@@ -157,8 +177,9 @@ class ReleaseDetector {
 
  private:
   // The earliest start in [run_start_, c] whose fitted r passes (see the file comment).
-  bool fit_free_stretch(const History& history, std::uint32_t c, std::uint32_t h,
-                        const BodyKinematics<Scalar>& kc, std::uint32_t& start, Vec3<Scalar>& r_fit) const {
+  ALOFT_COLD bool fit_free_stretch(const History& history, std::uint32_t c, std::uint32_t h,
+                                   const BodyKinematics<Scalar>& kc, std::uint32_t& start,
+                                   Vec3<Scalar>& r_fit) const {
     LeverArmFit<Scalar> fit;
     bool found = false;
     for (std::uint32_t j = c + 1; j-- > run_start_;) {
@@ -287,7 +308,11 @@ class ReleaseDetector {
   std::uint32_t landing_start_ = 0;
   std::uint16_t landing_run_ = 0;
   bool in_run_ = false;
-  Scalar flight_level_ = Scalar(0);  // running mean residual in flight (m/s²)
+  Scalar flight_level_ = Scalar(0);          // running mean residual in flight (m/s²)
+  std::uint32_t memo_newest_ = 0xFFFFFFFFu;  // torque_free_at: the newest sample tested
+  std::uint32_t memo_h_ = 0;
+  std::uint32_t memo_known_ = 0;  // bit i % 32: sample i tested, with memo_h_
+  std::uint32_t memo_free_ = 0;   // bit i % 32: and found torque-free
 };
 
 }  // namespace aloft
