@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "aloft_port/divide_u64.hpp"
 #include "aloft_port/port.hpp"
 
 namespace aloft {
@@ -34,8 +35,9 @@ class ReportWriter {
     std::uint64_t magnitude =
         negative ? std::uint64_t(0) - static_cast<std::uint64_t>(value) : static_cast<std::uint64_t>(value);
     do {
-      *--p = static_cast<char>('0' + magnitude % 10u);
-      magnitude /= 10u;
+      std::uint32_t digit = 0;
+      magnitude = divide_u64(magnitude, 10u, digit);
+      *--p = static_cast<char>('0' + digit);
     } while (magnitude != 0u);
     if (negative) *--p = '-';
     sink_(p);
