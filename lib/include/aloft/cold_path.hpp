@@ -5,8 +5,13 @@
 // does not change the arithmetic (no fast-math, no contraction it would not do anyway).
 #pragma once
 
+//
+// ALOFT_OUT_OF_LINE marks a larger function that both the per-sample path and the
+// decision points call: one copy in flash, for the cost of a call.
 #if defined(__GNUC__) || defined(__clang__)
 #define ALOFT_COLD __attribute__((cold, noinline))
+#define ALOFT_OUT_OF_LINE __attribute__((noinline))
 #else
 #define ALOFT_COLD
+#define ALOFT_OUT_OF_LINE
 #endif

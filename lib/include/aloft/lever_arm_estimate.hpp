@@ -32,7 +32,7 @@ template <typename Scalar>
 class LeverArmFit {
  public:
   void add(const BodyKinematics<Scalar>& k) { add(LeverArmTerms<Scalar>(k)); }
-  void add(const LeverArmTerms<Scalar>& t) {
+  ALOFT_OUT_OF_LINE void add(const LeverArmTerms<Scalar>& t) {
     ktk_ += t.ktk;
     kta_ += t.kta;
     ata_ += t.ata;
@@ -47,7 +47,7 @@ class LeverArmFit {
   void reset() { *this = LeverArmFit(); }
 
   // r minimising sum |a - K r|² + ridge² n |r|² (zero when there are no samples).
-  Vec3<Scalar> solve(Scalar ridge_rad_s2) const {
+  ALOFT_OUT_OF_LINE Vec3<Scalar> solve(Scalar ridge_rad_s2) const {
     if (count_ == 0) return Vec3<Scalar>::Zero();
     const Scalar lambda = ridge_rad_s2 * ridge_rad_s2 * static_cast<Scalar>(count_);
     const Mat3<Scalar> m = ktk_ + lambda * Mat3<Scalar>::Identity();

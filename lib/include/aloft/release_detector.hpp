@@ -67,9 +67,9 @@ class ReleaseDetector {
   // sample, `release_us` its time (earlier than that sample's stamp when the samples are
   // too far apart to resolve the hand's force fading out), `r_used` the lever arm it was
   // found with (fitted when r is null).
-  ALOFT_COLD bool find_release(const History& history, std::uint32_t c, std::uint32_t h, const Vec3<Scalar>* r,
-                    std::uint64_t not_before_us, std::uint32_t& release, std::uint64_t& release_us,
-                    Vec3<Scalar>& r_used) {
+  ALOFT_COLD bool find_release(const History& history, std::uint32_t c, std::uint32_t h,
+                               const Vec3<Scalar>* r, std::uint64_t not_before_us, std::uint32_t& release,
+                               std::uint64_t& release_us, Vec3<Scalar>& r_used) {
     BodyKinematics<Scalar> k;
     if (!history.kinematics(c, h, k) || !torque_free_at(c, h, k) ||
         (r != nullptr && centre_specific_force(k, *r) > limit(k, *r))) {
