@@ -62,7 +62,7 @@ void fall_back(const char* what) {
 
 }  // namespace
 
-void init_clocks() {
+[[gnu::cold]] void init_clocks() {
   running_hz = hsi_hz;
   r::RccRegisters& rcc = r::rcc();
   rcc.cr = rcc.cr | cr_hseon;

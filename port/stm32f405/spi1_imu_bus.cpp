@@ -6,6 +6,7 @@
 
 #include <initializer_list>
 
+#include "aloft_port/divide_u64.hpp"
 #include "aloft_port/port.hpp"
 #include "stm32f405_registers.hpp"
 
@@ -107,10 +108,11 @@ void spi1_init() {
   spi_init_master(spi1());
 }
 
+// Every clock the board runs on is a whole number of MHz (16 MHz HSI, 168 MHz PLL): µs
+// are ticks over ticks per µs, a division by a small number (aloft_port/divide_u64.hpp).
 std::uint64_t ticks_in_us(void*) {
-  const std::uint64_t t = ticks();
-  const std::uint64_t per_second = ticks_per_second();
-  return t / per_second * 1000000u + t % per_second * 1000000u / per_second;
+  std::uint32_t remainder = 0;
+  return divide_u64(ticks(), ticks_per_second() / 1000000u, remainder);
 }
 
 ImuBus spi_imu_bus(SpiDevice& device) {

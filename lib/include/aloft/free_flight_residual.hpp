@@ -60,6 +60,19 @@ inline Scalar centre_specific_force(const BodyKinematics<Scalar>& k, const Vec3<
   return (k.a - lever_arm_matrix(k.w, k.w_dot) * r).norm();
 }
 
+// Both of the above from one product K r: what a detector forms per sample.
+template <typename Scalar>
+struct ResidualAndLimit {
+  Scalar residual;  // |a - K r| (m/s²)
+  Scalar limit;     // free_flight_accel_limit (m/s²)
+};
+template <typename Scalar>
+inline ResidualAndLimit<Scalar> residual_and_limit(const FreeFlightSettings<Scalar>& s,
+                                                   const BodyKinematics<Scalar>& k, const Vec3<Scalar>& r) {
+  const Vec3<Scalar> kr = lever_arm_matrix(k.w, k.w_dot) * r;
+  return {(k.a - kr).norm(), s.accel_floor_m_s2 + s.accel_relative * kr.norm()};
+}
+
 // The gyro's torque over its scale: near 0 in free flight (up to the tensor's error),
 // near 1 while an outside torque drives the rate.
 template <typename Scalar>

@@ -30,6 +30,7 @@
 
 #include <cstdint>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/icm42688p_fifo.hpp"
 #include "aloft/icm42688p_registers.hpp"
 #include "aloft/imu_bus.hpp"
@@ -66,7 +67,7 @@ constexpr int kConfigEntries = 18;
 // The configuration table (entry i of kConfigEntries), in the order it is written:
 // interface, FIFO and time stamps, ranges and rates, filters, and the sensors switched
 // on last (the AAF registers are static: written while the sensors are off).
-inline ConfigEntry config_entry(const DriverSettings& s, int i) {
+ALOFT_COLD inline ConfigEntry config_entry(const DriverSettings& s, int i) {
   const std::uint8_t odr =
       s.odr == OutputDataRate::hz4000 ? kOdr4kHz : (s.odr == OutputDataRate::hz2000 ? kOdr2kHz : kOdr1kHz);
   const AafRow aaf =
@@ -139,7 +140,7 @@ class Icm42688pDriver {
   Icm42688pDriver(const ImuBus& bus, const DriverSettings& settings)
       : bus_(bus), settings_(settings), decoder_(odr_hz(settings.odr), settings.clock) {}
 
-  Status begin();
+  ALOFT_COLD Status begin();
   Status poll(const SampleSink<Scalar>& sink);
   const DriverCounters& counters() const { return counters_; }
   const DriverSettings& settings() const { return settings_; }
@@ -148,11 +149,11 @@ class Icm42688pDriver {
   Status select_bank(Bank bank);
   Status read(Bank bank, std::uint8_t reg, std::uint8_t* data, std::uint16_t length);
   Status write(Bank bank, std::uint8_t reg, std::uint8_t value);
-  void wait_us(std::uint32_t us);
-  Status apply(const ConfigEntry& e);
-  Status entry_kept(const ConfigEntry& e);
-  Status check_next_register();
-  void flush_and_mark_lost();
+  ALOFT_COLD void wait_us(std::uint32_t us);
+  ALOFT_COLD Status apply(const ConfigEntry& e);
+  ALOFT_COLD Status entry_kept(const ConfigEntry& e);
+  ALOFT_COLD Status check_next_register();
+  ALOFT_COLD void flush_and_mark_lost();
   Status read_burst(std::uint16_t packets_in_fifo, const SampleSink<Scalar>& sink);
   void emit(const ImuSample<Scalar>& sample, std::uint64_t mcu_us, const SampleSink<Scalar>& sink);
   std::uint64_t us_to_ticks(std::uint64_t us) const {

@@ -6,6 +6,7 @@
 // precompute the inverse and the principal decomposition the integrators need.
 #pragma once
 
+#include "aloft/cold_path.hpp"
 #include "aloft/rotation.hpp"
 #include "aloft/status.hpp"
 #include "aloft/symmetric_eigen.hpp"
@@ -33,8 +34,8 @@ class InertiaTensor {
   // the moments) is how far a principal moment may exceed the sum of the other two: by
   // default rounding only; a host reading *measured* moments of a flat body may allow
   // their uncertainty (see host_sim/common/body_file.cpp).
-  static Status make_from_tensor(const Mat3<Scalar>& tensor, InertiaTensor& out,
-                                 Scalar triangle_slack = relative_tolerance()) {
+  ALOFT_COLD static Status make_from_tensor(const Mat3<Scalar>& tensor, InertiaTensor& out,
+                                            Scalar triangle_slack = relative_tolerance()) {
     for (int i = 0; i < 9; ++i) {
       if (!std::isfinite(tensor.data()[i])) return Status::non_finite_input;
     }

@@ -9,21 +9,36 @@
 
 #include <cstdint>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/free_flight_residual.hpp"
 
 namespace aloft {
 
+// One sample's terms of the sums, formed once when the sample joins several fits.
+template <typename Scalar>
+struct LeverArmTerms {
+  explicit LeverArmTerms(const BodyKinematics<Scalar>& k) {
+    const Mat3<Scalar> m = lever_arm_matrix(k.w, k.w_dot);
+    ktk = m.transpose() * m;
+    kta = m.transpose() * k.a;
+    ata = k.a.squaredNorm();
+  }
+  Mat3<Scalar> ktk;
+  Vec3<Scalar> kta;
+  Scalar ata;
+};
+
 template <typename Scalar>
 class LeverArmFit {
  public:
-  void add(const BodyKinematics<Scalar>& k) {
-    const Mat3<Scalar> m = lever_arm_matrix(k.w, k.w_dot);
-    ktk_ += m.transpose() * m;
-    kta_ += m.transpose() * k.a;
-    ata_ += k.a.squaredNorm();
+  void add(const BodyKinematics<Scalar>& k) { add(LeverArmTerms<Scalar>(k)); }
+  ALOFT_OUT_OF_LINE void add(const LeverArmTerms<Scalar>& t) {
+    ktk_ += t.ktk;
+    kta_ += t.kta;
+    ata_ += t.ata;
     ++count_;
   }
-  void merge(const LeverArmFit& other) {
+  ALOFT_COLD void merge(const LeverArmFit& other) {
     ktk_ += other.ktk_;
     kta_ += other.kta_;
     ata_ += other.ata_;
@@ -32,7 +47,7 @@ class LeverArmFit {
   void reset() { *this = LeverArmFit(); }
 
   // r minimising sum |a - K r|² + ridge² n |r|² (zero when there are no samples).
-  Vec3<Scalar> solve(Scalar ridge_rad_s2) const {
+  ALOFT_OUT_OF_LINE Vec3<Scalar> solve(Scalar ridge_rad_s2) const {
     if (count_ == 0) return Vec3<Scalar>::Zero();
     const Scalar lambda = ridge_rad_s2 * ridge_rad_s2 * static_cast<Scalar>(count_);
     const Mat3<Scalar> m = ktk_ + lambda * Mat3<Scalar>::Identity();
@@ -40,7 +55,7 @@ class LeverArmFit {
   }
 
   // Root mean square of |a - K r| over the samples (m/s²).
-  Scalar rms_residual(const Vec3<Scalar>& r) const {
+  ALOFT_COLD Scalar rms_residual(const Vec3<Scalar>& r) const {
     if (count_ == 0) return Scalar(0);
     const Scalar sse = ata_ - Scalar(2) * r.dot(kta_) + r.dot(ktk_ * r);
     return std::sqrt((sse > Scalar(0) ? sse : Scalar(0)) / static_cast<Scalar>(count_));

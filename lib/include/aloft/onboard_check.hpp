@@ -21,6 +21,7 @@
 
 #include <cstdint>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/deviation.hpp"
 #include "aloft/flight_detector.hpp"
 #include "aloft/lane_angle.hpp"
@@ -59,7 +60,7 @@ class OnboardCheck {
   static_assert(K >= 1, "at least one live simulation");
 
  public:
-  OnboardCheck(const InertiaTensor<Scalar>& inertia, const OnboardCheckSettings<Scalar>& settings)
+  ALOFT_COLD OnboardCheck(const InertiaTensor<Scalar>& inertia, const OnboardCheckSettings<Scalar>& settings)
       : coefficients_(PrincipalFrame<Scalar>(inertia).coefficients()),
         settings_(settings),
         sensor_to_principal_(PrincipalFrame<Scalar>(inertia).to_body_matrix().transpose() *
@@ -137,6 +138,8 @@ class OnboardCheck {
     const Scalar norm_sq = m.squaredNorm();
     const bool has_rate = norm_sq > Scalar(0);  // a zero rate has no direction to compare
     const Scalar inverse_norm = has_rate ? Scalar(1) / std::sqrt(norm_sq) : Scalar(0);
+    // A local copy, so that the compiler keeps it in registers across the slots.
+    DeviationStats<Scalar> overall = overall_;
     for (int i = 0; i < K; ++i) {
       Slot& slot = slots_[i];
       if (!slot.live) continue;
@@ -149,8 +152,9 @@ class OnboardCheck {
       const Scalar dz = w.z - measured.z;
       const Scalar rel = std::sqrt(dx * dx + dy * dy + dz * dz) * inverse_norm;
       slot.stats.add_values(da, rel);
-      overall_.add_values(da, rel);
+      overall.add_values(da, rel);
     }
+    overall_ = overall;
     if (samples_ % settings_.seed_every == 0) start_seed(measured);
     ++samples_;
   }

@@ -23,9 +23,11 @@
 #include <cstdint>
 #include <optional>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/imu_sample.hpp"
 #include "aloft/onboard_check.hpp"
 #include "aloft/release_detector.hpp"
+#include "aloft/whole_microseconds.hpp"
 
 namespace aloft {
 
@@ -113,7 +115,7 @@ class OnboardPipeline {
   }
 
   // The recording ended: an open flight ends unlanded.
-  void finish() {
+  ALOFT_COLD void finish() {
     if (!check_) return;
     feed_until(detector_.pending_from(history_.count() - 1));
     end_flight(false, last_t_us_);
@@ -145,12 +147,12 @@ class OnboardPipeline {
 
   bool stamps_far_apart(std::uint64_t dt_us) const {
     return interval_us_ > Scalar(0) &&
-           static_cast<Scalar>(dt_us) > settings_.gap_interval_factor * interval_us_;
+           scalar_of_us<Scalar>(dt_us) > settings_.gap_interval_factor * interval_us_;
   }
 
   // Running sample interval (µs) and the half span h of the w_dot difference in samples.
   void track_interval(std::uint64_t dt_us) {
-    const Scalar dt = static_cast<Scalar>(dt_us);
+    const Scalar dt = scalar_of_us<Scalar>(dt_us);
     interval_us_ = interval_us_ > Scalar(0) ? interval_us_ + (dt - interval_us_) / Scalar(16) : dt;
     const Scalar span = static_cast<Scalar>(settings_.release.derivative_half_span_us) / interval_us_;
     half_span_ = span < Scalar(1.5) ? 1u
@@ -186,7 +188,7 @@ class OnboardPipeline {
     feed_until(c + 1);
   }
 
-  void start_flight(std::uint32_t release, std::uint64_t release_us, bool fit_r_in_flight) {
+  ALOFT_COLD void start_flight(std::uint32_t release, std::uint64_t release_us, bool fit_r_in_flight) {
     check_.emplace(inertia_, check_settings_);
     current_ = FlightResult<Scalar>();
     current_.release_us = release_us;
@@ -227,22 +229,23 @@ class OnboardPipeline {
   // The lever-arm fit takes the samples the gyro calls torque-free.
   void fit_sample(std::uint32_t i) {
     BodyKinematics<Scalar> k;
-    if (!history_.kinematics(i, half_span_, k) || !detector_.torque_free(k)) return;
-    flight_fit_.add(k);
-    half_fit_[(flight_fit_.count() / 16u) % 2u].add(k);
+    if (!history_.kinematics(i, half_span_, k) || !detector_.torque_free_remembered(i, half_span_, k)) return;
+    const LeverArmTerms<Scalar> terms(k);
+    flight_fit_.add(terms);
+    half_fit_[(flight_fit_.count() / 16u) % 2u].add(terms);
     // A given or earlier r gives way to this flight's own fit once it has seen enough.
     const std::uint32_t enough = fit_r_in_flight_ ? 8u : 64u;
     if (flight_fit_.count() >= enough) r_flight_ = flight_fit_.solve(settings_.release.ridge_rad_s2);
   }
 
   // The simulations alive before a long gap cannot be carried across it.
-  void restart_check() {
+  ALOFT_COLD void restart_check() {
     keep_first_seeds();
     current_.overall.merge(check_->overall());
     check_.emplace(inertia_, check_settings_);
   }
 
-  void end_flight(bool landed, std::uint64_t at_us) {
+  ALOFT_COLD void end_flight(bool landed, std::uint64_t at_us) {
     keep_first_seeds();
     current_.overall.merge(check_->overall());
     check_.reset();
@@ -261,14 +264,14 @@ class OnboardPipeline {
   }
 
   // From the check's first run that started any seed.
-  void keep_first_seeds() {
+  ALOFT_COLD void keep_first_seeds() {
     if (current_.first_seed_count > 0) return;
     for (std::uint32_t n = 0; n < kept_first_seeds && check_->first_seed(n, current_.first_seeds[n]); ++n) {
       current_.first_seed_count = n + 1;
     }
   }
 
-  void report_lever_arm() {
+  ALOFT_COLD void report_lever_arm() {
     if (settings_.imu_position_known) {
       current_.imu_position_m = settings_.imu_position_m;
       current_.lever_arm_fit_rms_m_s2 = flight_fit_.rms_residual(settings_.imu_position_m);

@@ -19,8 +19,10 @@
 
 #include <cstdint>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/lever_arm_estimate.hpp"
 #include "aloft/sample_history.hpp"
+#include "aloft/whole_microseconds.hpp"
 
 namespace aloft {
 
@@ -65,11 +67,11 @@ class ReleaseDetector {
   // sample, `release_us` its time (earlier than that sample's stamp when the samples are
   // too far apart to resolve the hand's force fading out), `r_used` the lever arm it was
   // found with (fitted when r is null).
-  bool find_release(const History& history, std::uint32_t c, std::uint32_t h, const Vec3<Scalar>* r,
-                    std::uint64_t not_before_us, std::uint32_t& release, std::uint64_t& release_us,
-                    Vec3<Scalar>& r_used) {
+  ALOFT_COLD bool find_release(const History& history, std::uint32_t c, std::uint32_t h,
+                               const Vec3<Scalar>* r, std::uint64_t not_before_us, std::uint32_t& release,
+                               std::uint64_t& release_us, Vec3<Scalar>& r_used) {
     BodyKinematics<Scalar> k;
-    if (!history.kinematics(c, h, k) || !torque_free(k) ||
+    if (!history.kinematics(c, h, k) || !torque_free_at(c, h, k) ||
         (r != nullptr && centre_specific_force(k, *r) > limit(k, *r))) {
       in_run_ = false;
       return false;
@@ -100,11 +102,11 @@ class ReleaseDetector {
     BodyKinematics<Scalar> k;
     bool evidence = false;
     if (history.kinematics(c, h, k)) {
-      const Scalar e = centre_specific_force(k, r);
-      evidence = !torque_free(k) || e > limit(k, r);
+      const ResidualAndLimit<Scalar> e = residual_and_limit(settings_.free_flight, k, r);
+      evidence = !torque_free_at(c, h, k) || e.residual > e.limit;
       if (!evidence) {
         landing_run_ = 0;
-        flight_level_ += (e - flight_level_) / Scalar(32);
+        flight_level_ += (e.residual - flight_level_) / Scalar(32);
       }
     } else {
       evidence = (history.flags(c) & imu_accel_clipped) != 0;  // else: no verdict, run kept
@@ -133,13 +135,13 @@ class ReleaseDetector {
   // crosses the level too early on a rising, filtered edge and the next sample is up to an
   // interval late: the landing is dated halfway between the two (measured on generated
   // catches and impacts at 100 and 250 Hz, tests/host/test_release_detection.cpp).
-  std::uint64_t level_crossing(const History& history, std::uint32_t j, std::uint32_t h,
-                               const Vec3<Scalar>& r, Scalar level) const {
+  ALOFT_COLD std::uint64_t level_crossing(const History& history, std::uint32_t j, std::uint32_t h,
+                                          const Vec3<Scalar>& r, Scalar level) const {
     const Scalar before = residual(history, j - 1, h, r);
     const Scalar after = residual(history, j, h, r);
     if (!(before >= Scalar(0)) || !(after > level) || !(before < level)) return history.t_us(j);
     const Scalar part = Scalar(0.5) + Scalar(0.5) * (level - before) / (after - before);
-    return history.t_us(j - 1) + static_cast<std::uint64_t>(part * static_cast<Scalar>(history.dt_us(j)));
+    return history.t_us(j - 1) + whole_us(part * static_cast<Scalar>(history.dt_us(j)));
   }
 
   // Samples from this index on may still turn out to be the landing (not to be fed yet).
@@ -148,6 +150,26 @@ class ReleaseDetector {
   bool torque_free(const BodyKinematics<Scalar>& k) const {
     return relative_torque(settings_.free_flight, inertia_, k) <= settings_.free_flight.torque_relative;
   }
+  // The torque test of sample i (kinematics k over +-h), remembered for the 32 newest
+  // samples tested: the pipeline's lever-arm fit takes the same samples a few steps later
+  // (torque_free_remembered) and need not repeat it.
+  bool torque_free_at(std::uint32_t i, std::uint32_t h, const BodyKinematics<Scalar>& k) {
+    const bool free = torque_free(k);
+    if (h != memo_h_ || i != memo_newest_ + 1u) memo_known_ = 0;  // only a gapless run is kept
+    const std::uint32_t bit = 1u << (i % 32u);
+    memo_h_ = h;
+    memo_newest_ = i;
+    memo_known_ |= bit;
+    memo_free_ = free ? (memo_free_ | bit) : (memo_free_ & ~bit);
+    return free;
+  }
+  bool torque_free_remembered(std::uint32_t i, std::uint32_t h, const BodyKinematics<Scalar>& k) const {
+    const std::uint32_t bit = 1u << (i % 32u);
+    if (h == memo_h_ && i <= memo_newest_ && memo_newest_ - i < 32u && (memo_known_ & bit) != 0) {
+      return (memo_free_ & bit) != 0;
+    }
+    return torque_free(k);
+  }
   Scalar limit(const BodyKinematics<Scalar>& k, const Vec3<Scalar>& r) const {
     return free_flight_accel_limit(settings_.free_flight, k, r);
   }
@@ -155,8 +177,9 @@ class ReleaseDetector {
 
  private:
   // The earliest start in [run_start_, c] whose fitted r passes (see the file comment).
-  bool fit_free_stretch(const History& history, std::uint32_t c, std::uint32_t h,
-                        const BodyKinematics<Scalar>& kc, std::uint32_t& start, Vec3<Scalar>& r_fit) const {
+  ALOFT_COLD bool fit_free_stretch(const History& history, std::uint32_t c, std::uint32_t h,
+                                   const BodyKinematics<Scalar>& kc, std::uint32_t& start,
+                                   Vec3<Scalar>& r_fit) const {
     LeverArmFit<Scalar> fit;
     bool found = false;
     for (std::uint32_t j = c + 1; j-- > run_start_;) {
@@ -186,8 +209,8 @@ class ReleaseDetector {
   // The first sample of the trailing run of [start, c] whose residual is down at the level
   // of the stretch's later half: a hand force that fades out stays above it until it is
   // gone, where a fixed fraction of the limit would be crossed while it still acts.
-  std::uint32_t first_at_flight_level(const History& history, std::uint32_t start, std::uint32_t c,
-                                      std::uint32_t h, const Vec3<Scalar>& r) {
+  ALOFT_COLD std::uint32_t first_at_flight_level(const History& history, std::uint32_t start, std::uint32_t c,
+                                                 std::uint32_t h, const Vec3<Scalar>& r) {
     Scalar sum = Scalar(0);
     std::uint32_t n = 0;
     for (std::uint32_t j = start + (c - start) / 2; j <= c; ++j) {
@@ -212,8 +235,8 @@ class ReleaseDetector {
   // the line through the residual at j0 (already at flight level) and at the newest
   // earlier sample still above twice that level meets zero at the release. The first
   // sample from then on is the release (noise at j0 can only move it later).
-  std::uint32_t after_fade_out(const History& history, std::uint32_t j0, std::uint32_t c, std::uint32_t h,
-                               const Vec3<Scalar>& r, Scalar level) const {
+  ALOFT_COLD std::uint32_t after_fade_out(const History& history, std::uint32_t j0, std::uint32_t c,
+                                          std::uint32_t h, const Vec3<Scalar>& r, Scalar level) const {
     const Scalar e0 = residual(history, j0, h, r);
     std::uint32_t j1 = j0;
     Scalar e1 = e0;
@@ -223,11 +246,11 @@ class ReleaseDetector {
       if (e1 < Scalar(0) || e1 > Scalar(2) * level) break;
     }
     if (!(e1 > Scalar(2) * level) || !(e1 > e0)) return j0;
-    const Scalar span_us = static_cast<Scalar>(history.t_us(j0) - history.t_us(j1));
+    const Scalar span_us = scalar_of_us<Scalar>(history.t_us(j0) - history.t_us(j1));
     Scalar to_zero_us = span_us * e0 / (e1 - e0);
     const Scalar cap_us = static_cast<Scalar>(settings_.fade_out_at_most_us);
     if (to_zero_us > cap_us) to_zero_us = cap_us;
-    const std::uint64_t zero_us = history.t_us(j0) + static_cast<std::uint64_t>(to_zero_us);
+    const std::uint64_t zero_us = history.t_us(j0) + whole_us(to_zero_us);
     std::uint32_t j = j0;
     while (j < c && history.t_us(j) < zero_us) ++j;
     return j;
@@ -238,8 +261,8 @@ class ReleaseDetector {
   // between samples, crossed `step_fraction` of its value at the top of the step before
   // j0. The filter's delay keeps that crossing after the true release unless the force
   // faded over several sample intervals.
-  std::uint64_t crossing_before(const History& history, std::uint32_t j0, std::uint32_t h,
-                                const Vec3<Scalar>& r) const {
+  ALOFT_COLD std::uint64_t crossing_before(const History& history, std::uint32_t j0, std::uint32_t h,
+                                           const Vec3<Scalar>& r) const {
     // The top: the largest residual of the few samples before j0 (flight noise after the
     // step can leave j0 a sample or two late).
     std::uint32_t top = j0;
@@ -261,7 +284,7 @@ class ReleaseDetector {
     if (!(e_next >= Scalar(0)) || !(e_j > e_next)) return history.t_us(j0);
     Scalar part = (e_j - mark) / (e_j - e_next);
     if (part > Scalar(1)) part = Scalar(1);  // j0 itself above the mark: no later than j + 1
-    return history.t_us(j) + static_cast<std::uint64_t>(part * static_cast<Scalar>(history.dt_us(j + 1)));
+    return history.t_us(j) + whole_us(part * static_cast<Scalar>(history.dt_us(j + 1)));
   }
   static constexpr std::uint32_t step_window = 6;  // samples before j0 searched for the step's top
 
@@ -271,8 +294,8 @@ class ReleaseDetector {
     return history.kinematics(j, h, k) ? centre_specific_force(k, r) : Scalar(-1);
   }
 
-  bool residual_above(const History& history, std::uint32_t j, std::uint32_t h, const Vec3<Scalar>& r,
-                      Scalar level) const {
+  ALOFT_COLD bool residual_above(const History& history, std::uint32_t j, std::uint32_t h,
+                                 const Vec3<Scalar>& r, Scalar level) const {
     BodyKinematics<Scalar> k;
     if (!history.kinematics(j, h, k)) return true;
     const Scalar e = centre_specific_force(k, r);
@@ -285,7 +308,11 @@ class ReleaseDetector {
   std::uint32_t landing_start_ = 0;
   std::uint16_t landing_run_ = 0;
   bool in_run_ = false;
-  Scalar flight_level_ = Scalar(0);  // running mean residual in flight (m/s²)
+  Scalar flight_level_ = Scalar(0);          // running mean residual in flight (m/s²)
+  std::uint32_t memo_newest_ = 0xFFFFFFFFu;  // torque_free_at: the newest sample tested
+  std::uint32_t memo_h_ = 0;
+  std::uint32_t memo_known_ = 0;  // bit i % 32: sample i tested, with memo_h_
+  std::uint32_t memo_free_ = 0;   // bit i % 32: and found torque-free
 };
 
 }  // namespace aloft

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/free_flight_residual.hpp"
 #include "aloft/imu_sample.hpp"
 
@@ -49,7 +50,7 @@ class SampleHistory {
 
   // Sample i's rate, angular acceleration (from samples i-h and i+h) and specific force.
   // False when the span is not held, crosses a gap or holds a clipped gyro sample.
-  bool kinematics(std::uint32_t i, std::uint32_t h, BodyKinematics<Scalar>& out) const {
+  ALOFT_OUT_OF_LINE bool kinematics(std::uint32_t i, std::uint32_t h, BodyKinematics<Scalar>& out) const {
     if (i < h || !holds(i - h) || !holds(i + h)) return false;
     for (std::uint32_t j = i - h; j <= i + h; ++j) {
       if ((flags_[j % N] & imu_gyro_clipped) != 0) return false;

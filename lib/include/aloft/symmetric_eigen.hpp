@@ -9,6 +9,8 @@
 
 #include <limits>
 
+#include "aloft/cold_path.hpp"
+
 #include "aloft/rotation.hpp"
 
 namespace aloft {
@@ -16,8 +18,8 @@ namespace aloft {
 // Fills `values` (ascending) and `vectors` (columns, orthonormal, right-handed) with
 // A = vectors * diag(values) * vectors^T. `a` must be symmetric and finite.
 template <typename Scalar>
-inline void symmetric_eigen_decomposition(const Mat3<Scalar>& a, Vec3<Scalar>& values,
-                                          Mat3<Scalar>& vectors) {
+ALOFT_COLD inline void symmetric_eigen_decomposition(const Mat3<Scalar>& a, Vec3<Scalar>& values,
+                                                     Mat3<Scalar>& vectors) {
   Mat3<Scalar> m = a;
   Mat3<Scalar> v = Mat3<Scalar>::Identity();
   const Scalar eps = std::numeric_limits<Scalar>::epsilon();

@@ -19,19 +19,25 @@
 #include <cstdint>
 #include <cstring>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/onboard_pipeline.hpp"
+#include "aloft_port/divide_u64.hpp"
 #include "aloft_port/report_writer.hpp"
 
 namespace aloft_replay_example {
 
-inline void write_seconds(aloft::port::ReportWriter& out, std::int64_t us) {
+ALOFT_COLD inline void write_seconds(aloft::port::ReportWriter& out, std::int64_t us) {
   if (us < 0) {
     out.text("-");
     us = -us;
   }
-  out.integer(us / 1000000).text(".");
+  // Seconds and µs by two divisions by 1000 (aloft_port/divide_u64.hpp).
+  std::uint32_t us_digits = 0, ms_digits = 0;
+  const std::uint64_t ms = aloft::port::divide_u64(static_cast<std::uint64_t>(us), 1000u, us_digits);
+  const std::uint64_t s = aloft::port::divide_u64(ms, 1000u, ms_digits);
+  out.integer(static_cast<std::int64_t>(s)).text(".");
   char digits[7];
-  std::int64_t fraction = us % 1000000;
+  std::uint32_t fraction = ms_digits * 1000u + us_digits;
   for (int i = 5; i >= 0; --i, fraction /= 10) digits[i] = static_cast<char>('0' + fraction % 10);
   digits[6] = '\0';
   out.text(digits);
@@ -43,8 +49,8 @@ inline std::int64_t bits_of(float value) {
   return static_cast<std::int64_t>(bits);
 }
 
-inline void write_flight_lines(aloft::port::ReportWriter& out, const aloft::FlightResult<float>& f,
-                               std::int64_t t0_us) {
+ALOFT_COLD inline void write_flight_lines(aloft::port::ReportWriter& out, const aloft::FlightResult<float>& f,
+                                          std::int64_t t0_us) {
   out.text("flight ").integer(f.flight_number).line();
   write_seconds(out.text("release_s "), t0_us + static_cast<std::int64_t>(f.release_us));
   out.line();

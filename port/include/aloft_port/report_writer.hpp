@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "aloft_port/divide_u64.hpp"
 #include "aloft_port/port.hpp"
 
 namespace aloft {
@@ -23,7 +24,8 @@ class ReportWriter {
     return *this;
   }
 
-  ReportWriter& integer(std::int64_t value) {
+  // Text output is for reports, never on a per-sample path: kept small and out of line.
+  [[gnu::cold, gnu::noinline]] ReportWriter& integer(std::int64_t value) {
     char buffer[24];
     char* end = buffer + sizeof(buffer);
     char* p = end;
@@ -33,8 +35,9 @@ class ReportWriter {
     std::uint64_t magnitude =
         negative ? std::uint64_t(0) - static_cast<std::uint64_t>(value) : static_cast<std::uint64_t>(value);
     do {
-      *--p = static_cast<char>('0' + magnitude % 10u);
-      magnitude /= 10u;
+      std::uint32_t digit = 0;
+      magnitude = divide_u64(magnitude, 10u, digit);
+      *--p = static_cast<char>('0' + digit);
     } while (magnitude != 0u);
     if (negative) *--p = '-';
     sink_(p);
@@ -46,7 +49,7 @@ class ReportWriter {
   // through double, which a single-precision FPU does in software. Digits beyond the
   // 1e9 place are written as zeros (a float has only 7 significant digits anyway).
   // NaN and infinities are written as "nan", "inf", "-inf".
-  ReportWriter& fixed(float value, int decimals) {
+  [[gnu::cold, gnu::noinline]] ReportWriter& fixed(float value, int decimals) {
     if (std::isnan(value)) return text("nan");
     if (std::isinf(value)) return text(value > 0.0f ? "inf" : "-inf");
     if (decimals < 0) decimals = 0;

@@ -12,18 +12,6 @@ using Driver = aloft::icm42688p::Icm42688pDriver<float>;
 
 std::optional<Driver> driver;
 
-// Where the driver's sink writes during one poll.
-struct Batch {
-  aloft::ImuSample<float>* out;
-  std::uint16_t capacity;
-  std::uint16_t count;
-};
-
-void append(void* context, const aloft::ImuSample<float>& sample) {
-  Batch& batch = *static_cast<Batch*>(context);
-  if (batch.count < batch.capacity) batch.out[batch.count++] = sample;
-}
-
 }  // namespace
 
 aloft::Status imu_bring_up(const aloft::ImuBus& bus, std::uint8_t& who_am_i) {
@@ -39,15 +27,7 @@ aloft::Status imu_bring_up(const aloft::ImuBus& bus, std::uint8_t& who_am_i) {
   return begun;
 }
 
-aloft::Status imu_poll(aloft::ImuSample<float>* out, std::uint16_t capacity, std::uint16_t& count) {
-  Batch batch{out, capacity, 0};
-  aloft::icm42688p::SampleSink<float> sink;
-  sink.context = &batch;
-  sink.push = append;
-  const aloft::Status polled = driver->poll(sink);
-  count = batch.count;
-  return polled;
-}
+aloft::Status imu_poll(const aloft::icm42688p::SampleSink<float>& sink) { return driver->poll(sink); }
 
 const aloft::icm42688p::DriverCounters& imu_counters() { return driver->counters(); }
 

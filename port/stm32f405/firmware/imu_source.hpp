@@ -19,9 +19,9 @@ constexpr std::uint8_t who_am_i_expected = aloft::icm42688p::kWhoAmIValue;
 // register_not_kept or bus_error.
 aloft::Status imu_bring_up(const aloft::ImuBus& bus, std::uint8_t& who_am_i);
 
-// One driver poll: up to `capacity` new samples into `out` (at least
-// Icm42688pDriver::kBurstPackets, one burst); how many in `count`.
-aloft::Status imu_poll(aloft::ImuSample<float>* out, std::uint16_t capacity, std::uint16_t& count);
+// One driver poll: each new sample (one burst at most) goes to `sink` as it is decoded,
+// so no batch of samples is held in RAM between the driver and the pipeline.
+aloft::Status imu_poll(const aloft::icm42688p::SampleSink<float>& sink);
 
 // What the driver met since the bring-up.
 const aloft::icm42688p::DriverCounters& imu_counters();

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "aloft/cold_path.hpp"
 #include "aloft_port/port.hpp"
 #include "aloft_port/report_writer.hpp"
 #include "flight_lines.hpp"
@@ -125,17 +126,16 @@ constexpr int exit_bus_failed = 4;
 
 // The stream has ended when no sample came for this long (MCU clock).
 constexpr std::uint64_t stream_end_after_us = 100000;
-constexpr std::uint16_t batch_capacity = aloft::icm42688p::Icm42688pDriver<float>::kBurstPackets;
 
 // Static storage, so the pipeline's whole memory shows in .bss; emplaced once the tensor
 // is validated (no heap).
 std::optional<Pipeline> pipeline;
-aloft::ImuSample<float> batch[batch_capacity];
 aloft::FlightResult<float> flight;
+std::uint32_t samples_this_poll = 0;
 
 // Each finished flight, in the lines the host's replay prints too (flight_lines.hpp);
 // times in the driver's base: µs after the first sample.
-void report_finished_flights() {
+ALOFT_COLD void report_finished_flights() {
   ReportWriter out;
   while (pipeline->take_finished_flight(flight)) {
     aloft_replay_example::write_flight_lines(out, flight, 0);
@@ -143,25 +143,31 @@ void report_finished_flights() {
   }
 }
 
+// The driver's sink: each sample into the pipeline as it is decoded.
+void push_sample(void*, const aloft::ImuSample<float>& sample) {
+  ++samples_this_poll;
+  const aloft::Status pushed = pipeline->push(sample);
+  if (pushed != aloft::Status::ok)
+    ReportWriter().text("sample dropped: ").text(aloft::describe(pushed)).line();
+  report_finished_flights();
+}
+
 // Runs the pipeline until the stream ends; the exit status.
 int run(const aloft::ImuBus& bus) {
   ReportWriter out;
+  aloft::icm42688p::SampleSink<float> sink;
+  sink.push = push_sample;
   std::uint64_t last_sample_at_us = bus.now_us(bus.context);
   while (bus.now_us(bus.context) - last_sample_at_us < stream_end_after_us) {
-    std::uint16_t count = 0;
-    const aloft::Status polled = aloft_stm32f405::imu_poll(batch, batch_capacity, count);
+    samples_this_poll = 0;
+    const aloft::Status polled = aloft_stm32f405::imu_poll(sink);
     if (polled == aloft::Status::register_not_kept) {
       out.text("ICM-42688-P on ").text(bus_name).text(": a register lost its setting; rewritten").line();
     } else if (polled != aloft::Status::ok) {
       out.text("ICM-42688-P on ").text(bus_name).text(": ").text(aloft::describe(polled)).line();
       return exit_bus_failed;
     }
-    if (count > 0) last_sample_at_us = bus.now_us(bus.context);
-    for (std::uint16_t i = 0; i < count; ++i) {
-      const aloft::Status pushed = pipeline->push(batch[i]);
-      if (pushed != aloft::Status::ok) out.text("sample dropped: ").text(aloft::describe(pushed)).line();
-      report_finished_flights();
-    }
+    if (samples_this_poll > 0) last_sample_at_us = bus.now_us(bus.context);
   }
   pipeline->finish();
   report_finished_flights();
@@ -175,7 +181,8 @@ int run(const aloft::ImuBus& bus) {
 
 }  // namespace
 
-int main() {
+// Set-up and the report: optimised for size (the per-sample work is in push_sample).
+ALOFT_COLD int main() {
   aloft::port::init();
   ReportWriter out;
   const aloft::ImuBus bus = board_imu_bus();
