@@ -130,13 +130,14 @@ constexpr std::uint64_t stream_end_after_us = 100000;
 // Static storage, so the pipeline's whole memory shows in .bss; emplaced once the tensor
 // is validated (no heap).
 std::optional<Pipeline> pipeline;
-aloft::FlightResult<float> flight;
 std::uint32_t samples_this_poll = 0;
 
 // Each finished flight, in the lines the host's replay prints too (flight_lines.hpp);
-// times in the driver's base: µs after the first sample.
+// times in the driver's base: µs after the first sample. The flight is copied onto the
+// stack, not kept in static RAM: this path is shallower than the per-sample one.
 ALOFT_COLD void report_finished_flights() {
   ReportWriter out;
+  aloft::FlightResult<float> flight;
   while (pipeline->take_finished_flight(flight)) {
     aloft_replay_example::write_flight_lines(out, flight, 0);
     store_record(flight);
