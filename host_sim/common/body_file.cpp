@@ -42,7 +42,9 @@ Eigen::Vector3d vector3(const json& j, const std::string& key, const std::string
 
 Eigen::Quaterniond quaternion(const json& j, const std::string& key, const std::string& source) {
   if (!j.is_array() || j.size() != 4) {
-    fail(source, "\"" + key + "\" must be a quaternion [w, x, y, z]");
+    fail(source,
+         "\"" + key +
+             "\" must be a quaternion [w, x, y, z] (scalar first; scipy's as_quat() gives x, y, z, w)");
   }
   const Eigen::Quaterniond q(number(j[0], key, source), number(j[1], key, source), number(j[2], key, source),
                              number(j[3], key, source));

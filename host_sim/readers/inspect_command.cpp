@@ -92,6 +92,11 @@ Json summarise_poses(const std::string& path, const PoseNaming& naming) {
   out["duration_s"] = duration_of(trial.time_s);
   out["start_s"] = trial.time_s.front();
   out["has_position"] = !trial.position_m.empty();
+  if (trial.format == "pose_csv") {
+    // The mistake a pose CSV invites: scipy writes its quaternions scalar last.
+    out["quaternion_order"] =
+        "qw, qx, qy, qz by column name, qw the scalar part; scipy's Rotation.as_quat() gives x, y, z, w";
+  }
   return out;
 }
 

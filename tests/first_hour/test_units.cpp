@@ -4,6 +4,8 @@
 // same log right. Segments outside the log, in ms, or over a rest period are bad input.
 #include <catch2/catch.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 
 #include "made_up_box.hpp"
@@ -39,15 +41,23 @@ TEST_CASE("a gyro in deg/s is named from Euler's equations, and --gyro-units deg
   const std::string log = f.dir.write("deg.csv", imu_csv(flight, degrees, false));
   check_refused(run_aloft(f.dir, "diagnose --body " + f.body + " --imu " + log),
                 {"deg.csv", "°/s", "57.3", "--gyro-units deg/s"});
-  const RunResult fixed =
-      run_aloft(f.dir, "diagnose --body " + f.body + " --imu " + log + " --gyro-units deg/s");
+  const std::string converted = f.dir.path("converted.json"), plain = f.dir.path("plain.json");
+  const RunResult fixed = run_aloft(
+      f.dir, "diagnose --body " + f.body + " --imu " + log + " --gyro-units deg/s --json " + converted);
   CAPTURE(fixed.err);
   CHECK(fixed.exit_code == 0);
-  // The same log in rad/s diagnoses as the converted one does.
-  const std::string plain = f.dir.write("rad.csv", imu_csv(flight, Units{}, false));
-  const RunResult same = run_aloft(f.dir, "diagnose --body " + f.body + " --imu " + plain);
-  CHECK(same.exit_code == 0);
-  CHECK(same.out.substr(same.out.find('\n')) == fixed.out.substr(fixed.out.find('\n')));
+  // The same log in rad/s diagnoses as the converted one does (to the rounding of the
+  // written values).
+  const std::string rad = f.dir.write("rad.csv", imu_csv(flight, Units{}, false));
+  REQUIRE(run_aloft(f.dir, "diagnose --body " + f.body + " --imu " + rad + " --json " + plain).exit_code ==
+          0);
+  const nlohmann::json a = nlohmann::json::parse(read_file(converted)),
+                       b = nlohmann::json::parse(read_file(plain));
+  CHECK(a["verdict"]["effect"] == b["verdict"]["effect"]);
+  for (int k = 0; k < 2; ++k) {
+    const double ratio = b["tensor"]["ratio_best"][k].get<double>();
+    CHECK(a["tensor"]["ratio_best"][k].get<double>() == Approx(ratio).epsilon(1e-3));
+  }
 }
 
 TEST_CASE("times in ms are named: by the physics in a window, by the clock in a long log", "[first_hour]") {

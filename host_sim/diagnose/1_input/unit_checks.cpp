@@ -15,9 +15,9 @@ namespace {
 constexpr std::size_t kSpan = 10;
 // c is trusted where it explains at least this share of the change of ω.
 constexpr double kExplained = 0.5;
-// A c within this factor of 1 is a wrong tensor or noise, not a unit.
-constexpr double kNotAUnit = 2.0;
-// A c within this factor of a unit's is taken for that unit.
+// A c within this factor of a unit's is taken for that unit. On every IMU trial of
+// ../shared/data (SI units, some tensors wrong by up to 4 times) c lies within 0.58-1.21
+// wherever it explains half the change of ω: 33 times off the nearest unit's, 1/57.3.
 constexpr double kNearUnit = 1.5;
 
 Eigen::Vector3d euler_rate(const Eigen::Matrix3d& inertia, const Eigen::Matrix3d& inverse,
@@ -91,7 +91,6 @@ EulerScale euler_scale(const std::vector<Flight>& flights, const Body& body) {
 void check_rate_units(const std::vector<Flight>& flights, const Body& body, const std::string& source) {
   const EulerScale scale = euler_scale(flights, body);
   if (scale.explained < kExplained || !(scale.c > 0.0)) return;
-  if (scale.c < kNotAUnit && scale.c > 1.0 / kNotAUnit) return;
   const std::string seen = "ω changes " + format("%.3g", scale.c) +
                            " times as fast as Euler's equations say for these rates and the body's "
                            "tensor (1 in s and rad/s; " +
@@ -101,8 +100,8 @@ void check_rate_units(const std::vector<Flight>& flights, const Body& body, cons
       throw Error(source + ": " + u.cause + ": " + seen + "; give " + u.fix);
     }
   }
-  throw Error(source + ": " + seen +
-              "; check the log's units (--time-units, --gyro-units) and the body's tensor");
+  // Any other c is left to the diagnosis: a wrong tensor moves c too (by up to 1.7 times
+  // on ../shared/data's wrong-moment sessions), and the diagnosis names a wrong tensor.
 }
 
 }  // namespace aloft::host::diagnose
