@@ -334,11 +334,10 @@ std::string session_summary(const SessionDiagnosis& s) {
           << "\n";
     }
     if (std::max(s.flip_period->mean_error_nominal, s.flip_period->mean_error_diagnosed) > 0.5) {
-      out << "  why a flip-period error can be large beside a large shrink: from the first sample a flight "
-             "is simulated open-loop to its end, and near the separatrix (a spin close to the "
-             "intermediate axis) a tiny error in that start rate moves every later flip; the held-out gap "
-             "and the fitted-state line start from each flight's fitted rate, the fair measure of the "
-             "model\n";
+      out << "  why a flip-period error can be large beside a large shrink: the flip period is the time "
+             "between sign changes of the intermediate-axis rate, and near the separatrix (a spin close "
+             "to that axis) a tiny error in the rate moves it a lot, however closely the model follows "
+             "the measured rates; judge the model by the held-out gap above\n";
     }
   }
   for (const FlightDiagnosis& d : s.flights) {
