@@ -1,46 +1,17 @@
 #include "internal_flash.hpp"
 
 #include "aloft_port/port.hpp"
+#include "stm32f405_registers.hpp"
 
 namespace aloft::port::stm32f405 {
 namespace {
 
-// ---- FLASH interface registers (RM0090 rev 19). The lead moves this block into the
-// ---- board's register header when merging the STM32F405 port.
-constexpr std::uint32_t flash_base = 0x40023C00u;  // §2.3 memory map: Flash interface register
-struct FlashRegisters {
-  static constexpr std::uint32_t acr = flash_base + 0x00;   // §3.9.1 FLASH_ACR
-  static constexpr std::uint32_t keyr = flash_base + 0x04;  // §3.9.2 FLASH_KEYR
-  static constexpr std::uint32_t sr = flash_base + 0x0C;    // §3.9.4 FLASH_SR
-  static constexpr std::uint32_t cr = flash_base + 0x10;    // §3.9.5 FLASH_CR
-};
-constexpr std::uint32_t key1 = 0x45670123u;  // §3.5.1 unlocking the flash control register
-constexpr std::uint32_t key2 = 0xCDEF89ABu;
-// FLASH_SR (§3.9.4)
-constexpr std::uint32_t sr_eop = 1u << 0;
-constexpr std::uint32_t sr_operr = 1u << 1;
-constexpr std::uint32_t sr_wrperr = 1u << 4;
-constexpr std::uint32_t sr_pgaerr = 1u << 5;
-constexpr std::uint32_t sr_pgperr = 1u << 6;
-constexpr std::uint32_t sr_pgserr = 1u << 7;
-constexpr std::uint32_t sr_bsy = 1u << 16;
-constexpr std::uint32_t sr_errors = sr_operr | sr_wrperr | sr_pgaerr | sr_pgperr | sr_pgserr;
-// FLASH_CR (§3.9.5)
-constexpr std::uint32_t cr_pg = 1u << 0;
-constexpr std::uint32_t cr_ser = 1u << 1;
-constexpr std::uint32_t cr_snb_shift = 3;  // SNB[3:0] at bits 6:3
-constexpr std::uint32_t cr_snb_mask = 0xFu << cr_snb_shift;
-constexpr std::uint32_t cr_psize_x32 = 2u << 8;  // PSIZE = 10 (§3.6.2, Table 8: 2.7-3.6 V)
-constexpr std::uint32_t cr_psize_mask = 3u << 8;
-constexpr std::uint32_t cr_strt = 1u << 16;
-constexpr std::uint32_t cr_lock = 1u << 31;
-// FLASH_ACR (§3.9.1): data cache enable and reset (flushed after an erase, §3.5.2)
-constexpr std::uint32_t acr_dcen = 1u << 10;
-constexpr std::uint32_t acr_dcrst = 1u << 12;
-// Sectors 5..11: 128 KiB from 0x08020000 (§3.3, Table 5, 1 MiB devices)
+// Registers and bits: stm32f405_registers.hpp (RM0090 §3.9). Sectors 5..11 are 128 KiB
+// from 0x08020000 (§3.3, Table 5, 1 MiB devices).
+using namespace flash_bits;
 constexpr std::uint32_t sector5_address = 0x08020000u;
 constexpr std::uint32_t sector_size = 128u * 1024u;
-// ---- end of FLASH interface registers
+constexpr std::uint32_t sr_errors = sr_operr | sr_wrperr | sr_pgaerr | sr_pgperr | sr_pgserr;
 
 constexpr std::uint32_t erase_timeout_us = 4000000;  // DS8626 Table 43: tERASE128KB max 2 s (x32)
 constexpr std::uint32_t program_timeout_us = 1000;   // DS8626 Table 43: tWORD max 100 µs (x32)
@@ -48,7 +19,7 @@ constexpr std::uint32_t program_timeout_us = 1000;   // DS8626 Table 43: tWORD m
 // cycle, so 200 polls per µs of timeout are more than the timeout itself.
 constexpr std::uint32_t polls_per_us = 200;
 
-volatile std::uint32_t& reg(std::uint32_t address) {
+volatile std::uint32_t& word_register(std::uint32_t address) {
   return *reinterpret_cast<volatile std::uint32_t*>(address);
 }
 
@@ -60,9 +31,9 @@ Status wait_while_busy(std::uint32_t timeout_us) {
   const std::uint64_t limit = std::uint64_t(timeout_us) * (ticks_per_second() / 1000000u + 1);
   const std::uint64_t max_polls = std::uint64_t(timeout_us) * polls_per_us;
   for (std::uint64_t polls = 0; polls < max_polls; ++polls) {
-    if ((reg(FlashRegisters::sr) & sr_bsy) == 0) {
-      const std::uint32_t errors = reg(FlashRegisters::sr) & sr_errors;
-      reg(FlashRegisters::sr) = errors | sr_eop;  // write 1 to clear
+    if ((flash().sr & sr_bsy) == 0) {
+      const std::uint32_t errors = flash().sr & sr_errors;
+      flash().sr = errors | sr_eop;  // write 1 to clear
       return errors == 0 ? Status::ok : Status::bus_error;
     }
     if (ticks() - start > limit) break;
@@ -73,25 +44,25 @@ Status wait_while_busy(std::uint32_t timeout_us) {
 // Unlocks the control register and clears stale flags; bus_error if it stays locked.
 Status unlock() {
   if (wait_while_busy(erase_timeout_us) != Status::ok) return Status::bus_error;
-  if (reg(FlashRegisters::cr) & cr_lock) {
-    reg(FlashRegisters::keyr) = key1;
-    reg(FlashRegisters::keyr) = key2;
+  if (flash().cr & cr_lock) {
+    flash().keyr = key1;
+    flash().keyr = key2;
   }
-  reg(FlashRegisters::sr) = sr_errors | sr_eop;
-  return (reg(FlashRegisters::cr) & cr_lock) ? Status::bus_error : Status::ok;
+  flash().sr = sr_errors | sr_eop;
+  return (flash().cr & cr_lock) ? Status::bus_error : Status::ok;
 }
 
 Status lock(Status s) {
-  reg(FlashRegisters::cr) = (reg(FlashRegisters::cr) & ~(cr_pg | cr_ser | cr_snb_mask)) | cr_lock;
+  flash().cr = (flash().cr & ~(cr_pg | cr_ser | cr_snb_mask)) | cr_lock;
   return s;
 }
 
 void flush_data_cache() {
-  const std::uint32_t acr = reg(FlashRegisters::acr);
+  const std::uint32_t acr = flash().acr;
   if ((acr & acr_dcen) == 0) return;
-  reg(FlashRegisters::acr) = acr & ~acr_dcen;  // reset only while disabled (§3.5.2)
-  reg(FlashRegisters::acr) = (acr & ~acr_dcen) | acr_dcrst;
-  reg(FlashRegisters::acr) = acr & ~acr_dcrst;
+  flash().acr = acr & ~acr_dcen;  // reset only while disabled (§3.5.2)
+  flash().acr = (acr & ~acr_dcen) | acr_dcrst;
+  flash().acr = acr & ~acr_dcrst;
 }
 
 std::uint32_t word_at(const std::uint8_t* p) {
@@ -132,10 +103,10 @@ Status InternalFlash::program(void* context, std::uint32_t block, std::uint32_t 
       size > sector_size - offset)
     return Status::invalid_dimension;
   if (unlock() != Status::ok) return lock(Status::bus_error);
-  reg(FlashRegisters::cr) = (reg(FlashRegisters::cr) & ~cr_psize_mask) | cr_psize_x32 | cr_pg;
+  flash().cr = (flash().cr & ~cr_psize_mask) | cr_psize_x32 | cr_pg;
   const std::uint32_t base = sector_address(f.config_.first_sector + block) + offset;
   for (std::uint32_t i = 0; i < size; i += 4) {
-    volatile std::uint32_t& word = reg(base + i);
+    volatile std::uint32_t& word = word_register(base + i);
     const std::uint32_t value = word_at(data + i);
     word = value;
     if (wait_while_busy(program_timeout_us) != Status::ok) return lock(Status::bus_error);
@@ -150,9 +121,8 @@ Status InternalFlash::erase(void* context, std::uint32_t block) {
   if (block >= f.device_.block_count) return Status::invalid_dimension;
   if (unlock() != Status::ok) return lock(Status::bus_error);
   const std::uint32_t sector = f.config_.first_sector + block;
-  reg(FlashRegisters::cr) = (reg(FlashRegisters::cr) & ~(cr_psize_mask | cr_snb_mask | cr_pg)) |
-                            cr_psize_x32 | cr_ser | (sector << cr_snb_shift);
-  reg(FlashRegisters::cr) = reg(FlashRegisters::cr) | cr_strt;
+  flash().cr = (flash().cr & ~(cr_psize_mask | cr_snb_mask | cr_pg)) | cr_psize_x32 | cr_ser | cr_snb(sector);
+  flash().cr = flash().cr | cr_strt;
   const Status s = wait_while_busy(erase_timeout_us);
   flush_data_cache();
   return lock(s);

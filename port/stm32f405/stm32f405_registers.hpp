@@ -90,6 +90,7 @@ constexpr std::uint32_t acr_latency_mask = 7u << 0;
 constexpr std::uint32_t acr_prften = 1u << 8;
 constexpr std::uint32_t acr_icen = 1u << 9;
 constexpr std::uint32_t acr_dcen = 1u << 10;
+constexpr std::uint32_t acr_dcrst = 1u << 12;  // data cache reset, only while DCEN is 0 (§3.5.2)
 constexpr std::uint32_t key1 = 0x45670123u;  // §3.5.1: KEYR takes key1 then key2
 constexpr std::uint32_t key2 = 0xCDEF89ABu;
 constexpr std::uint32_t optkey1 = 0x08192A3Bu;  // §3.6.2

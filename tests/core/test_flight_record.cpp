@@ -122,12 +122,16 @@ ALOFT_TEST_CASE("flight record: the tensor and settings hashes are CRC-32 of the
   aloft::Mat3<double> other = tensor;
   other(2, 2) = 0.0301;
   ALOFT_CHECK(aloft::tensor_hash(other) != 0xFABCA080u);
-  // The default settings at K = 8: struct.pack('<HH4fffHB3fII', 8, 10, 1, 0, 0, 0, 3.0, 30.0,
-  // 3, 0, 0, 0, 0, 20000, 200000).
+  // The default settings at K = 8: zlib.crc32(struct.pack('<HH4fB3fIIfIIff4fIHffIfHfffI',
+  // 8, 10, 1, 0, 0, 0, 0, 0, 0, 0, 20000, 200000, 3.0, 40000, 300000, 0.5, 2.0, 2.0, 0.1, 0.5,
+  // 30.0, 4000, 5, 0.5, 0.2, 3000, 0.5, 3, 0.15, 0.5, 10.0, 1000)).
   const aloft::OnboardPipelineSettings<float> defaults;
-  ALOFT_CHECK(aloft::settings_hash(defaults, 8) == 0x0985E803u);
-  ALOFT_CHECK(aloft::settings_hash(aloft::OnboardPipelineSettings<double>(), 8) == 0x0985E803u);
-  ALOFT_CHECK(aloft::settings_hash(defaults, 4) != 0x0985E803u);
+  ALOFT_CHECK(aloft::settings_hash(defaults, 8) == 0x4F2F55A6u);
+  ALOFT_CHECK(aloft::settings_hash(aloft::OnboardPipelineSettings<double>(), 8) == 0x4F2F55A6u);
+  ALOFT_CHECK(aloft::settings_hash(defaults, 4) != 0x4F2F55A6u);
+  aloft::OnboardPipelineSettings<float> release_changed = defaults;
+  release_changed.release.derivative_half_span_us = 2000;  // the last field hashed
+  ALOFT_CHECK(aloft::settings_hash(release_changed, 8) != 0x4F2F55A6u);
 }
 
 ALOFT_TEST_CASE("flight record: made from the pipeline's result", "[records]") {
@@ -142,18 +146,23 @@ ALOFT_TEST_CASE("flight record: made from the pipeline's result", "[records]") {
   result.turned = true;
   result.overall.add_values(0.3f, 0.04f);  // RMS of (0.3, 0.4) is sqrt(0.125)
   result.overall.add_values(0.4f, 0.03f);
-  aloft::SeedReport<float> seeds[5];
-  for (int i = 0; i < 5; ++i) seeds[i].stats.add_values(0.1f * static_cast<float>(i + 1), 0.5f);
-  const FlightRecord r = aloft::make_flight_record(result, 11u, 22u, seeds, 5);
+  for (std::uint32_t i = 0; i < aloft::kept_first_seeds; ++i) {
+    result.first_seeds[i] = {0.1f * static_cast<float>(i + 1), 0.5f};
+  }
+  result.first_seed_count = aloft::kept_first_seeds;
+  aloft::FlightResult<float> no_seeds = result;
+  no_seeds.first_seed_count = 0;
+  const FlightRecord r = aloft::make_flight_record(result, 11u, 22u);
   ALOFT_CHECK(r.flight_number == 3u);
   ALOFT_CHECK((r.release_us == 1500000u && r.landing_us == 2300000u && r.landed && r.turned));
   ALOFT_CHECK((r.samples == 800u && r.gaps == 1u && r.clipped_samples == 4u && r.comparisons == 2u));
   ALOFT_CHECK(std::abs(r.rms_da_rad - std::sqrt(0.125f)) < 1e-6f);
   ALOFT_CHECK(same_bits(r.max_da_rad, 0.4f));
   ALOFT_CHECK(r.seeds_stored == 4u);
-  ALOFT_CHECK(same_bits(r.seeds[3].rms_da_rad, seeds[3].stats.rms_da()));
+  ALOFT_CHECK(same_bits(r.seeds[3].rms_da_rad, 0.4f));
+  ALOFT_CHECK(same_bits(r.seeds[2].rms_rel_err, 0.5f));
   ALOFT_CHECK((r.tensor_hash == 11u && r.settings_hash == 22u));
-  ALOFT_CHECK(aloft::make_flight_record(result, 0u, 0u).seeds_stored == 0u);
+  ALOFT_CHECK(aloft::make_flight_record(no_seeds, 0u, 0u).seeds_stored == 0u);
 }
 
 ALOFT_TEST_CASE("record ring: starts on a device full of garbage, keeps the newest after wraps",

@@ -75,7 +75,9 @@ TEST_CASE("aloft records lists the flights of a good dump as a table, JSON and C
   CHECK(f[3]["tensor_hash"] != f[0]["tensor_hash"]);
   CHECK(f[4]["landed"] == false);
   CHECK(f[4]["landing_s"].is_null());
-  CHECK(f[0]["first_seeds"].size() == 0);
+  REQUIRE(f[0]["first_seeds"].size() == 4);  // the check keeps the flight's first four seeds
+  for (const auto& seed : f[0]["first_seeds"]) CHECK(seed["rms_da_deg"].get<double>() < 0.1);
+  CHECK(f[3]["first_seeds"][0]["rms_da_deg"].get<double>() > 10 * f[0]["first_seeds"][0]["rms_da_deg"].get<double>());
 
   const auto csv = run_aloft("records --csv '" + path + "'");
   CHECK(csv.exit_code == 0);

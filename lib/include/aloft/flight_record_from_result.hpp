@@ -4,11 +4,18 @@
 // (aloft/crc32.hpp) over little-endian bytes, numbers as IEEE-754 binary32 whatever
 // Scalar is (a firmware checks in float):
 //   tensor hash:   Ixx, Iyy, Izz, Ixy, Ixz, Iyz of the tensor as given, kg·m² (24 bytes)
-//   settings hash: live simulations K (u16), seed_every (u16), sensor_to_body w, x, y, z,
-//                  flight.free_fall_below_m_s2, flight.landing_above_m_s2,
-//                  flight.release_samples (u16), imu_position_known (u8, 0 or 1),
-//                  imu_position_m x, y, z, bridge_gap_up_to_us (u32),
-//                  end_flight_after_gap_us (u32)  (51 bytes)
+//   settings hash: every setting the onboard pipeline uses (OnboardPipelineSettings), in
+//                  the order written in settings_hash below (117 bytes): K (u16),
+//                  seed_every (u16), sensor_to_body w x y z, imu_position_known (u8),
+//                  imu_position_m x y z, bridge_gap_up_to_us (u32),
+//                  end_flight_after_gap_us (u32), gap_interval_factor, min_flight_us
+//                  (u32), rearm_after_landing_us (u32), turned_at_least_rad,
+//                  estimate_min_turn_rad, then release: accel_floor_m_s2,
+//                  accel_relative, torque_relative, angular_accel_floor_rad_s2,
+//                  confirm_us (u32), confirm_samples (u16), release_fraction,
+//                  level_margin_m_s2, fade_out_at_most_us (u32), step_fraction,
+//                  landing_samples (u16), max_lever_arm_m, fit_rms_fraction, ridge_rad_s2,
+//                  derivative_half_span_us (u32). (Unlisted types: f32.)
 #pragma once
 
 #include <cstdint>
@@ -31,30 +38,49 @@ std::uint32_t tensor_hash(const Mat3<Scalar>& tensor) {
 
 template <typename Scalar>
 std::uint32_t settings_hash(const OnboardPipelineSettings<Scalar>& s, int live_simulations) {
-  std::uint8_t bytes[51];
+  std::uint8_t bytes[117];
   std::uint8_t* p = bytes;
   const auto f32 = [&p](Scalar v) { le::put_f32(p, static_cast<float>(v)), p += 4; };
-  le::put_u16(p, static_cast<std::uint16_t>(live_simulations)), p += 2;
-  le::put_u16(p, s.check.seed_every), p += 2;
+  const auto u32 = [&p](std::uint32_t v) { le::put_u32(p, v), p += 4; };
+  const auto u16 = [&p](std::uint16_t v) { le::put_u16(p, v), p += 2; };
+  u16(static_cast<std::uint16_t>(live_simulations));
+  u16(s.check.seed_every);
   const Quat<Scalar>& q = s.check.sensor_to_body;
   for (const Scalar v : {q.w(), q.x(), q.y(), q.z()}) f32(v);
-  f32(s.check.flight.free_fall_below_m_s2);
-  f32(s.check.flight.landing_above_m_s2);
-  le::put_u16(p, s.check.flight.release_samples), p += 2;
   le::put_u8(p, s.imu_position_known ? 1 : 0), p += 1;
   for (int i = 0; i < 3; ++i) f32(s.imu_position_m[i]);
-  le::put_u32(p, s.bridge_gap_up_to_us), p += 4;
-  le::put_u32(p, s.end_flight_after_gap_us), p += 4;
+  u32(s.bridge_gap_up_to_us);
+  u32(s.end_flight_after_gap_us);
+  f32(s.gap_interval_factor);
+  u32(s.min_flight_us);
+  u32(s.rearm_after_landing_us);
+  f32(s.turned_at_least_rad);
+  f32(s.estimate_min_turn_rad);
+  const ReleaseDetectorSettings<Scalar>& r = s.release;
+  f32(r.free_flight.accel_floor_m_s2);
+  f32(r.free_flight.accel_relative);
+  f32(r.free_flight.torque_relative);
+  f32(r.free_flight.angular_accel_floor_rad_s2);
+  u32(r.confirm_us);
+  u16(r.confirm_samples);
+  f32(r.release_fraction);
+  f32(r.level_margin_m_s2);
+  u32(r.fade_out_at_most_us);
+  f32(r.step_fraction);
+  u16(r.landing_samples);
+  f32(r.max_lever_arm_m);
+  f32(r.fit_rms_fraction);
+  f32(r.ridge_rad_s2);
+  u32(r.derivative_half_span_us);
   return crc32(bytes, static_cast<std::size_t>(p - bytes));
 }
 
-// The record of one finished flight; its sequence number is set when the ring stores
-// it. `seeds` (optional) are the flight's first seeded simulations, in seeding order;
-// at most flight_record_seeds of them are kept.
+// The record of one finished flight, with its first seeds (FlightResult::first_seeds);
+// its sequence number is set when the ring stores it.
+static_assert(kept_first_seeds == flight_record_seeds, "a record holds the seeds the check keeps");
 template <typename Scalar>
 FlightRecord make_flight_record(const FlightResult<Scalar>& result, std::uint32_t tensor_hash_value,
-                                std::uint32_t settings_hash_value, const SeedReport<Scalar>* seeds = nullptr,
-                                std::uint32_t seed_count = 0) {
+                                std::uint32_t settings_hash_value) {
   FlightRecord r;
   r.flight_number = result.flight_number;
   r.release_us = result.release_us;
@@ -71,10 +97,10 @@ FlightRecord make_flight_record(const FlightResult<Scalar>& result, std::uint32_
   r.max_da_rad = static_cast<float>(result.overall.max_da());
   r.max_rel_err = static_cast<float>(result.overall.max_relative_error());
   r.seeds_stored =
-      seeds == nullptr ? 0 : (seed_count < flight_record_seeds ? seed_count : flight_record_seeds);
+      result.first_seed_count < flight_record_seeds ? result.first_seed_count : flight_record_seeds;
   for (std::uint32_t i = 0; i < r.seeds_stored; ++i) {
-    r.seeds[i].rms_da_rad = static_cast<float>(seeds[i].stats.rms_da());
-    r.seeds[i].rms_rel_err = static_cast<float>(seeds[i].stats.rms_relative_error());
+    r.seeds[i].rms_da_rad = static_cast<float>(result.first_seeds[i].rms_da_rad);
+    r.seeds[i].rms_rel_err = static_cast<float>(result.first_seeds[i].rms_rel_err);
   }
   r.tensor_hash = tensor_hash_value;
   r.settings_hash = settings_hash_value;

@@ -6,7 +6,10 @@
 //   - every `seed_every` airborne samples starts a simulation from the measured rate;
 //     at most K are alive, and starting one more retires the oldest;
 //   - advances every live simulation one step per sample (torque-free body rate, RK4)
-//     and compares it with the gyro: DA and relative error, per seed and overall.
+//     and compares it with the gyro: DA and relative error, per seed and overall;
+//   - keeps the RMS DA and relative error of the flight's first `kept_first_seeds`
+//     seeds when they retire: they ran longest, and a flight record stores them
+//     (aloft/flight_record.hpp).
 // Rates are compared as body rates, so no orientation is integrated: a gyro alone
 // cannot observe it and the torque-free body rate does not depend on it. The
 // simulations live in the tensor's principal axes (Euler's equations with a diagonal
@@ -41,6 +44,15 @@ struct SeedReport {
   bool live = false;
   DeviationStats<Scalar> stats;
 };
+
+// One seed's figures once it is no longer held: what a flight record keeps of it.
+template <typename Scalar>
+struct SeedSummary {
+  Scalar rms_da_rad = Scalar(0);
+  Scalar rms_rel_err = Scalar(0);
+};
+
+constexpr std::uint32_t kept_first_seeds = 4;
 
 template <typename Scalar, int K>
 class OnboardCheck {
@@ -97,6 +109,16 @@ class OnboardCheck {
   const DeviationStats<Scalar>& overall() const { return overall_; }
   // Slot i in [0, K): the i-th newest seed still held (live, or the last ones retired).
   const SeedReport<Scalar>& seed(int i) const { return slots_[slot_of_newest(i)]; }
+  // Seed n (< kept_first_seeds) as it stands if still held, else as it stood when it
+  // retired; false when fewer than n + 1 seeds have started.
+  bool first_seed(std::uint32_t n, SeedSummary<Scalar>& out) const {
+    if (n >= kept_first_seeds || n >= seeds_started_) return false;
+    out = retired_first_[n];
+    for (const Slot& slot : slots_) {
+      if (slot.live && slot.seed_number == n) out = summary(slot.stats);
+    }
+    return true;
+  }
 
  private:
   struct Slot : SeedReport<Scalar> {
@@ -137,6 +159,8 @@ class OnboardCheck {
     newest_ = (newest_ + 1) % K;  // the oldest slot, once all K are in use
     Slot& slot = slots_[newest_];
     if (!slot.live) ++live_;
+    if (slot.live && slot.seed_number < kept_first_seeds)
+      retired_first_[slot.seed_number] = summary(slot.stats);
     slot.seed_number = seeds_started_++;
     slot.seeded_at_sample = samples_;
     slot.live = true;
@@ -145,12 +169,16 @@ class OnboardCheck {
   }
 
   int slot_of_newest(int i) const { return ((newest_ - i) % K + K) % K; }
+  static SeedSummary<Scalar> summary(const DeviationStats<Scalar>& stats) {
+    return {stats.rms_da(), stats.rms_relative_error()};
+  }
 
   EulerCoefficients<Scalar> coefficients_;
   OnboardCheckSettings<Scalar> settings_;
   Mat3<Scalar> sensor_to_principal_;
   FlightDetector<Scalar> detector_;
   Slot slots_[K] = {};
+  SeedSummary<Scalar> retired_first_[kept_first_seeds] = {};
   DeviationStats<Scalar> overall_;
   std::uint32_t samples_ = 0;
   std::uint32_t seeds_started_ = 0;

@@ -70,6 +70,10 @@ struct FlightResult {
   DeviationStats<Scalar> overall;
   Scalar turn_angle_rad = Scalar(0);          // integral of |w| over the flight
   Scalar lever_arm_fit_rms_m_s2 = Scalar(0);  // rms of |a - K r| over the flight with the reported r
+  // The flight's first seeded simulations (the first run of the check: before any gap
+  // that restarted it), for its flight record.
+  SeedSummary<Scalar> first_seeds[kept_first_seeds] = {};
+  std::uint32_t first_seed_count = 0;
 };
 
 template <typename Scalar, int K>
@@ -233,11 +237,13 @@ class OnboardPipeline {
 
   // The simulations alive before a long gap cannot be carried across it.
   void restart_check() {
+    keep_first_seeds();
     current_.overall.merge(check_->overall());
     check_.emplace(inertia_, check_settings_);
   }
 
   void end_flight(bool landed, std::uint64_t at_us) {
+    keep_first_seeds();
     current_.overall.merge(check_->overall());
     check_.reset();
     detector_.reset();
@@ -252,6 +258,14 @@ class OnboardPipeline {
     if (landed) rearmed_at_us_ = at_us + settings_.rearm_after_landing_us;
     report_lever_arm();
     finished_ = true;
+  }
+
+  // From the check's first run that started any seed.
+  void keep_first_seeds() {
+    if (current_.first_seed_count > 0) return;
+    for (std::uint32_t n = 0; n < kept_first_seeds && check_->first_seed(n, current_.first_seeds[n]); ++n) {
+      current_.first_seed_count = n + 1;
+    }
   }
 
   void report_lever_arm() {

@@ -18,9 +18,11 @@ constexpr float inertia_kg_m2[3][3] = {
 
 using Pipeline = aloft::OnboardPipeline<float, live_simulations>;
 
+// The tensor is symmetric, so the array reads the same in row or column order.
+inline aloft::Mat3<float> body_tensor() { return Eigen::Map<const aloft::Mat3<float>>(&inertia_kg_m2[0][0]); }
+
 inline aloft::Status make_inertia(aloft::InertiaTensor<float>& inertia) {
-  return aloft::InertiaTensor<float>::make_from_tensor(
-      Eigen::Map<const aloft::Mat3<float>>(&inertia_kg_m2[0][0]), inertia);
+  return aloft::InertiaTensor<float>::make_from_tensor(body_tensor(), inertia);
 }
 
 inline aloft::OnboardPipelineSettings<float> pipeline_settings() {

@@ -4,7 +4,9 @@
 //
 // The sensor's bus is SPI1 (../spi1_imu_bus.hpp), or, in the replay image built with
 // ALOFT_STM32F405_FAKE_BUS, a fake chip that plays a recorded throw's FIFO bytes (see
-// CMakeLists.txt). Exit status (a test reads it through semihosting):
+// CMakeLists.txt). Each flight's record is stored (flight_storage.hpp) in the internal
+// flash, or in the replay image on a RAM fake that is written out at the end. Exit status (a test reads it
+// through semihosting):
 //   0 the replay's recording ended        3 no ICM-42688-P (WHO_AM_I not 0x47)
 //   1 set-up failed                       4 the bus failed
 //   5 the sensor stopped delivering samples (the flight image never ends otherwise)
@@ -18,14 +20,16 @@
 #include "imu_source.hpp"
 
 #if defined(ALOFT_STM32F405_FAKE_BUS)
-#include "aloft/flight_record_from_result.hpp"
-#include "aloft/record_ring.hpp"
 #include "fake_flash.hpp"
 #include "fake_imu_bus.hpp"  // provides fake_imu_bus(): see CMakeLists.txt
 #include "record_area_dump.hpp"
 #include "replay_throw.hpp"
 #else
+#include "internal_flash.hpp"
 #include "spi1_imu_bus.hpp"
+#endif
+#if !defined(ALOFT_STM32F405_NO_RECORDS)
+#include "flight_storage.hpp"
 #endif
 
 namespace {
@@ -38,32 +42,12 @@ constexpr const char* bus_name = "the fake bus";
 aloft::ImuBus board_imu_bus() { return aloft_stm32f405::fake_imu_bus(); }
 constexpr int exit_stream_ended = 0;
 
-// Flight records: QEMU does not model the flash controller, so the replay image keeps its
-// record ring on the RAM fake (tests/core/fake_flash.hpp, three 512-byte blocks) and
-// writes the record area out by semihosting at the end (ALOFT_STM32F405_RECORDS_PATH,
-// given by the test); the host reads it back with `aloft records`' reader.
+// QEMU does not model the flash controller, so the replay image keeps its record ring on
+// the RAM fake (tests/core/fake_flash.hpp, three 512-byte blocks) and writes the record
+// area out by semihosting at the end (ALOFT_STM32F405_RECORDS_PATH, given by the test);
+// the host reads it back with `aloft records`' reader.
 aloft::testing::FakeFlash<512, 3> record_flash;
-aloft::RecordRing record_ring(record_flash.device());
-std::uint32_t record_tensor_hash = 0, record_settings_hash = 0;
-
-// Stores the flight's record and says which sequence number it got.
-void store_record(const aloft::FlightResult<float>& f) {
-  ReportWriter out;
-  aloft::FlightRecord record = aloft::make_flight_record(f, record_tensor_hash, record_settings_hash);
-  const aloft::Status stored = record_ring.append(record);
-  if (stored != aloft::Status::ok) {
-    out.text("record not stored: ").text(aloft::describe(stored)).line();
-    return;
-  }
-  out.text("record_sequence ").integer(record.sequence).line();
-}
-
-aloft::Status start_records(const aloft::Mat3<float>& tensor,
-                            const aloft::OnboardPipelineSettings<float>& s) {
-  record_tensor_hash = aloft::tensor_hash(tensor);
-  record_settings_hash = aloft::settings_hash(s, aloft_stm32f405::live_simulations);
-  return record_ring.mount();
-}
+const aloft::BlockDevice& record_device() { return record_flash.device(); }
 
 void write_records() {
   ReportWriter out;
@@ -85,14 +69,12 @@ aloft::OnboardPipelineSettings<float> pipeline_settings() {
 
 // The replay checks the recorded throw with the body it was thrown with, as the host's
 // `aloft replay --body` does (replay_throw.hpp).
-aloft::Status make_inertia(aloft::InertiaTensor<float>& inertia) {
+aloft::Mat3<float> body_tensor() {
   aloft::Mat3<float> tensor;
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c) tensor(r, c) = aloft_stm32f405::replay_inertia_kg_m2[r][c];
   }
-  const aloft::Status made = aloft::InertiaTensor<float>::make_from_tensor(tensor, inertia);
-  if (made != aloft::Status::ok) return made;
-  return start_records(tensor, pipeline_settings());
+  return tensor;
 }
 #else
 constexpr const char* bus_name = "SPI1";
@@ -101,11 +83,42 @@ aloft::ImuBus board_imu_bus() {
   return aloft::port::stm32f405::spi1_imu_bus();
 }
 constexpr int exit_stream_ended = 5;
-void store_record(const aloft::FlightResult<float>&) {}
+
+#if !defined(ALOFT_STM32F405_NO_RECORDS)
+// The records go to the last three 128 KiB sectors of the internal flash (9 to 11).
+aloft::port::stm32f405::InternalFlash record_flash;
+const aloft::BlockDevice& record_device() { return record_flash.device(); }
+#endif
 void write_records() {}
-using aloft_stm32f405::make_inertia;
+using aloft_stm32f405::body_tensor;
 using aloft_stm32f405::pipeline_settings;
 #endif
+
+#if defined(ALOFT_STM32F405_NO_RECORDS)
+// The image without flight records, built only to measure what the records add to
+// footprint.json (CMakeLists.txt).
+void start_records(const aloft::Mat3<float>&, const aloft::OnboardPipelineSettings<float>&) {}
+void store_record(const aloft::FlightResult<float>&) {}
+#else
+void start_records(const aloft::Mat3<float>& tensor, const aloft::OnboardPipelineSettings<float>& settings) {
+  const aloft::Status mounted = aloft_stm32f405::start_flight_storage(record_device(), tensor, settings);
+  if (mounted != aloft::Status::ok)
+    ReportWriter().text("flight records off: ").text(aloft::describe(mounted)).line();
+}
+
+// Stores the flight's record and says which sequence number it got.
+void store_record(const aloft::FlightResult<float>& f) {
+  ReportWriter out;
+  std::uint32_t sequence = 0;
+  const aloft::Status stored = aloft_stm32f405::store_flight(f, sequence);
+  if (stored != aloft::Status::ok) {
+    out.text("record not stored: ").text(aloft::describe(stored)).line();
+    return;
+  }
+  out.text("record_sequence ").integer(sequence).line();
+}
+#endif
+
 constexpr int exit_setup_failed = 1;
 constexpr int exit_sensor_not_found = 3;
 constexpr int exit_bus_failed = 4;
@@ -178,12 +191,15 @@ int main() {
     return exit_bus_failed;
   }
   aloft::InertiaTensor<float> inertia;
-  const aloft::Status made = make_inertia(inertia);
+  const aloft::Mat3<float> tensor = body_tensor();
+  const aloft::Status made = aloft::InertiaTensor<float>::make_from_tensor(tensor, inertia);
   if (made != aloft::Status::ok) {
     out.text("inertia tensor rejected: ").text(aloft::describe(made)).line();
     return exit_setup_failed;
   }
-  pipeline.emplace(inertia, pipeline_settings());
+  const aloft::OnboardPipelineSettings<float> settings = pipeline_settings();
+  start_records(tensor, settings);
+  pipeline.emplace(inertia, settings);
   out.text("ICM-42688-P found on ").text(bus_name).text("; onboard pipeline running, K = ");
   out.integer(aloft_stm32f405::live_simulations).line();
   return run(bus);

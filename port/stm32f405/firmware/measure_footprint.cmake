@@ -1,6 +1,6 @@
 # Measures the STM32F405 firmware's footprint and writes footprint.json (SPEC §5). Run by
 # the build (CMakeLists.txt) as
-#   cmake -DFIRMWARE=... -DTIMED=... -DBASELINE=... -DSIZE=... -DOBJDUMP=... -DQEMU=<list>
+#   cmake -DFIRMWARE=... -DNO_RECORDS=... -DTIMED=... -DBASELINE=... -DSIZE=... -DOBJDUMP=... -DQEMU=<list>
 #         -DSTACK_TOOL=... -DCI_DIRS=<list> -DOUTPUT=.../footprint.json -P measure_footprint.cmake
 #
 # Method, key by key (shared pieces: ../../cortex_m/footprint_functions.cmake):
@@ -12,6 +12,10 @@
 #     handlers with their exception frames; the bus's function pointers resolve to the
 #     SPI1 functions.
 #   heap_bytes: 0 by construction: the port makes any heap use a link error.
+#   details.records_flash_bytes, details.records_ram_bytes: what the flight records add
+#     (issue 23: <= 2 KiB flash, <= 256 B RAM): the flight image minus the same image built
+#     without them (NO_RECORDS, main.cpp's ALOFT_STM32F405_NO_RECORDS), flash and
+#     data + bss + worst-case stack each.
 #   instructions_per_sample: the timing image and its baseline run under QEMU with
 #     -icount shift=0, where every guest instruction advances the virtual clock by 1 ns;
 #     each measures instructions per SysTick tick itself on a loop of known length, then
@@ -31,16 +35,48 @@ run_timed(${TIMED} with)
 run_timed(${BASELINE} without)
 timed_difference(instructions_per_sample)
 
-disassemble(${FIRMWARE} ${OUTPUT}.disassembly.txt disassembly)
-# Indirect calls besides the text output: the ImuBus's three function pointers.
-string(REGEX MATCHALL "<_ZN5aloft4port9stm32f405[^>]*(read|write|ticks_in_us)[^>]*>:" bus_functions "${disassembly}")
-set(indirect)
-foreach(f IN LISTS bus_functions)
-  string(REGEX REPLACE "^<(.*)>:$" "\\1" f "${f}")
-  list(APPEND indirect --indirect ${f})
-endforeach()
-worst_case_stack(${OUTPUT}.disassembly.txt "${CI_DIRS}" ${indirect})
+# Worst-case stack of an image; indirect calls besides the text output: the ImuBus's and
+# the internal flash's (BlockDevice) function pointers.
+function(image_stack elf ci_dirs out)
+  disassemble(${elf} ${elf}.disassembly.txt disassembly)
+  string(REGEX MATCHALL "<_ZN5aloft4port9stm32f405[^>]*(read|write|ticks_in_us|program|erase)[^>]*>:"
+         port_functions "${disassembly}")
+  set(indirect)
+  foreach(f IN LISTS port_functions)
+    string(REGEX REPLACE "^<(.*)>:$" "\\1" f "${f}")
+    list(APPEND indirect --indirect ${f})
+  endforeach()
+  worst_case_stack(${elf}.disassembly.txt "${ci_dirs}" ${indirect})
+  foreach(key stack_bytes root_bytes interrupt_bytes)
+    set(${out}_${key} ${${key}} PARENT_SCOPE)
+  endforeach()
+endfunction()
+
+image_stack(${FIRMWARE} "${CI_DIRS}" image)
+set(stack_bytes ${image_stack_bytes})
+set(root_bytes ${image_root_bytes})
+set(interrupt_bytes ${image_interrupt_bytes})
 math(EXPR ram_bytes "${ram_bytes_without_stack} + ${stack_bytes}")
+
+section_sizes(${NO_RECORDS} plain)
+image_stack(${NO_RECORDS} "${NO_RECORDS_CI_DIRS}" plain)
+math(EXPR records_flash_bytes "${image_flash} - ${plain_flash}")
+
+# Flash bytes the linked image keeps from one object file (the map file's input sections
+# at flash addresses).
+function(object_flash_bytes map object out)
+  file(READ ${map} text)
+  string(REGEX MATCHALL "\n \\.(text|rodata)[^ \n]*[ \n]+0x08[0-9a-f]+ +0x[0-9a-f]+ +[^\n]*${object}" hits "${text}")
+  set(total 0)
+  foreach(hit IN LISTS hits)
+    string(REGEX MATCH "0x08[0-9a-f]+ +(0x[0-9a-f]+)" _ "${hit}")
+    math(EXPR total "${total} + ${CMAKE_MATCH_1}")
+  endforeach()
+  set(${out} ${total} PARENT_SCOPE)
+endfunction()
+object_flash_bytes(${FIRMWARE}.map "flight_storage\\.cpp\\.obj" records_code_flash_bytes)
+object_flash_bytes(${FIRMWARE}.map "internal_flash\\.cpp\\.obj" records_driver_flash_bytes)
+math(EXPR records_ram_bytes "${ram_bytes} - (${plain_data} + ${plain_bss} + ${plain_stack_bytes})")
 
 verdict(${image_flash} 24576 flash_ok)
 verdict(${ram_bytes} 4096 ram_ok)
@@ -59,6 +95,11 @@ set(json "{
     \"flash_bytes\": ${image_flash},
     \"ram_bytes\": ${ram_bytes},
     \"ram_bytes_is\": \"data + bss + worst-case stack\",
+    \"records_flash_bytes\": ${records_flash_bytes},
+    \"records_ram_bytes\": ${records_ram_bytes},
+    \"records_code_flash_bytes\": ${records_code_flash_bytes},
+    \"records_driver_flash_bytes\": ${records_driver_flash_bytes},
+    \"records_are\": \"what the flight records (record ring on the internal flash, one record per flight) add: this image minus the same image built without them; of the flash, records_code_flash_bytes is flight_storage.cpp (record format, CRC, hashes, ring) and records_driver_flash_bytes the internal flash driver (internal_flash.cpp), from the map file; the rest is main.cpp's calls and messages\",
     \"targets_met\": {\"flash_le_24KiB\": ${flash_ok}, \"ram_le_4KiB\": ${ram_ok}, \"heap_0\": true, \"instructions_per_sample_le_2500\": ${instructions_ok}},
     \"instructions_per_sample_covers\": \"the ICM-42688-P driver's poll and decode (fake chip on the bus) + release detection + onboard check at K = 8 (OnboardPipeline::push), minus the same bus reads without decoding\",
     \"stack_main_path_bytes\": ${root_bytes},
@@ -74,4 +115,4 @@ set(json "{
 # Written whole under a temporary name, then renamed: never a half-written report.
 file(WRITE ${OUTPUT}.tmp "${json}")
 file(RENAME ${OUTPUT}.tmp ${OUTPUT})
-message(STATUS "stm32f405 footprint: flash ${image_flash} B (text ${image_text}, data ${image_data}), RAM ${ram_bytes} B (bss ${image_bss}, stack ${stack_bytes}), ${instructions_per_sample} instructions/sample")
+message(STATUS "stm32f405 footprint: flash ${image_flash} B (text ${image_text}, data ${image_data}), RAM ${ram_bytes} B (bss ${image_bss}, stack ${stack_bytes}), ${instructions_per_sample} instructions/sample; flight records add ${records_flash_bytes} B flash (${records_code_flash_bytes} record code, ${records_driver_flash_bytes} flash driver), ${records_ram_bytes} B RAM")

@@ -1,0 +1,23 @@
+// The firmware's flight records: one per finished flight, appended to a record ring
+// (aloft/record_ring.hpp) on the block device the image gives it — the STM32F405's
+// internal flash on a board (../internal_flash.hpp), the RAM fake under QEMU, which does
+// not model the flash interface. Each record carries the hashes of the tensor and the
+// settings it was checked with (aloft/flight_record_from_result.hpp).
+#pragma once
+
+#include <cstdint>
+
+#include "aloft/block_device.hpp"
+#include "aloft/onboard_pipeline.hpp"
+
+namespace aloft_stm32f405 {
+
+// Mounts the ring on `device` (which must outlive it) and remembers the hashes; ok, or
+// the ring's status (the flights are then checked and printed, but not stored).
+aloft::Status start_flight_storage(const aloft::BlockDevice& device, const aloft::Mat3<float>& tensor,
+                                   const aloft::OnboardPipelineSettings<float>& settings);
+
+// Appends the flight's record; its sequence number in `sequence`.
+aloft::Status store_flight(const aloft::FlightResult<float>& flight, std::uint32_t& sequence);
+
+}  // namespace aloft_stm32f405
