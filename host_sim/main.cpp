@@ -22,6 +22,10 @@ int main(int argc, char** argv) {
   aloft::host::add_replay_command(app);
   aloft::host::add_records_command(app);
   aloft::host::add_summarize_command(app);
+  if (const auto unknown = aloft::host::unknown_command(app, argc, argv)) {
+    std::fprintf(stderr, "%s\n", unknown->c_str());
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version

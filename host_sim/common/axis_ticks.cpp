@@ -30,6 +30,17 @@ AxisTicks round_ticks(double lo, double hi, int count) {
   return ticks;
 }
 
+AxisTicks ticks_within(double lo, double hi, int count) {
+  AxisTicks ticks = round_ticks(lo, hi, count);
+  const double slack = 1e-9 * ticks.step;
+  std::vector<double> inside;
+  for (double v : ticks.values) {
+    if (v >= lo - slack && v <= hi + slack) inside.push_back(v);
+  }
+  if (!inside.empty()) ticks.values = inside;
+  return ticks;
+}
+
 std::string tick_label(double value, int decimals) {
   char text[48];
   std::snprintf(text, sizeof text, "%.*f", decimals, value);

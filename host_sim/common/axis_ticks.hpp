@@ -19,6 +19,11 @@ struct AxisTicks {
 // [lo, hi]; the axis should run from first() to last(). lo == hi gets a unit-wide axis.
 AxisTicks round_ticks(double lo, double hi, int count = 5);
 
+// Round ticks that lie within [lo, hi], for an axis that runs exactly from lo to hi: a
+// time axis that ends where the flight ends (round_ticks would run a 0.81 s flight's
+// axis to 1 s).
+AxisTicks ticks_within(double lo, double hi, int count = 5);
+
 // A tick value at the ticks' precision: "0", "0.25", "-1.5" (never "-0").
 std::string tick_label(double value, int decimals);
 

@@ -9,6 +9,7 @@
 
 #include "common/commands.hpp"
 #include "common/file_error.hpp"
+#include "common/inertia_scale_check.hpp"
 #include "common/warning.hpp"
 
 namespace aloft::host {
@@ -41,7 +42,9 @@ Eigen::Vector3d vector3(const json& j, const std::string& key, const std::string
 
 Eigen::Quaterniond quaternion(const json& j, const std::string& key, const std::string& source) {
   if (!j.is_array() || j.size() != 4) {
-    fail(source, "\"" + key + "\" must be a quaternion [w, x, y, z]");
+    fail(source,
+         "\"" + key +
+             "\" must be a quaternion [w, x, y, z] (scalar first; scipy's as_quat() gives x, y, z, w)");
   }
   const Eigen::Quaterniond q(number(j[0], key, source), number(j[1], key, source), number(j[2], key, source),
                              number(j[3], key, source));
@@ -85,6 +88,11 @@ InertiaTensor<double> parse_inertia(const json& body, double mass, bool has_mass
   if (inertia.contains("tensor")) {
     const json& t = inertia["tensor"];
     if (!t.is_array() || t.size() != 3) fail(source, "\"tensor\" must be a 3x3 array");
+    if (t[0].is_number()) {
+      fail(source,
+           "\"tensor\" is the full 3x3 array [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]]; "
+           "for three principal moments write \"principal\": [I1, I2, I3]");
+    }
     Eigen::Matrix3d m;
     for (int r = 0; r < 3; ++r) m.row(r) = vector3(t[size_t(r)], "tensor", source).transpose();
     make_measured([&](double slack) { return InertiaTensor<double>::make_from_tensor(m, out, slack); }, out,
@@ -140,7 +148,8 @@ void warn_unknown_keys(const json& object, std::initializer_list<const char*> kn
     for (const char* k : known) found = found || item.key() == k;
     if (!found) unknown += (unknown.empty() ? "\"" : ", \"") + where + item.key() + "\"";
   }
-  if (!unknown.empty()) warn(source + ": unknown key(s) " + unknown + " ignored (SPEC §2)");
+  if (!unknown.empty())
+    warn(source + ": unknown key(s) " + unknown + " ignored (body file keys: docs/file-formats.md)");
 }
 
 void warn_unknown_body_keys(const json& j, const std::string& source) {
@@ -187,6 +196,7 @@ Body parse_body(const json& j, const std::string& source) {
     if (imu.contains("position")) body.imu_position_m = vector3(imu["position"], "imu.position", source);
   }
   warn_unknown_body_keys(j, source);
+  if (const auto problem = inertia_scale_problem(body)) warn(source + ": " + *problem);
   return body;
 }
 

@@ -18,16 +18,18 @@ fs::path parent_of(const fs::path& p) {
   return parent.empty() ? fs::path(".") : parent;
 }
 
+std::string check_output_folder(const std::string& text);
+
+// A missing folder is made when the file is written (write_file_atomically), as --plot
+// makes its folder, so only an existing file, or the nearest existing folder, can refuse.
 std::string check_output_file(const std::string& text) {
   const fs::path p(text);
   std::error_code ec;
   if (text.empty()) return "an empty path";
   if (fs::is_directory(p, ec)) return text + " is a folder; give a file name";
   if (fs::exists(p, ec)) return writable(p) ? "" : text + " is not writable";
-  const fs::path folder = parent_of(p);
-  if (!fs::is_directory(folder, ec)) return text + ": folder " + folder.string() + " does not exist";
-  if (!writable(folder)) return text + ": folder " + folder.string() + " is not writable";
-  return "";
+  const std::string folder_problem = check_output_folder(parent_of(p).string());
+  return folder_problem.empty() ? "" : text + ": " + folder_problem;
 }
 
 std::string check_output_folder(const std::string& text) {

@@ -10,8 +10,8 @@ namespace aloft::host {
 // 18446744073709551615 by an unsigned conversion.
 CLI::Validator whole_number();
 
-// A file the command will write: not an existing directory, in an existing folder the
-// program may write to, and writable itself if it exists.
+// A file the command will write: not an existing directory, writable itself if it
+// exists, and in a folder that output_folder() accepts (missing folders are made).
 CLI::Validator output_file();
 
 // A folder the command will write into (created if needed): not an existing file, and

@@ -76,7 +76,22 @@ std::string first_unused_word(const CLI::App& app, const CLI::App* command) {
   return "";
 }
 
+std::string unknown_command_line(const CLI::App& app, const std::string& word) {
+  const std::vector<std::string> commands = command_names(app);
+  return app.get_name() + ": unknown command " + word + suggestion(word, commands) +
+         "; commands: " + join(commands) + "; see " + app.get_name() + " --help";
+}
+
 }  // namespace
+
+std::optional<std::string> unknown_command(const CLI::App& app, int argc, const char* const* argv) {
+  if (argc < 2 || argv[1][0] == '-') return std::nullopt;
+  const std::string word = argv[1];
+  for (const std::string& c : command_names(app)) {
+    if (c == word) return std::nullopt;
+  }
+  return unknown_command_line(app, word);
+}
 
 std::string usage_error_line(const CLI::App& app, const CLI::ParseError& error) {
   const CLI::App* command = reached_command(app);
@@ -88,11 +103,7 @@ std::string usage_error_line(const CLI::App& app, const CLI::ParseError& error) 
     return who + ": unknown option " + unused + suggestion(unused, options) + "; options: " + join(options) +
            help;
   }
-  if (!unused.empty() && command == &app) {
-    const std::vector<std::string> commands = command_names(app);
-    return who + ": unknown command " + unused + suggestion(unused, commands) +
-           "; commands: " + join(commands) + help;
-  }
+  if (!unused.empty() && command == &app) return unknown_command_line(app, unused);
   if (!unused.empty()) {
     return who + ": unexpected argument " + unused + "; options: " + join(option_names(command)) + help;
   }

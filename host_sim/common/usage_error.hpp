@@ -6,11 +6,17 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 
 namespace aloft::host {
 
 // "aloft simulate: unknown option --bdy (did you mean --body?); options: --body, ...".
 std::string usage_error_line(const CLI::App& app, const CLI::ParseError& error);
+
+// The same line for a first word that names no command, or nothing when it names one (or
+// is an option). Checked before CLI11 parses, because CLI11 answers `aloft frobnicate
+// --help` with the program's help and exit 0, so a typo would pass for success.
+std::optional<std::string> unknown_command(const CLI::App& app, int argc, const char* const* argv);
 
 }  // namespace aloft::host

@@ -1,12 +1,14 @@
 // `aloft diagnose` (SPEC §4): reads the body and one kind of trial, diagnoses the gap
 // between the nominal torque-free model and the measured motion, prints a short summary
 // and writes the JSON report (--json) and the plots (--plot) only when all went well.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include "common/atomic_file.hpp"
 #include "common/body_file.hpp"
@@ -15,13 +17,20 @@
 #include "diagnose/1_input/airborne_windows.hpp"
 #include "diagnose/1_input/flight_input.hpp"
 #include "diagnose/1_input/marker_fit_check.hpp"
+#include "diagnose/1_input/segment_checks.hpp"
+#include "diagnose/1_input/unit_checks.hpp"
 #include "diagnose/5_flow/diagnosis.hpp"
+#include "diagnose/6_report/corrected_body.hpp"
 #include "diagnose/6_report/gap_plot.hpp"
 #include "diagnose/6_report/report_json.hpp"
+#include "diagnose/terminal_progress.hpp"
+#include "readers/accel_at_rest.hpp"
 #include "readers/imu_csv_reader.hpp"
+#include "readers/imu_units.hpp"
 #include "readers/marker_pose_fit.hpp"
 #include "readers/pose_naming_options.hpp"
 #include "readers/segments.hpp"
+#include "readers/time_stamps.hpp"
 #include "readers/trial_file.hpp"
 
 namespace aloft::host {
@@ -30,9 +39,10 @@ namespace {
 struct DiagnoseOptions {
   std::string body;
   std::string imu, segments, window, markers, poses;
+  ImuUnits imu_units;      // --time-units, --gyro-units, --accel-units
   PoseNaming pose_naming;  // --pose-columns / --osim --joint for a .mot/.sto
-  std::string json, plot;
-  int threads = 2;
+  std::string json, plot, corrected_body;
+  int threads = 0;  // 0: every core, as aloft study
 };
 
 // "A:B" in seconds, A < B.
@@ -59,6 +69,12 @@ double log_duration(const ImuLog& log) {
   return log.time_s.size() > 1 ? log.time_s.back() - log.time_s.front() : 0.0;
 }
 
+// --threads, or every core (capped as the option is) when it is not given.
+int session_threads(int asked) {
+  if (asked > 0) return asked;
+  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
+}
+
 std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 void require_enough_samples(const diagnose::Flight& flight, const std::string& source) {
@@ -77,16 +93,36 @@ struct Trial {
   std::string source;
 };
 
+// The log in SI units, its accelerometer checked (a log in g would be one long flight).
+ImuLog read_imu_log(const DiagnoseOptions& o) {
+  ImuLog log = read_imu_csv(o.imu);
+  convert_to_si(log, o.imu_units);
+  check_accel_units(log);
+  return log;
+}
+
+// A word on a sample rate no gyro logs at, which times in ms give (500 Hz reads 0.5 Hz).
+std::string sample_rate_hint(const ImuLog& log) {
+  const double rate = estimated_rate_hz(log.time_s);
+  if (!(rate > 0.0) || rate >= 10.0) return "";
+  char text[112];
+  std::snprintf(text, sizeof text, " (%.3g samples per second: are its times in ms? --time-units ms)", rate);
+  return text;
+}
+
 Trial read_trial(const DiagnoseOptions& o, const Body& body) {
   Trial t;
   if (!o.imu.empty()) {
     t.source = o.imu;
-    const ImuLog log = read_imu_csv(o.imu);
+    const ImuLog log = read_imu_log(o);
     if (!o.segments.empty()) {
       t.session = true;
-      t.flights = diagnose::flights_from_segments(log, body, read_segments_csv(o.segments));
+      const std::vector<Segment> segments = read_segments_csv(o.segments);
+      diagnose::check_segments(log, segments, o.segments);
+      t.flights = diagnose::flights_from_segments(log, body, segments);
     } else if (!o.window.empty()) {
       const auto [a, b] = parse_window(o.window);
+      diagnose::check_segments(log, {{o.window, a, b, ""}}, "--window");
       t.flights.push_back(diagnose::flight_from_imu(log, body, a, b, file_name(o.imu) + " " + o.window));
       t.source = o.imu + " (window " + o.window + ")";
     } else if (log_duration(log) > diagnose::kLongLog_s) {
@@ -94,8 +130,8 @@ Trial read_trial(const DiagnoseOptions& o, const Body& body) {
       char length[32];
       std::snprintf(length, sizeof length, "%.1f s", log_duration(log));
       if (log.accel_m_s2.empty()) {
-        throw Error(o.imu + ": a " + length +
-                    " log without an accelerometer to find its flights by; give --segments or --window");
+        throw Error(o.imu + ": a " + length + " log without an accelerometer to find its flights by" +
+                    sample_rate_hint(log) + "; give --segments or --window");
       }
       const std::vector<Segment> windows = diagnose::airborne_windows(log);
       if (windows.empty()) {
@@ -108,6 +144,7 @@ Trial read_trial(const DiagnoseOptions& o, const Body& body) {
     } else {
       t.flights.push_back(diagnose::flight_from_imu(log, body, -INFINITY, INFINITY, file_name(o.imu)));
     }
+    diagnose::check_rate_units(t.flights, body, o.imu);
   } else if (!o.markers.empty()) {
     t.source = o.markers;
     PoseFitReport fit_report;
@@ -144,7 +181,9 @@ void run_diagnose(const DiagnoseOptions& o) {
 
   nlohmann::json report;
   if (session) {
-    diagnose::SessionDiagnosis d = diagnose::diagnose_session(flights, nominal, o.threads);
+    diagnose::SessionDiagnosis d = diagnose::diagnose_session(flights, nominal, session_threads(o.threads),
+                                                              diagnose::terminal_flight_progress());
+    diagnose::clear_terminal_progress();
     if (found_by_detector) {
       d.pooled.notes.push_back(
           std::to_string(flights.size()) +
@@ -170,6 +209,13 @@ void run_diagnose(const DiagnoseOptions& o) {
   if (!o.json.empty()) {
     write_file_atomically(o.json, [&](std::ostream& out) { out << report.dump(2) << "\n"; });
   }
+  if (!o.corrected_body.empty()) {
+    const bool written = diagnose::write_corrected_body(o.body, report, o.corrected_body);
+    std::cout << "  corrected body: "
+              << (written ? o.corrected_body + " (the body file with the fitted tensor)"
+                          : "none written (the verdict changes no moment and no axis)")
+              << "\n";
+  }
 }
 
 }  // namespace
@@ -180,18 +226,24 @@ void add_diagnose_command(CLI::App& app) {
       app.add_subcommand("diagnose",
                          "where the simulation parts from the measured motion, which unmodelled effect "
                          "causes it, and how far the gap shrinks with it (judged on held-out data)");
-  cmd->add_option("--body", options->body, "body file (SPEC §2)")->required();
+  cmd->add_option("--body", options->body, "body file (JSON: docs/file-formats.md)")->required();
   cmd->add_option("--imu", options->imu, "IMU log, plain or phyphox CSV");
   cmd->add_option("--segments", options->segments, "segments CSV: one flight per row (pooled analysis)");
   cmd->add_option("--window", options->window, "A:B, the flight inside the IMU log (seconds)");
+  add_imu_unit_options(*cmd, options->imu_units);
   cmd->add_option("--markers", options->markers, "marker trajectories (.trc or .c3d)");
   cmd->add_option("--poses", options->poses, "poses (.mot, .sto or pose CSV)");
   add_pose_naming_options(*cmd, options->pose_naming);
   cmd->add_option("--json", options->json, "write the JSON report here")->check(output_file());
+  cmd->add_option("--corrected-body", options->corrected_body,
+                  "write the body file with the fitted tensor here, when the verdict fits one")
+      ->check(output_file());
   cmd->add_option("--plot", options->plot, "write DA, relative error and invariant plots (SVG, PNG) here")
       ->check(output_folder());
-  cmd->add_option("--threads", options->threads, "threads for a session (default 2)")
-      ->check(CLI::Range(1, 64));
+  // No CLI::Range: its description shows in the help as "INT:INT in [1 - 64]".
+  cmd->add_option("--threads", options->threads, "threads for a session, 1 to 64 (default: every core)")
+      ->type_name("N")
+      ->check(CLI::Range(1, 64).description(""));
   cmd->callback([options] { run_diagnose(*options); });
 }
 

@@ -65,7 +65,8 @@ ImuColumns recognise_header(const std::vector<std::string>& header, const std::s
   if (!columns) {
     throw Error(at_line(path, header_line,
                         "header is neither a plain IMU log (t,gx,gy,gz[,ax,ay,az]) nor a "
-                        "phyphox export (\"Time (s)\",\"Gyroscope x (rad/s)\",...)"));
+                        "phyphox export (\"Time (s)\",\"Gyroscope x (rad/s)\",...), delimited by "
+                        "commas, semicolons or tabs"));
   }
   const int accel_found = (columns->accel[0] >= 0) + (columns->accel[1] >= 0) + (columns->accel[2] >= 0);
   if (accel_found != 0 && accel_found != 3) {
@@ -78,12 +79,14 @@ ImuColumns recognise_header(const std::vector<std::string>& header, const std::s
 
 static ImuLog read_imu_csv_unguarded(const std::string& path) {
   const TextFile file = read_text_file(path, [&](const std::string& line, std::size_t number) {
-    recognise_header(split_csv_line(line, path, number), path, number);
+    recognise_header(split_csv_line(line, path, number, 0, csv_delimiter(line)), path, number);
   });
   std::size_t header_index = 0;
   while (is_blank(file.lines[header_index])) ++header_index;
   const std::size_t header_line = header_index + 1;
-  const std::vector<std::string> header = split_csv_line(file.lines[header_index], path, header_line);
+  const char delimiter = csv_delimiter(file.lines[header_index]);
+  const std::vector<std::string> header =
+      split_csv_line(file.lines[header_index], path, header_line, 0, delimiter);
   const std::optional<ImuColumns> columns = recognise_header(header, path, header_line);
   const bool has_accel = columns->accel[0] >= 0;
 
@@ -94,14 +97,17 @@ static ImuLog read_imu_csv_unguarded(const std::string& path) {
   for (std::size_t i = header_index + 1; i < file.lines.size(); ++i) {
     if (is_blank(file.lines[i])) continue;
     const std::size_t line = i + 1;
-    const std::vector<std::string> cells = split_csv_line(file.lines[i], path, line);
+    const std::vector<std::string> cells = split_csv_line(file.lines[i], path, line, 0, delimiter);
     if (cells.size() != header.size()) {
       throw Error(at_line(path, line,
                           std::to_string(cells.size()) + " cells where the header has " +
                               std::to_string(header.size()) + " (truncated or malformed row)"));
     }
     auto value = [&](int column) {
-      const double v = parse_number(cells[column], path, line, header[column]);
+      // A file delimited by ';' or tabs may write its numbers with a decimal comma.
+      const std::string& cell = cells[column];
+      const double v =
+          parse_number(delimiter == ',' ? cell : with_decimal_point(cell), path, line, header[column]);
       if (!std::isfinite(v)) {
         throw Error(
             at_line(path, line, "column " + header[column] + " is not finite ('" + cells[column] + "')"));

@@ -3,7 +3,9 @@
 //   plain:   t, gx, gy, gz [, ax, ay, az]              (s, rad/s, m/s²)
 //   phyphox: "Time (s)", "Gyroscope x (rad/s)", "Gyroscope y (rad/s)",
 //            "Gyroscope z (rad/s)" [, "Absolute (rad/s)"]   (the magnitude is ignored)
-// Every sample must be finite and time strictly increasing; otherwise
+// Cells are delimited by commas, or, where the header holds none, by semicolons or tabs
+// (then numbers may carry a decimal comma: phyphox's other exports); a UTF-8 byte order
+// mark is dropped. Every sample must be finite and time strictly increasing; otherwise
 // aloft::host::Error "FILE:LINE: problem".
 #pragma once
 

@@ -12,7 +12,9 @@
 #include "common/body_file.hpp"
 #include "common/commands.hpp"
 #include "readers/c3d_reader.hpp"
+#include "readers/accel_at_rest.hpp"
 #include "readers/imu_csv_reader.hpp"
+#include "readers/imu_units.hpp"
 #include "readers/marker_pose_fit.hpp"
 #include "readers/pose_naming_options.hpp"
 #include "readers/pose_reader.hpp"
@@ -90,11 +92,32 @@ Json summarise_poses(const std::string& path, const PoseNaming& naming) {
   out["duration_s"] = duration_of(trial.time_s);
   out["start_s"] = trial.time_s.front();
   out["has_position"] = !trial.position_m.empty();
+  if (trial.format == "pose_csv") {
+    // The mistake a pose CSV invites: scipy writes its quaternions scalar last.
+    out["quaternion_order"] =
+        "qw, qx, qy, qz by column name, qw the scalar part; scipy's Rotation.as_quat() gives x, y, z, w";
+  }
   return out;
 }
 
-Json summarise_imu(const std::string& path) {
-  const ImuLog log = read_imu_csv(path);
+// What the physics says of the log's units, where the log alone can tell.
+Json unit_notes(const ImuLog& log) {
+  Json notes = Json::array();
+  const double rest = accel_at_rest(log);
+  if (rest > 0.85 && rest < 1.15) {
+    notes.push_back(
+        "the accelerometer reads about 1 at rest where gravity reads 9.81 m/s^2: it is in g "
+        "(--accel-units g)");
+  }
+  notes.push_back(
+      "rates and times are checked against Euler's equations for the body by aloft diagnose "
+      "(a gyro in deg/s or times in ms are named there)");
+  return notes;
+}
+
+Json summarise_imu(const std::string& path, const ImuUnits& units) {
+  ImuLog log = read_imu_csv(path);
+  convert_to_si(log, units);
   Json out;
   out["format"] = log.format;
   out["frames"] = log.time_s.size();
@@ -106,6 +129,8 @@ Json summarise_imu(const std::string& path) {
   double peak = 0.0;
   for (const auto& w : log.gyro_rad_s) peak = std::max(peak, w.norm());
   out["max_gyro_rad_s"] = peak;
+  if (!log.accel_m_s2.empty()) out["accel_at_rest_m_s2"] = accel_at_rest(log);
+  out["notes"] = unit_notes(log);
   return out;
 }
 
@@ -131,7 +156,9 @@ void add_inspect_command(CLI::App& app) {
   cmd->add_option("file", *file, "trial file: .trc, .c3d, .mot, .sto, pose/IMU/segments CSV")->required();
   cmd->add_option("--body", *body, "body file: also fit its marker set to each frame of a marker file");
   add_pose_naming_options(*cmd, *naming);
-  cmd->callback([file, body, naming] {
+  auto units = std::make_shared<ImuUnits>();
+  add_imu_unit_options(*cmd, *units);
+  cmd->callback([file, body, naming, units] {
     const TrialFormat format = detect_trial_format(*file);
     if (!body->empty() && format.kind != TrialKind::markers) {
       throw Error(*file + ": --body applies to marker files only");
@@ -140,7 +167,7 @@ void add_inspect_command(CLI::App& app) {
     switch (format.kind) {
       case TrialKind::markers: summary = summarise_markers(*file, format, *body); break;
       case TrialKind::poses: summary = summarise_poses(*file, *naming); break;
-      case TrialKind::imu: summary = summarise_imu(*file); break;
+      case TrialKind::imu: summary = summarise_imu(*file, *units); break;
       case TrialKind::segments: summary = summarise_segments(*file); break;
     }
     std::cout << summary.dump(2) << '\n';

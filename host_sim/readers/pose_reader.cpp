@@ -204,7 +204,9 @@ PoseCsvColumns pose_csv_columns(const std::vector<std::string>& header, const st
   for (int k = 0; k < 4; ++k) c.q[k] = find(quaternion[k]);
   for (int k = 0; k < 3; ++k) c.p[k] = find(position[k]);
   if (c.t < 0 || c.q[0] < 0 || c.q[1] < 0 || c.q[2] < 0 || c.q[3] < 0) {
-    throw Error(at_line(path, header_line, "header must hold t,qw,qx,qy,qz[,x,y,z]"));
+    throw Error(at_line(
+        path, header_line,
+        "header must hold t,qw,qx,qy,qz[,x,y,z] (qw the scalar part: scipy's as_quat() gives x, y, z, w)"));
   }
   const int positions = (c.p[0] >= 0) + (c.p[1] >= 0) + (c.p[2] >= 0);
   if (positions != 0 && positions != 3) {

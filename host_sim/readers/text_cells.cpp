@@ -52,6 +52,7 @@ TextFile read_text_file(const std::string& path, const FirstLineCheck& check_fir
       throw Error(path + ": holds binary data, not text");
     }
     content.append(chunk.data(), got);
+    if (content.size() == got) content = without_byte_order_mark(content);
     if (!first_line_checked) {
       std::string line;
       std::size_t number = 0;
@@ -83,7 +84,7 @@ std::string at_line(const std::string& path, std::size_t line_number, const std:
 }
 
 std::vector<std::string> split_csv_line(const std::string& line, const std::string& path,
-                                        std::size_t line_number, std::size_t max_cells) {
+                                        std::size_t line_number, std::size_t max_cells, char delimiter) {
   std::vector<std::string> cells;
   std::string cell;
   bool quoted = false;
@@ -105,7 +106,7 @@ std::vector<std::string> split_csv_line(const std::string& line, const std::stri
       quoted = true;
       cell_was_quoted = true;
       cell.clear();  // spaces before the opening quote are not content
-    } else if (c == ',') {
+    } else if (c == delimiter) {
       cells.push_back(cell_was_quoted ? cell : trim(cell));
       cell.clear();
       cell_was_quoted = false;
@@ -113,7 +114,7 @@ std::vector<std::string> split_csv_line(const std::string& line, const std::stri
         const std::string rest = trim(line.substr(i + 1));
         // A wholly quoted remainder is one quoted cell; anything else is kept verbatim.
         const std::vector<std::string> unquoted = !rest.empty() && rest.front() == '"'
-                                                      ? split_csv_line(rest, path, line_number)
+                                                      ? split_csv_line(rest, path, line_number, 0, delimiter)
                                                       : std::vector<std::string>{};
         cells.push_back(unquoted.size() == 1 ? unquoted[0] : rest);
         return cells;
@@ -129,6 +130,30 @@ std::vector<std::string> split_csv_line(const std::string& line, const std::stri
   if (quoted) throw Error(at_line(path, line_number, "unterminated quote"));
   cells.push_back(cell_was_quoted ? cell : trim(cell));
   return cells;
+}
+
+char csv_delimiter(const std::string& header_line) {
+  bool quoted = false;
+  bool semicolon = false, tab = false;
+  for (const char c : header_line) {
+    if (c == '"') quoted = !quoted;
+    if (quoted) continue;
+    if (c == ',') return ',';
+    semicolon = semicolon || c == ';';
+    tab = tab || c == '\t';
+  }
+  return semicolon ? ';' : tab ? '\t' : ',';
+}
+
+std::string with_decimal_point(std::string cell) {
+  for (char& c : cell) {
+    if (c == ',') c = '.';
+  }
+  return cell;
+}
+
+std::string without_byte_order_mark(const std::string& text) {
+  return text.rfind("\xEF\xBB\xBF", 0) == 0 ? text.substr(3) : text;
 }
 
 std::vector<std::string> split_tab_line(const std::string& line) {

@@ -26,7 +26,8 @@ struct TextFile {
 // aloft::host::Error when it is not the header the reader expects.
 using FirstLineCheck = std::function<void(const std::string& line, std::size_t line_number)>;
 
-// Reads the whole file, in chunks. Throws aloft::host::Error if it cannot be opened, is
+// Reads the whole file, in chunks. A UTF-8 byte order mark (what Excel and many Windows
+// tools put first) is dropped. Throws aloft::host::Error if it cannot be opened, is
 // empty (no non-blank line), or holds NUL bytes (a binary file given to a text reader).
 // Both checks that can be made early are made early — a NUL byte as soon as its chunk is
 // read, `check_first_line` as soon as the first line is complete — so that a large file
@@ -40,8 +41,21 @@ std::string at_line(const std::string& path, std::size_t line_number, const std:
 // quotes may hold commas, and "" inside quotes is one quote. An unterminated quote
 // throws (with the line number). With max_cells > 0 the last cell takes the rest of the
 // line, commas included (a free-text comment column).
+// `delimiter` is ',' unless a file says otherwise (csv_delimiter).
 std::vector<std::string> split_csv_line(const std::string& line, const std::string& path,
-                                        std::size_t line_number, std::size_t max_cells = 0);
+                                        std::size_t line_number, std::size_t max_cells = 0,
+                                        char delimiter = ',');
+
+// The cell delimiter a CSV header row uses: ',' when it holds one outside quotes, else
+// ';' or a tab (phyphox's and spreadsheets' other exports), else ','.
+char csv_delimiter(const std::string& header_line);
+
+// "1,5" -> "1.5": a number written with a decimal comma, as files delimited by ';' or tabs
+// in many locales are (phyphox's "decimal comma" exports).
+std::string with_decimal_point(std::string cell);
+
+// The text without a leading UTF-8 byte order mark.
+std::string without_byte_order_mark(const std::string& text);
 
 // Splits at each tab, keeping empty cells (TRC: an empty cell is an occluded marker).
 // Cells are trimmed of spaces.

@@ -18,7 +18,8 @@ namespace {
 // The header cells of a CSV line, trimmed and lower-cased.
 std::set<std::string> header_names(const std::string& line, const std::string& path) {
   std::set<std::string> names;
-  for (const auto& cell : split_csv_line(line, path, 1)) names.insert(to_lower(trim(cell)));
+  for (const auto& cell : split_csv_line(line, path, 1, 0, csv_delimiter(line)))
+    names.insert(to_lower(trim(cell)));
   return names;
 }
 
@@ -53,6 +54,7 @@ static TrialFormat detect_trial_format_unguarded(const std::string& path) {
   std::string head(4096, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
+  head = without_byte_order_mark(head);
   if (head.empty()) throw Error(path + ": file is empty");
   if (head.find('\0') != std::string::npos) {
     if (head.size() >= 2 && static_cast<unsigned char>(head[1]) == 0x50) return {TrialKind::markers, "c3d"};

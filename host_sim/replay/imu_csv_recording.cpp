@@ -24,8 +24,10 @@ std::uint64_t microseconds_after_first(const ImuLog& log, std::size_t i) {
 
 }  // namespace
 
-Recording read_imu_csv_recording(const std::string& path) {
-  const ImuLog log = read_imu_csv(path);
+Recording read_imu_csv_recording(const std::string& path) { return imu_csv_recording(read_imu_csv(path)); }
+
+Recording imu_csv_recording(const ImuLog& log) {
+  const std::string& path = log.path;
   if (log.accel_m_s2.empty()) {
     throw Error(
         at_line(path, log.header_line,

@@ -9,6 +9,7 @@
 
 #include <string>
 
+#include "common/trial.hpp"
 #include "replay/recording.hpp"
 
 namespace aloft::host {
@@ -17,5 +18,8 @@ namespace aloft::host {
 // columns, a cell that is not a finite number, time not strictly increasing (also after
 // rounding to whole microseconds), or a file without samples.
 Recording read_imu_csv_recording(const std::string& path);
+
+// The same from a log already read (and converted to SI units by the caller).
+Recording imu_csv_recording(const ImuLog& log);
 
 }  // namespace aloft::host

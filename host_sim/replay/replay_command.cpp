@@ -10,6 +10,9 @@
 #include "common/body_file.hpp"
 #include "common/commands.hpp"
 #include "common/option_checks.hpp"
+#include "readers/accel_at_rest.hpp"
+#include "readers/imu_csv_reader.hpp"
+#include "readers/imu_units.hpp"
 #include "replay/fifo_recording.hpp"
 #include "replay/imu_csv_recording.hpp"
 #include "replay/replay_report_json.hpp"
@@ -22,13 +25,19 @@ namespace {
 struct ReplayOptions {
   std::string body_path;
   std::string imu_path;
+  ImuUnits imu_units;  // --time-units, --gyro-units, --accel-units
   std::string fifo_path;
   double odr_hz = 0.0;
   std::string json_path;
 };
 
 Recording read_recording(const ReplayOptions& o) {
-  if (!o.imu_path.empty()) return read_imu_csv_recording(o.imu_path);
+  if (!o.imu_path.empty()) {
+    ImuLog log = read_imu_csv(o.imu_path);
+    convert_to_si(log, o.imu_units);
+    check_accel_units(log);  // a log in g would look like one long free fall
+    return imu_csv_recording(log);
+  }
   return read_fifo_recording(o.fifo_path, o.odr_hz);
 }
 
@@ -48,18 +57,22 @@ void run_replay_command(const ReplayOptions& o) {
 void add_replay_command(CLI::App& app) {
   auto options = std::make_shared<ReplayOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "replay", "run the firmware's onboard pipeline (float) on a recording; finds the flights (SPEC §5)");
-  cmd->add_option("--body", options->body_path, "body file (SPEC §2); imu.position, if given, is used")
+      "replay", "run the firmware's onboard pipeline (float) on a recording; finds the flights");
+  cmd->add_option("--body", options->body_path,
+                  "body file (JSON: docs/file-formats.md); imu.position, if given, is used")
       ->required();
   CLI::Option_group* input = cmd->add_option_group("input", "the recording: exactly one of");
-  input->add_option("--imu", options->imu_path, "plain IMU log t,gx,gy,gz,ax,ay,az (SPEC §3)");
-  CLI::Option* fifo = input->add_option("--fifo", options->fifo_path, "ICM-42688-P FIFO bytes (SPEC §5)");
+  input->add_option("--imu", options->imu_path, "plain IMU log t,gx,gy,gz,ax,ay,az (s, rad/s, m/s^2)");
+  add_imu_unit_options(*cmd, options->imu_units);
+  CLI::Option* fifo =
+      input->add_option("--fifo", options->fifo_path, "ICM-42688-P FIFO bytes (docs/file-formats.md)");
   input->require_option(1);
   cmd->add_option("--odr-hz", options->odr_hz, "the FIFO's output data rate, Hz (with --fifo)")
       ->needs(fifo)
-      ->check(CLI::PositiveNumber);
+      ->type_name("HZ")
+      ->check(CLI::PositiveNumber.description(""));
   fifo->needs(cmd->get_option("--odr-hz"));
-  cmd->add_option("--json", options->json_path, "write the report as JSON (SPEC §5 keys)")
+  cmd->add_option("--json", options->json_path, "write the report as JSON (keys: docs/file-formats.md)")
       ->check(output_file());
   cmd->callback([options] { run_replay_command(*options); });
 }

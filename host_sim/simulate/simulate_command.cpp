@@ -95,10 +95,12 @@ void run_simulate(const SimulateOptions& o) {
 void add_simulate_command(CLI::App& app) {
   auto options = std::make_shared<SimulateOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "simulate", "simulate one torque-free flight and write t,qw,qx,qy,qz,wx,wy,wz (SPEC §5)");
-  cmd->add_option("--body", options->body_path, "body file (SPEC §2)")->required();
+      "simulate", "simulate one torque-free flight and write t,qw,qx,qy,qz,wx,wy,wz (quaternion w first)");
+  cmd->add_option("--body", options->body_path, "body file (JSON: docs/file-formats.md)")->required();
   cmd->add_option("--w0", options->w0, "initial angular velocity in body axes, rad/s: wx,wy,wz")->required();
-  cmd->add_option("--q0", options->q0, "initial orientation body->world: w,x,y,z")->capture_default_str();
+  cmd->add_option("--q0", options->q0,
+                  "initial orientation body->world: w,x,y,z (scalar first; scipy's as_quat() gives x,y,z,w)")
+      ->capture_default_str();
   cmd->add_option("--duration", options->duration_s, "flight duration, s")->required();
   cmd->add_option("--rate", options->rate_hz, "output sample rate, Hz (internal steps <= 1 ms)")->required();
   cmd->add_option("--integrator", options->integrator, "rk4 or splitting (4th-order Lie splitting)")

@@ -247,7 +247,8 @@ void add_study_command(CLI::App& app) {
   cmd->add_option("--frame", options->frame,
                   "axes in which simulated and measured omega are compared: body, world or "
                   "both (default both; IMU input: body only)");
-  cmd->add_option("--body", options->recording.body_path, "body file of a recording (SPEC §2)");
+  cmd->add_option("--body", options->recording.body_path,
+                  "body file of a recording (JSON: docs/file-formats.md)");
   cmd->add_option("--markers", options->recording.markers_path, "marker trajectories (.trc, .c3d)");
   cmd->add_option("--poses", options->recording.poses_path, "poses (.mot, .sto, pose .csv)");
   add_pose_naming_options(*cmd, options->recording.pose_naming);

@@ -47,13 +47,16 @@ TEST_CASE("every bad command line exits 2 with one line naming the problem", "[c
       {"", {"no command given", "simulate", "study", "inspect", "diagnose"}},
       {"frobnicate", {"unknown command frobnicate", "simulate", "diagnose"}},
       {"studdy", {"unknown command studdy", "did you mean study?"}},
+      // CLI11 would answer these with the program's help and exit 0.
+      {"frobnicate --help", {"unknown command frobnicate", "summarize"}},
+      {"summarise --help", {"unknown command summarise", "did you mean summarize?"}},
       {"--frobnicate", {"unknown option --frobnicate"}},
       {"simulate --bdy " + body, {"unknown option --bdy", "did you mean --body?", "--w0"}},
       {"simulate --w0 1,2,3", {"--body is required"}},
       {simulate_ok + " --out x.csv --integrator euler", {"--integrator", "euler", "rk4", "splitting"}},
       {simulate_ok + " --out x.csv extra", {"unexpected argument extra"}},
       {simulate_ok + " --out " + scratch().string(), {"--out", "is a folder"}},
-      {simulate_ok + " --out /no/such/folder/x.csv", {"--out", "/no/such/folder", "does not exist"}},
+      {simulate_ok + " --out " + file_as_folder + "/x.csv", {"--out", body, "not a folder"}},
       {simulate_base + " --rate 100 --out x.csv --duration soon", {"--duration", "soon"}},
       {simulate_ok + " --out x.csv --rate 5", {"--rate"}},
       {"study --seed -1", {"--seed", "-1", "whole number"}},
@@ -64,8 +67,8 @@ TEST_CASE("every bad command line exits 2 with one line naming the problem", "[c
       {"study --out " + file_as_folder, {"--out", "is not a folder"}},
       {"study --seeds 3", {"unknown option --seeds", "did you mean --seed?"}},
       {"inspect", {"file is required"}},
-      {"diagnose --body " + body + " --imu " + imu_missing + " --json /no/such/folder/r.json",
-       {"--json", "does not exist"}},
+      {"diagnose --body " + body + " --imu " + imu_missing + " --json " + file_as_folder + "/r.json",
+       {"--json", "not a folder"}},
       {"diagnose --body " + body + " --imu " + imu_missing + " --plot " + body, {"--plot", "not a folder"}},
       {"diagnose --body " + body + " --imu " + imu_missing + " --threads 0", {"--threads", "0"}},
       {"diagnose --body " + body + " --imus x.csv", {"unknown option --imus", "did you mean --imu?"}},
@@ -88,6 +91,34 @@ TEST_CASE("--version prints the project version and --help succeeds", "[cli]") {
   const Run help = run_aloft("diagnose --help");
   CHECK(help.exit_code == 0);
   CHECK(help.out.find("--threads") != std::string::npos);
+}
+
+TEST_CASE("help texts cite no file a user does not have and show no CLI11 notation", "[cli]") {
+  for (const char* command :
+       {"", "simulate", "study", "inspect", "diagnose", "replay", "records", "summarize"}) {
+    CAPTURE(command);
+    const Run help = run_aloft(std::string(command) + " --help");
+    CHECK(help.exit_code == 0);
+    CHECK(help.out.find("SPEC") == std::string::npos);
+    CHECK(help.out.find("INT:") == std::string::npos);
+    CHECK(help.out.find("in [") == std::string::npos);
+  }
+  const Run diagnose = run_aloft("diagnose --help");
+  CHECK(diagnose.out.find("default: every core") != std::string::npos);  // as study
+  CHECK(diagnose.out.find("--gyro-units") != std::string::npos);
+  CHECK(run_aloft("study --help").out.find("default: every core") != std::string::npos);
+}
+
+TEST_CASE("an output file's missing folders are made, as --plot makes its folder", "[cli]") {
+  const fs::path json = scratch() / "new" / "deeper" / "replay.json";
+  const Run r = run_aloft("replay --body " + std::string(ALOFT_EXAMPLES) + "/throw_body.json --imu " +
+                          std::string(ALOFT_EXAMPLES) + "/throw_imu.csv --json " + json.string());
+  CAPTURE(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(fs::is_regular_file(json));
+  const fs::path csv = scratch() / "made" / "traj.csv";
+  CHECK(run_aloft(simulate_ok + " --out " + csv.string()).exit_code == 0);
+  CHECK(fs::is_regular_file(csv));
 }
 
 TEST_CASE("simulate writes each number at the precision it carries", "[cli]") {

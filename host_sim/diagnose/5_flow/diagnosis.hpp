@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "common/parallel_for.hpp"
 #include "diagnose/1_input/flight.hpp"
 #include "diagnose/1_input/time_gaps.hpp"
 #include "diagnose/2_model/nominal_inertia.hpp"
@@ -61,8 +62,9 @@ struct SessionDiagnosis {
 FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nominal);
 
 // A session: every flight on its own, and the pooled analysis with effects shared by all
-// flights, judged by leaving one flight out. `threads` >= 1.
+// flights, judged by leaving one flight out. `threads` >= 1. `flights_done`, when set, is
+// told about every 100 ms how many flights have been diagnosed on their own.
 SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const NominalInertia& nominal,
-                                  int threads = 2);
+                                  int threads = 2, const ParallelProgress& flights_done = {});
 
 }  // namespace aloft::host::diagnose

@@ -343,12 +343,13 @@ void set_pooled_onset(SessionDiagnosis& session) {
 }  // namespace
 
 SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const NominalInertia& nominal,
-                                  int threads) {
+                                  int threads, const ParallelProgress& flights_done) {
   SessionDiagnosis session;
   session.flights.resize(flights.size());
   const unsigned workers = static_cast<unsigned>(std::max(threads, 1));
-  parallel_for(flights.size(), workers,
-               [&](std::size_t i) { session.flights[i] = diagnose_flight(flights[i], nominal); });
+  parallel_for(
+      flights.size(), workers,
+      [&](std::size_t i) { session.flights[i] = diagnose_flight(flights[i], nominal); }, flights_done);
 
   PooledData pool = pool_judged_flights(session, flights);
   Analysis& analysis = session.pooled;

@@ -15,7 +15,8 @@ namespace aloft::host::diagnose {
 void write_flight_plots(const FlightDiagnosis& diagnosis, const NominalInertia& nominal,
                         const std::string& dir);
 
-// One pair of files per flight: DIR/flight_<segment>.svg and .png.
+// One pair of files per flight, DIR/flight_<segment>.svg and .png, and the session's
+// figure, DIR/session.svg and .png (session_plot.hpp).
 void write_session_plots(const SessionDiagnosis& diagnosis, const NominalInertia& nominal,
                          const std::string& dir);
 

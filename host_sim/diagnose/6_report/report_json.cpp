@@ -1,5 +1,6 @@
 #include "diagnose/6_report/report_json.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -177,12 +178,21 @@ json analysis_json(const Analysis& a) {
 
 std::string params_text(Effect effect, const EffectParameters& p) { return describe(effect).hooks.text(p); }
 
+// gap_over_noise is a chi-square per residual, a squared ratio: 1300 reads as "1300 x the
+// noise" but is a gap 36 times the noise floor. Both, and what 1 means.
+std::string gap_over_noise_text(double chi_square_per_residual) {
+  return printf_text(
+      ", %.1f x the noise floor (RMS residual over the noise's; chi-square per sample %.4g, 1 is "
+      "noise alone)",
+      std::sqrt(std::max(0.0, chi_square_per_residual)), chi_square_per_residual);
+}
+
 std::string analysis_summary(const Analysis& a) {
   std::ostringstream out;
   if (a.tensor) out << "  " << tensor_summary(*a.tensor);
   out << printf_text("  baseline (nominal model): RMS DA %.3f deg, RMS relative error %.4f",
                      a.baseline.rms_da_deg, a.baseline.rms_rel_err)
-      << printf_text(", %.2f x the noise floor", a.where.gap_over_noise) << "\n";
+      << gap_over_noise_text(a.where.gap_over_noise) << "\n";
   out << "  where: gap mostly along body " << a.where.dominant_axis;
   if (a.where.onset_s) out << printf_text(", leaves the nominal model at %.3f s", *a.where.onset_s);
   if (a.where.invariants) {
@@ -322,6 +332,12 @@ std::string session_summary(const SessionDiagnosis& s) {
                  s.flip_period->fitted_flights, 100.0 * s.flip_period->mean_error_nominal_fitted)
           << printf_text("%.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed_fitted) << model
           << "\n";
+    }
+    if (std::max(s.flip_period->mean_error_nominal, s.flip_period->mean_error_diagnosed) > 0.5) {
+      out << "  why a flip-period error can be large beside a large shrink: the flip period is the time "
+             "between sign changes of the intermediate-axis rate, and near the separatrix (a spin close "
+             "to that axis) a tiny error in the rate moves it a lot, however closely the model follows "
+             "the measured rates; judge the model by the held-out gap above\n";
     }
   }
   for (const FlightDiagnosis& d : s.flights) {

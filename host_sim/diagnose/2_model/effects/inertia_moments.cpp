@@ -1,6 +1,7 @@
 // `inertia_moments`: the principal moments are wrong. theta = (u0, u1): moments
 // n_i exp(u_i) (u2 = -u0-u1) along the nominal principal axes, rescaled to the nominal
 // sum (gyro data and the torque-free equations cannot fix the scale).
+#include <algorithm>
 #include <cmath>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
@@ -40,18 +41,31 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& 
   return p;
 }
 
-// "moments about body x, y, z: ... kg m^2 (x +12.0 %, y -3.1 %, z -4.9 %); most changed: x".
+// Torque-free motion fixes only the ratios of the moments, so a change is said of one
+// moment relative to the other two (their geometric mean), which does not depend on how
+// the fitted moments were scaled: "the body file's Iy is 3.0 % high relative to Ix and
+// Iz (the data's Iy is 2.9 % below the file's); moments about body x, y, z: ...".
 std::string text(const EffectParameters& p) {
   const Vec3 m = p.principal_body_order_kg_m2, n = p.nominal_body_order_kg_m2;
-  Vec3 change = Vec3::Zero();
-  for (int i = 0; i < 3; ++i) change(i) = n(i) > 0 ? 100.0 * (m(i) / n(i) - 1.0) : 0.0;
+  if (!(n.minCoeff() > 0.0) || !(m.minCoeff() > 0.0)) {
+    return printf_text("principal moments about body x, y, z %.4g, %.4g, %.4g kg m^2", m(0), m(1), m(2));
+  }
+  const Vec3 factor = m.cwiseQuotient(n);  // the data's moment over the file's
+  Vec3 relative = Vec3::Zero();            // each factor over the other two's geometric mean
+  for (int i = 0; i < 3; ++i) relative(i) = factor(i) / std::sqrt(factor((i + 1) % 3) * factor((i + 2) % 3));
   Eigen::Index most = 0;
-  change.cwiseAbs().maxCoeff(&most);
-  const char* axis[] = {"x", "y", "z"};
-  return printf_text("principal moments about body x, y, z %.4g, %.4g, %.4g kg m^2", m(0), m(1), m(2)) +
-         printf_text(" (x %+.1f %%, y %+.1f %%, z %+.1f %% from nominal); most changed: ", change(0),
-                     change(1), change(2)) +
-         axis[most] + printf_text(" (%+.1f %%)", change(most));
+  relative.array().log().abs().maxCoeff(&most);
+  const char* name[] = {"Ix", "Iy", "Iz"};
+  const int a = (static_cast<int>(most) + 1) % 3, b = (static_cast<int>(most) + 2) % 3;
+  const double file_off = 100.0 * (1.0 / relative(most) - 1.0), data_off = 100.0 * (relative(most) - 1.0);
+  return std::string("the body file's ") + name[most] + printf_text(" is %.1f %% ", std::abs(file_off)) +
+         (file_off > 0 ? "high" : "low") + " relative to " + name[std::min(a, b)] + " and " +
+         name[std::max(a, b)] + " (the data's " + name[most] +
+         printf_text(" is %.1f %% ", std::abs(data_off)) + (data_off < 0 ? "below" : "above") +
+         " the file's); " +
+         printf_text(
+             "principal moments about body x, y, z %.4g, %.4g, %.4g kg m^2 (scaled to the file's sum)", m(0),
+             m(1), m(2));
 }
 
 nlohmann::json json(const EffectParameters& p) {
