@@ -87,9 +87,23 @@ class ThrowGenerator {
  private:
   double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
   double normal() { return std::normal_distribution<double>(0.0, 1.0)(rng_); }
-  V3 unit() {
-    const V3 v(normal(), normal(), normal());
-    return v.normalized();
+  // The draws of one expression are made one statement at a time: the order in which a
+  // compiler evaluates function arguments is unspecified (gcc and clang differ), and the
+  // recordings must not depend on the compiler. The order is the one gcc chose before.
+  V3 normal3() {
+    const double z = normal();
+    const double y = normal();
+    return V3(normal(), y, z);
+  }
+  V3 unit() { return normal3().normalized(); }
+  V3 unit_times(double lo, double hi) {  // a random direction, length uniform in [lo, hi)
+    const double length = uniform(lo, hi);
+    return unit() * length;
+  }
+  V3 uniform3(double lo, double hi) {
+    const double z = uniform(lo, hi);
+    const double y = uniform(lo, hi);
+    return V3(uniform(lo, hi), y, z);
   }
 
   void pick_body() {
@@ -99,7 +113,7 @@ class ThrowGenerator {
     const int shape = static_cast<int>(uniform(0, 5));
     const double scale = uniform(2e-4, 2e-3);
     const V3 moments = V3(kShapes[shape][0], kShapes[shape][1], kShapes[shape][2]) * scale;
-    const Q axes = Q(aloft::quat_exp<double>(unit() * uniform(0, 3.1)));
+    const Q axes = Q(aloft::quat_exp<double>(unit_times(0, 3.1)));
     const M3 r = axes.toRotationMatrix();
     out_.true_tensor = r * moments.asDiagonal() * r.transpose();
     V3 nominal = moments;
@@ -107,16 +121,15 @@ class ThrowGenerator {
     std::sort(nominal.data(), nominal.data() + 3);
     if (nominal[2] > nominal[0] + nominal[1]) nominal[2] = nominal[0] + nominal[1];  // stay a body
     out_.nominal_tensor = r * nominal.asDiagonal() * r.transpose();
-    out_.imu_position_m = unit() * uniform(0.005, 0.060);
-    out_.sensor_to_body =
-        spec_.rotate_sensor ? aloft::quat_exp<double>(unit() * uniform(0, 3.1)) : Q::Identity();
+    out_.imu_position_m = unit_times(0.005, 0.060);
+    out_.sensor_to_body = spec_.rotate_sensor ? aloft::quat_exp<double>(unit_times(0, 3.1)) : Q::Identity();
     out_.rate_hz = spec_.rate_hz;
     out_.kind = spec_.kind;
     out_.t0_us = 1000000 + static_cast<std::uint64_t>(uniform(0, 1e6));
     cutoff_hz_ = std::min(0.25 * spec_.rate_hz, 500.0);
     gyro_noise_ = uniform(0.002, 0.02);
     accel_noise_ = uniform(0.02, 0.15);
-    tremor_phase_ = V3(uniform(0, 6.3), uniform(0, 6.3), uniform(0, 6.3));
+    tremor_phase_ = uniform3(0, 6.3);
     gyro_filter_ = aloft::generator::LowPass(cutoff_hz_, fine_step());
     accel_filter_ = aloft::generator::LowPass(cutoff_hz_, fine_step());
   }
@@ -141,7 +154,7 @@ class ThrowGenerator {
     const double taper = uniform(0.002, 0.010);
     const bool torque_to_the_end = !drop && uniform(0, 1) < 0.5;
     const V3 w0 = omega_;
-    const V3 w_rel = drop ? unit() * uniform(0.0, 0.4) : unit() * release_rate;
+    const V3 w_rel = drop ? unit_times(0.0, 0.4) : V3(unit() * release_rate);
     const double peak = drop ? 0.0 : uniform(10, 40);
     const double theta0 = uniform(-1.0, 1.0);
     const V3 across = unit();
@@ -170,7 +183,7 @@ class ThrowGenerator {
 
   void fly(double seconds) {
     const double end = t_ + seconds;
-    const V3 drag = unit() * uniform(0, 0.3);
+    const V3 drag = unit_times(0, 0.3);
     const M3 inverse = out_.true_tensor.inverse();
     const M3& i = out_.true_tensor;
     auto rate = [&](const V3& w) -> V3 { return inverse * (-w.cross(i * w)); };
@@ -190,7 +203,7 @@ class ThrowGenerator {
     const double peak = impact ? uniform(200, 1500) : uniform(20, 60);
     const double pulse = impact ? uniform(0.002, 0.004) : uniform(0.05, 0.1);
     const V3 w_land = omega_;
-    const V3 w_after = impact ? V3(unit() * uniform(0, 5)) : V3(V3::Zero());
+    const V3 w_after = impact ? unit_times(0, 5) : V3(V3::Zero());
     const double fade = impact ? rise : uniform(0.03, 0.08);
     const V3 dir = unit();
     const double start = t_;
@@ -214,9 +227,10 @@ class ThrowGenerator {
   // the hand never lets the specific force fall far below g.
   void wave(double seconds) {
     const double end = t_ + seconds;
-    const V3 spin = unit() * uniform(3, 15);
+    const V3 spin = unit_times(3, 15);
     const double f_hz = uniform(1.5, 4);
-    const V3 dir = V3(1, uniform(-1, 1), uniform(-0.3, 0.3)).normalized();
+    const double dir_z = uniform(-0.3, 0.3);
+    const V3 dir = V3(1, uniform(-1, 1), dir_z).normalized();
     const double amp = uniform(5, 20);
     const double start = t_;
     while (t_ < end) {
@@ -250,8 +264,8 @@ class ThrowGenerator {
     next_sample_s_ += period;
     aloft::ImuSample<double> s;
     s.t_us = out_.t0_us + static_cast<std::uint64_t>(std::llround(t_ * 1e6));
-    s.gyro_rad_s = gyro_f + gyro_noise_ * V3(normal(), normal(), normal());
-    s.accel_m_s2 = accel_f + accel_noise_ * V3(normal(), normal(), normal());
+    s.gyro_rad_s = gyro_f + gyro_noise_ * normal3();
+    s.accel_m_s2 = accel_f + accel_noise_ * normal3();
     clip(s.gyro_rad_s, 69.8, aloft::imu_gyro_clipped, s.flags);
     clip(s.accel_m_s2, 156.9, aloft::imu_accel_clipped, s.flags);
     out_.samples.push_back(s);

@@ -33,6 +33,22 @@ struct Tally {
   double worst_r_error_mm = 0;
   std::vector<double> r_errors_mm;
 
+  void add(const Tally& o) {
+    true_flights += o.true_flights;
+    found += o.found;
+    release_within_5ms += o.release_within_5ms;
+    release_within_10ms += o.release_within_10ms;
+    landing_within_5ms += o.landing_within_5ms;
+    landing_within_10ms += o.landing_within_10ms;
+    early += o.early;
+    false_flights += o.false_flights;
+    turned += o.turned;
+    worst_late_ms = std::max(worst_late_ms, o.worst_late_ms);
+    worst_landing_ms = std::max(worst_landing_ms, o.worst_landing_ms);
+    r_estimates += o.r_estimates;
+    worst_r_error_mm = std::max(worst_r_error_mm, o.worst_r_error_mm);
+    r_errors_mm.insert(r_errors_mm.end(), o.r_errors_mm.begin(), o.r_errors_mm.end());
+  }
   double percent(int n) const { return true_flights > 0 ? 100.0 * n / true_flights : 100.0; }
   void print(const char* name) const {
     std::printf(
@@ -128,6 +144,13 @@ void score(const Recording& rec, bool give_r, Tally& t, double r_error_m) {
   }
 }
 
+// ALOFT_RELEASE_SEED_SHIFT=n draws a fresh set of recordings (default 0: the set the bars
+// below were measured on), to see how the figures hold on throws nobody tuned against.
+std::uint32_t seed_shift() {
+  const char* shift = std::getenv("ALOFT_RELEASE_SEED_SHIFT");
+  return shift != nullptr ? static_cast<std::uint32_t>(std::strtoul(shift, nullptr, 10)) * 100000u : 0u;
+}
+
 Tally run(MotionKind kind, const std::vector<double>& rates, int recordings, double tensor_error, bool give_r,
           std::uint32_t seed0, const char* name, double r_error_m = 0.0) {
   Tally t;
@@ -139,11 +162,12 @@ Tally run(MotionKind kind, const std::vector<double>& rates, int recordings, dou
       spec.rate_hz = rate;
       spec.tensor_error = tensor_error;
       spec.rotate_sensor = i % 3 == 1;
-      spec.seed = seed0 + static_cast<std::uint32_t>(i) + static_cast<std::uint32_t>(rate) * 1000u;
+      spec.seed =
+          seed0 + static_cast<std::uint32_t>(i) + static_cast<std::uint32_t>(rate) * 1000u + seed_shift();
       const Recording rec = aloft_test::ThrowGenerator(spec).generate();
       score(rec, give_r, per_rate, r_error_m);
-      score(rec, give_r, t, r_error_m);
     }
+    t.add(per_rate);
     char label[64];
     std::snprintf(label, sizeof label, "%s @ %g Hz", name, rate);
     per_rate.print(label);
@@ -154,9 +178,10 @@ Tally run(MotionKind kind, const std::vector<double>& rates, int recordings, dou
 
 }  // namespace
 
-// Measured (printed below): r given 99.6 % within 5 ms, none early; r fitted with I 15 %
-// off 97.4 % within 10 ms, none early; r given 3 mm off 96.7 % within 10 ms, one flight
-// broken in two.
+// Measured (printed below, gcc Release): r given 99.6 % within 5 ms, none early; r fitted
+// with I 15 % off 98.1 % within 10 ms, none early; r given 3 mm off 100 % within 10 ms
+// (the detector fits an r near the given one, release_detector.hpp), one flight broken in
+// two.
 TEST_CASE("release and landing with r given and the right tensor at 1 to 4 kHz", "[release]") {
   const Tally t = run(MotionKind::spin_throw, {1000, 2000, 4000}, 30, 0.0, true, 100, "spin, r given");
   CHECK(t.early == 0);
@@ -198,8 +223,8 @@ TEST_CASE("release and landing at 100 and 250 Hz: found, never early", "[release
     CHECK(t->false_flights == 0);
     CHECK(t->percent(t->found) >= 95.0);
   }
-  // Measured: release r given 100 % within 10 ms (worst 8.95 ms late), r fitted 95.6 %;
-  // landing 98.9 % and 95.6 % within 10 ms.
+  // Measured (gcc Release): release r given 100 % within 10 ms (worst 8.95 ms late), r
+  // fitted 97.8 %; landing 98.9 % and 97.8 % within 10 ms.
   CHECK(given.percent(given.release_within_10ms) >= 98.0);
   CHECK(fitted.percent(fitted.release_within_10ms) >= 90.0);
   CHECK(given.percent(given.landing_within_10ms) >= 95.0);

@@ -184,7 +184,9 @@ class OnboardPipeline {
                                 r_flight_)) {
       return;
     }
-    start_flight(release, release_us, known == nullptr);
+    // A known r that missed this release (the detector fitted one near it) is no better
+    // than none: the flight's own fit takes over as soon as it would without one.
+    start_flight(release, release_us, detector_.release_r_fitted());
     feed_until(c + 1);
   }
 

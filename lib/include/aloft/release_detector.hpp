@@ -7,6 +7,10 @@
 // Landing is `landing_samples` consecutive samples that are not free (a catch, an impact),
 // dated back to the first of them.
 //
+// A given r (or an earlier flight's estimate) that misses by a few millimetres leaves a
+// residual of w² times the miss, over the limit at high spin: such a stretch is fitted as
+// below, and the fit is taken only within `given_r_tolerance_m` of the given r.
+//
 // Without r (no `imu.position` and no earlier flight to estimate it from) every sample
 // stretch the gyro calls torque-free is fitted: the earliest start s whose fit over
 // [s, now] has an rms residual below `fit_rms_fraction` of the limit, a bounded |r|, and
@@ -29,16 +33,17 @@ namespace aloft {
 template <typename Scalar>
 struct ReleaseDetectorSettings {
   FreeFlightSettings<Scalar> free_flight = {};
-  std::uint32_t confirm_us = 4000;           // free flight this long (µs) before release is believed
-  std::uint16_t confirm_samples = 5;         // and at least this many samples
-  Scalar release_fraction = Scalar(0.5);     // release: first sample below this fraction of the limit
-  Scalar level_margin_m_s2 = Scalar(0.2);    // and below twice the flight's mean residual plus this
-  std::uint32_t fade_out_at_most_us = 3000;  // a fading hand force is extrapolated this far at most
-  Scalar step_fraction = Scalar(0.5);        // samples further apart: release at this fraction of the step
-  std::uint16_t landing_samples = 3;         // consecutive samples that are not free: landing
-  Scalar max_lever_arm_m = Scalar(0.15);     // |r| beyond this is not an IMU inside the body
-  Scalar fit_rms_fraction = Scalar(0.5);     // a fitted r must leave its rms below this fraction of the limit
-  Scalar ridge_rad_s2 = Scalar(10);          // see aloft/lever_arm_estimate.hpp
+  std::uint32_t confirm_us = 4000;            // free flight this long (µs) before release is believed
+  std::uint16_t confirm_samples = 5;          // and at least this many samples
+  Scalar release_fraction = Scalar(0.5);      // release: first sample below this fraction of the limit
+  Scalar level_margin_m_s2 = Scalar(0.2);     // and below twice the flight's mean residual plus this
+  std::uint32_t fade_out_at_most_us = 3000;   // a fading hand force is extrapolated this far at most
+  Scalar step_fraction = Scalar(0.5);         // samples further apart: release at this fraction of the step
+  std::uint16_t landing_samples = 3;          // consecutive samples that are not free: landing
+  Scalar max_lever_arm_m = Scalar(0.15);      // |r| beyond this is not an IMU inside the body
+  Scalar given_r_tolerance_m = Scalar(0.01);  // a given r that misses: a fit this close may replace it
+  Scalar fit_rms_fraction = Scalar(0.5);  // a fitted r must leave its rms below this fraction of the limit
+  Scalar ridge_rad_s2 = Scalar(10);       // see aloft/lever_arm_estimate.hpp
   std::uint32_t derivative_half_span_us = 1000;  // w_dot from gyro samples about this far (µs) either side
 };
 
@@ -71,17 +76,22 @@ class ReleaseDetector {
                                const Vec3<Scalar>* r, std::uint64_t not_before_us, std::uint32_t& release,
                                std::uint64_t& release_us, Vec3<Scalar>& r_used) {
     BodyKinematics<Scalar> k;
-    if (!history.kinematics(c, h, k) || !torque_free_at(c, h, k) ||
-        (r != nullptr && centre_specific_force(k, *r) > limit(k, *r))) {
+    if (!history.kinematics(c, h, k) || !torque_free_at(c, h, k)) {
       in_run_ = false;
+      given_missed_ = c;
       return false;
     }
     if (!in_run_ || !history.holds(run_start_ - h)) run_start_ = in_run_ ? history.oldest() + h : c;
     in_run_ = true;
-    std::uint32_t start = run_start_;
-    if (r != nullptr) {
+    const bool given_fits = r != nullptr && centre_specific_force(k, *r) <= limit(k, *r);
+    if (!given_fits) given_missed_ = c;
+    std::uint32_t start = 0;
+    fitted_ = !given_fits;
+    if (given_fits) {
+      // The run of samples the given r fits: from the last miss on, inside the torque-free run.
+      start = given_missed_ + 1 > run_start_ ? given_missed_ + 1 : run_start_;
       r_used = *r;
-    } else if (!fit_free_stretch(history, c, h, k, start, r_used)) {
+    } else if (!fit_free_stretch(history, c, h, k, r, start, r_used)) {
       return false;
     }
     if (!confirmed(history, start, c, h) || history.t_us(start) < not_before_us) return false;
@@ -144,6 +154,9 @@ class ReleaseDetector {
     return history.t_us(j - 1) + whole_us(part * static_cast<Scalar>(history.dt_us(j)));
   }
 
+  // The last release confirmed was found with a fitted r, not the given one.
+  bool release_r_fitted() const { return fitted_; }
+
   // Samples from this index on may still turn out to be the landing (not to be fed yet).
   std::uint32_t pending_from(std::uint32_t c) const { return landing_run_ > 0 ? landing_start_ : c + 1; }
 
@@ -177,9 +190,14 @@ class ReleaseDetector {
 
  private:
   // The earliest start in [run_start_, c] whose fitted r passes (see the file comment).
+  // near: a given (or earlier estimated) r that did not fit this stretch; the fit must then
+  // lie within given_r_tolerance_m of it.
   ALOFT_COLD bool fit_free_stretch(const History& history, std::uint32_t c, std::uint32_t h,
-                                   const BodyKinematics<Scalar>& kc, std::uint32_t& start,
-                                   Vec3<Scalar>& r_fit) const {
+                                   const BodyKinematics<Scalar>& kc, const Vec3<Scalar>* near,
+                                   std::uint32_t& start, Vec3<Scalar>& r_fit) const {
+    // The fit must lie in a ball: about the given r, else about the centre of mass.
+    const Vec3<Scalar> centre = near != nullptr ? *near : Vec3<Scalar>::Zero();
+    const Scalar radius = near != nullptr ? settings_.given_r_tolerance_m : settings_.max_lever_arm_m;
     LeverArmFit<Scalar> fit;
     bool found = false;
     for (std::uint32_t j = c + 1; j-- > run_start_;) {
@@ -187,7 +205,7 @@ class ReleaseDetector {
       if (!history.kinematics(j, h, kj)) break;
       fit.add(kj);
       const Vec3<Scalar> r = fit.solve(settings_.ridge_rad_s2);
-      if (r.norm() > settings_.max_lever_arm_m) continue;
+      if ((r - centre).squaredNorm() > radius * radius) continue;
       const Scalar lc = limit(kc, r);
       if (fit.rms_residual(r) > settings_.fit_rms_fraction * lc || centre_specific_force(kc, r) > lc ||
           centre_specific_force(kj, r) > limit(kj, r)) {
@@ -307,8 +325,10 @@ class ReleaseDetector {
   std::uint32_t run_start_ = 0;
   std::uint32_t landing_start_ = 0;
   std::uint16_t landing_run_ = 0;
-  bool in_run_ = false;
-  Scalar flight_level_ = Scalar(0);          // running mean residual in flight (m/s²)
+  bool in_run_ = false;              // a run of torque-free samples, from run_start_
+  bool fitted_ = false;              // find_release: r was fitted (none given, or the given one missed)
+  std::uint32_t given_missed_ = 0;   // the newest sample the given r did not fit (or not torque-free)
+  Scalar flight_level_ = Scalar(0);  // running mean residual in flight (m/s²)
   std::uint32_t memo_newest_ = 0xFFFFFFFFu;  // torque_free_at: the newest sample tested
   std::uint32_t memo_h_ = 0;
   std::uint32_t memo_known_ = 0;  // bit i % 32: sample i tested, with memo_h_
