@@ -83,7 +83,8 @@ RecordedTrial load_recorded_trial(const RecordingInput& in) {
     d["poses_file"] = in.poses_path;
     out.flights.push_back(pose_flight_from(poses, in.poses_path, d));
   } else {
-    const ImuLog log = read_imu_csv(in.imu_path);
+    ImuLog log = read_imu_csv(in.imu_path);
+    convert_to_si(log, in.imu_units);
     d["kind"] = "imu";
     d["imu"] = in.imu_path;
     d["compared"] = "gyro rotated into body axes, at the log's own samples; body rates simulated";

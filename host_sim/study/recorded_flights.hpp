@@ -17,6 +17,7 @@
 
 #include "common/body_file.hpp"
 #include "readers/free_joint.hpp"
+#include "readers/imu_units.hpp"
 #include "study/study_flight.hpp"
 
 namespace aloft::host {
@@ -28,6 +29,7 @@ struct RecordingInput {
   std::string imu_path;
   std::string segments_path;
   PoseNaming pose_naming;  // --pose-columns / --osim --joint for a .mot/.sto
+  ImuUnits imu_units;      // --time-units, --gyro-units, --accel-units for an IMU log
 };
 
 struct RecordedTrial {

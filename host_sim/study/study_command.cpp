@@ -254,6 +254,7 @@ void add_study_command(CLI::App& app) {
   add_pose_naming_options(*cmd, options->recording.pose_naming);
   cmd->add_option("--imu", options->recording.imu_path, "IMU log (plain or phyphox .csv)");
   cmd->add_option("--segments", options->recording.segments_path, "flights within the IMU log");
+  add_imu_unit_options(*cmd, options->recording.imu_units);
   add_throw_options(*cmd, options->throw_options);
   cmd->add_flag("--calibrate-to-paper", options->calibrate_to_paper,
                 "search the throw (spin rate, axis, marker noise) that matches the paper's GF "

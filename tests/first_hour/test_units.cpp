@@ -115,3 +115,33 @@ TEST_CASE("segments outside the log, in ms, or over a rest period are refused by
   check_refused(run_aloft(f.dir, "diagnose --body " + f.body + " --imu " + log + " --window 30:31"),
                 {"--window", "not inside the log"});
 }
+
+TEST_CASE("study --imu reads a log in deg/s and ms with the unit options, as it reads the SI log",
+          "[first_hour]") {
+  Files f;
+  const std::vector<Sample> flight = made_up_throw(f.dir);
+  Units other;
+  other.gyro = kDegreesPerRadian;
+  other.time = 1000.0;
+  const std::string converted_log = f.dir.write("deg_ms.csv", imu_csv(flight, other, false));
+  const std::string si_log = f.dir.write("si.csv", imu_csv(flight, Units{}, false));
+  auto study = [&](const std::string& log, const std::string& options, const std::string& out) {
+    const RunResult r = run_aloft(f.dir, "study --body " + f.body + " --imu " + log + options +
+                                             " --mc-samples 20 --threads 1 --out " + f.dir.path(out));
+    CAPTURE(r.err);
+    REQUIRE(r.exit_code == 0);
+    return nlohmann::json::parse(read_file(f.dir.path(out) + "/results.json"));
+  };
+  const nlohmann::json si = study(si_log, "", "si");
+  const nlohmann::json converted = study(converted_log, " --gyro-units deg/s --time-units ms", "converted");
+  // The nominal tensor's RMS DA on the flight: equal to the rounding of the written values.
+  const double nominal = si["models"]["nominal"]["rms_da_deg"]["median"].get<double>();
+  CHECK(nominal < 5.0);
+  CHECK(converted["models"]["nominal"]["rms_da_deg"]["median"].get<double>() ==
+        Approx(nominal).epsilon(1e-3));
+  // Without the options the same log is read as rad/s and s: a different flight (its
+  // simulations, 1000 s long at 57 times the rate, do not even give a number).
+  const nlohmann::json unconverted = study(converted_log, "", "unconverted");
+  const nlohmann::json& median = unconverted["models"]["nominal"]["rms_da_deg"]["median"];
+  CHECK((median.is_null() || median.get<double>() != Approx(nominal).epsilon(1e-2)));
+}

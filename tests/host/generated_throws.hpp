@@ -60,6 +60,10 @@ struct RecordingSpec {
   int throws = 3;
   double tensor_error = 0;  // nominal principal moments off by ± this fraction
   bool rotate_sensor = false;
+  // A real IMU's errors besides noise: per-axis bias and scale of both sensors, and the
+  // accelerometer's axes turned against the gyro's (drawn after everything else, so the
+  // recordings without them stay as they were).
+  bool sensor_errors = false;
   std::uint32_t seed = 1;
 };
 
@@ -132,6 +136,18 @@ class ThrowGenerator {
     tremor_phase_ = uniform3(0, 6.3);
     gyro_filter_ = aloft::generator::LowPass(cutoff_hz_, fine_step());
     accel_filter_ = aloft::generator::LowPass(cutoff_hz_, fine_step());
+    if (spec_.sensor_errors) pick_sensor_errors();
+  }
+
+  // Datasheet-sized errors of a MEMS IMU after a factory trim: accelerometer bias
+  // ±0.4 m/s² and scale ±2 %, gyro bias ±0.02 rad/s and scale ±1 %, the two sensors' axes
+  // up to 1° apart.
+  void pick_sensor_errors() {
+    accel_bias_ = uniform3(-0.4, 0.4);
+    accel_scale_ = V3::Ones() + uniform3(-0.02, 0.02);
+    gyro_bias_ = uniform3(-0.02, 0.02);
+    gyro_scale_ = V3::Ones() + uniform3(-0.01, 0.01);
+    accel_axes_ = aloft::quat_exp<double>(unit_times(0, 0.01745));
   }
   double fine_step() const { return std::min(1e-4, 0.1 / spec_.rate_hz); }
 
@@ -264,8 +280,8 @@ class ThrowGenerator {
     next_sample_s_ += period;
     aloft::ImuSample<double> s;
     s.t_us = out_.t0_us + static_cast<std::uint64_t>(std::llround(t_ * 1e6));
-    s.gyro_rad_s = gyro_f + gyro_noise_ * normal3();
-    s.accel_m_s2 = accel_f + accel_noise_ * normal3();
+    s.gyro_rad_s = gyro_scale_.cwiseProduct(gyro_f) + gyro_bias_ + gyro_noise_ * normal3();
+    s.accel_m_s2 = accel_scale_.cwiseProduct(accel_axes_ * accel_f) + accel_bias_ + accel_noise_ * normal3();
     clip(s.gyro_rad_s, 69.8, aloft::imu_gyro_clipped, s.flags);
     clip(s.accel_m_s2, 156.9, aloft::imu_accel_clipped, s.flags);
     out_.samples.push_back(s);
@@ -290,6 +306,11 @@ class ThrowGenerator {
   double gyro_noise_ = 0.01;
   double accel_noise_ = 0.05;
   V3 tremor_phase_ = V3::Zero();
+  V3 accel_bias_ = V3::Zero();  // pick_sensor_errors(); none by default
+  V3 accel_scale_ = V3::Ones();
+  V3 gyro_bias_ = V3::Zero();
+  V3 gyro_scale_ = V3::Ones();
+  Q accel_axes_ = Q::Identity();
   V3 omega_ = V3::Zero();
   Q orientation_ = Q::Identity();
   aloft::generator::LowPass gyro_filter_{0, 1};  // set in pick_body()

@@ -152,7 +152,7 @@ std::uint32_t seed_shift() {
 }
 
 Tally run(MotionKind kind, const std::vector<double>& rates, int recordings, double tensor_error, bool give_r,
-          std::uint32_t seed0, const char* name, double r_error_m = 0.0) {
+          std::uint32_t seed0, const char* name, double r_error_m = 0.0, bool sensor_errors = false) {
   Tally t;
   for (double rate : rates) {
     Tally per_rate;
@@ -162,6 +162,7 @@ Tally run(MotionKind kind, const std::vector<double>& rates, int recordings, dou
       spec.rate_hz = rate;
       spec.tensor_error = tensor_error;
       spec.rotate_sensor = i % 3 == 1;
+      spec.sensor_errors = sensor_errors;
       spec.seed =
           seed0 + static_cast<std::uint32_t>(i) + static_cast<std::uint32_t>(rate) * 1000u + seed_shift();
       const Recording rec = aloft_test::ThrowGenerator(spec).generate();
@@ -212,6 +213,26 @@ TEST_CASE("release and landing without r and with the tensor 15 % wrong at 1 to 
   REQUIRE(e.size() >= 80u);
   CHECK(e[e.size() / 2] < 0.5);
   CHECK(e[e.size() * 9 / 10] < 2.0);
+}
+
+// A real IMU is not only noisy: biases, scale errors and the accelerometer's axes a little
+// off the gyro's (generated_throws.hpp, pick_sensor_errors). Measured (gcc Release): r
+// given 100 % within 10 ms (98.3 % within 5 ms); r fitted with I 15 % off 97.5 %; drops
+// 100 %; no false flight, none early.
+TEST_CASE("release and landing with a real IMU's bias, scale and axis errors", "[release]") {
+  const Tally given =
+      run(MotionKind::spin_throw, {1000, 4000}, 20, 0.0, true, 900, "errors, r given", 0.0, true);
+  const Tally fitted = run(MotionKind::spin_throw, {1000, 4000}, 20, 0.15, false, 1000,
+                           "errors, r fitted, I 15% off", 0.0, true);
+  const Tally drops = run(MotionKind::drop, {100, 1000}, 8, 0.15, false, 1100, "errors, drop", 0.0, true);
+  const Tally waving =
+      run(MotionKind::waving, {100, 1000}, 8, 0.15, false, 1200, "errors, waving", 0.0, true);
+  for (const Tally* t : {&given, &fitted, &drops}) {
+    CHECK(t->false_flights == 0);
+    CHECK(t->percent(t->release_within_10ms) >= 95.0);
+    CHECK(t->percent(t->landing_within_10ms) >= 95.0);
+  }
+  CHECK(waving.false_flights == 0);
 }
 
 TEST_CASE("release and landing at 100 and 250 Hz: found, never early", "[release]") {
