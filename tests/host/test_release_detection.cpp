@@ -220,14 +220,18 @@ TEST_CASE("release and landing without r and with the tensor 15 % wrong at 1 to 
 // given 100 % within 10 ms (98.3 % within 5 ms); r fitted with I 15 % off 97.5 %; drops
 // 100 %; no false flight, none early.
 TEST_CASE("release and landing with a real IMU's bias, scale and axis errors", "[release]") {
-  const Tally given =
-      run(MotionKind::spin_throw, {1000, 4000}, 20, 0.0, true, 900, "errors, r given", 0.0, true);
+  constexpr double no_r_error = 0.0;
+  constexpr bool with_sensor_errors = true;
+  const Tally given = run(MotionKind::spin_throw, {1000, 4000}, 20, 0.0, true, 900, "errors, r given",
+                          no_r_error, with_sensor_errors);
   const Tally fitted = run(MotionKind::spin_throw, {1000, 4000}, 20, 0.15, false, 1000,
-                           "errors, r fitted, I 15% off", 0.0, true);
-  const Tally drops = run(MotionKind::drop, {100, 1000}, 8, 0.15, false, 1100, "errors, drop", 0.0, true);
-  const Tally waving =
-      run(MotionKind::waving, {100, 1000}, 8, 0.15, false, 1200, "errors, waving", 0.0, true);
+                           "errors, r fitted, I 15% off", no_r_error, with_sensor_errors);
+  const Tally drops = run(MotionKind::drop, {100, 1000}, 8, 0.15, false, 1100, "errors, drop", no_r_error,
+                          with_sensor_errors);
+  const Tally waving = run(MotionKind::waving, {100, 1000}, 8, 0.15, false, 1200, "errors, waving",
+                           no_r_error, with_sensor_errors);
   for (const Tally* t : {&given, &fitted, &drops}) {
+    CHECK(t->early == 0);
     CHECK(t->false_flights == 0);
     CHECK(t->percent(t->release_within_10ms) >= 95.0);
     CHECK(t->percent(t->landing_within_10ms) >= 95.0);
