@@ -252,6 +252,23 @@ std::vector<std::size_t> scan_impulse_times(const Setup& setup, const std::vecto
   return peaks;
 }
 
+// From the best time so far, each way: a step that lowers the cost is taken and the next
+// step doubles; one that does not is halved, down to a single sample. When the nominal
+// motion is far off the true one, the scan peaks where the gap is largest, not where it
+// begins, and the cost then falls steadily towards the true time over a hundred samples
+// or more: the windows round the peaks stop short of it. Near the right time this costs
+// four trials, the neighbours at 1 and 2 samples that were tried before anyway.
+template <class TryTime>
+void walk_downhill(std::size_t& best, TryTime try_time) {
+  for (long direction : {-1L, 1L}) {
+    for (long step = 2; step >= 1;) {
+      const std::size_t from = best;
+      try_time(static_cast<long>(best) + direction * step);
+      step = best != from ? 2 * step : step / 2;
+    }
+  }
+}
+
 EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
   const Flight& flight = *(*setup.data)[0].flight;
   const int p = static_cast<int>(setup.base_theta.size()) + 3;
@@ -280,17 +297,15 @@ EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
       best_rates = r.local;
     }
   };
-  // Around each scanned peak: every third gap within 12 samples, then the neighbours of
-  // the best of those.
+  // Around each scanned peak: every third gap within 12 samples; then downhill from the
+  // best of those.
   for (std::size_t peak : scan_impulse_times(setup, rates)) {
     try_time(peak, true);
     for (long off = -12; off <= 12; off += 3) {
       if (off != 0) try_time(static_cast<std::size_t>(std::max(0L, static_cast<long>(peak) + off)), false);
     }
   }
-  const std::size_t centre = best;
-  for (long off : {-2L, -1L, 1L, 2L})
-    try_time(static_cast<std::size_t>(std::max(0L, static_cast<long>(centre) + off)), false);
+  walk_downhill(best, [&](long j) { try_time(static_cast<std::size_t>(std::max(0L, j)), false); });
   if (best == 0) best = flight.size() / 2;
   setup.impulse_time_s = 0.5 * (flight.time_s[best - 1] + flight.time_s[best]);
   const ArrowProblem problem = problem_of(setup, p);
