@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "common/commands.hpp"
+#include "diagnose/1_input/unit_checks.hpp"
 #include "readers/imu_csv_reader.hpp"
 #include "readers/marker_pose_fit.hpp"
 #include "readers/segments.hpp"
@@ -16,6 +17,19 @@ namespace aloft::host {
 namespace {
 
 std::string stem_of(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+// A log's rates and times are checked from the physics as `aloft diagnose` checks them
+// (diagnose/1_input/unit_checks.hpp), so that a gyro in °/s or times in ms are refused
+// with the option that converts them rather than simulated into non-finite figures.
+diagnose::Flight unit_check_flight(const std::vector<double>& time_s, const std::vector<Eigen::Vector3d>& rate,
+                                   const Eigen::Quaterniond& sensor_to_body) {
+  diagnose::Flight f;
+  f.sensor_to_body = sensor_to_body;
+  f.time_s = time_s;
+  f.omega = rate;
+  f.usable.assign(time_s.size(), 1);
+  return f;
+}
 
 StudyFlight pose_flight_from(const PoseTrial& poses, const std::string& path, nlohmann::json& description) {
   if (poses.time_s.size() < 3) {
@@ -97,15 +111,18 @@ RecordedTrial load_recorded_trial(const RecordingInput& in) {
       segments.push_back({"whole log", log.time_s.front(), log.time_s.back(), ""});
     }
     nlohmann::json flights = nlohmann::json::array();
+    std::vector<diagnose::Flight> unit_checked;
     for (const Segment& s : segments) {
       std::vector<double> t;
-      std::vector<Eigen::Vector3d> w;
+      std::vector<Eigen::Vector3d> w, sensor_w;
       for (std::size_t i = 0; i < log.time_s.size(); ++i) {
         if (log.time_s[i] >= s.start_s && log.time_s[i] <= s.end_s) {
           t.push_back(log.time_s[i]);
           w.push_back(to_body * log.gyro_rad_s[i]);
+          sensor_w.push_back(log.gyro_rad_s[i]);
         }
       }
+      unit_checked.push_back(unit_check_flight(t, sensor_w, out.body.imu_to_body.normalized()));
       const std::string name =
           segments.size() > 1 || !in.segments_path.empty() ? "segment " + s.name : stem_of(in.imu_path);
       if (t.size() < 3) {
@@ -124,6 +141,7 @@ RecordedTrial load_recorded_trial(const RecordingInput& in) {
                          {"gaps", time_gaps(t)}});
       out.flights.push_back(std::move(f));
     }
+    diagnose::check_rate_units(unit_checked, out.body, in.imu_path);
     d["flights"] = flights;
   }
   return out;
