@@ -21,7 +21,8 @@ std::string stem_of(const std::string& path) { return std::filesystem::path(path
 // A log's rates and times are checked from the physics as `aloft diagnose` checks them
 // (diagnose/1_input/unit_checks.hpp), so that a gyro in °/s or times in ms are refused
 // with the option that converts them rather than simulated into non-finite figures.
-diagnose::Flight unit_check_flight(const std::vector<double>& time_s, const std::vector<Eigen::Vector3d>& rate,
+diagnose::Flight unit_check_flight(const std::vector<double>& time_s,
+                                   const std::vector<Eigen::Vector3d>& rate,
                                    const Eigen::Quaterniond& sensor_to_body) {
   diagnose::Flight f;
   f.sensor_to_body = sensor_to_body;

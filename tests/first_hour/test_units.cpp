@@ -116,9 +116,10 @@ TEST_CASE("segments outside the log, in ms, or over a rest period are refused by
                 {"--window", "not inside the log"});
 }
 
-TEST_CASE("study --imu reads a log in deg/s and ms with the unit options, as it reads the SI log, and "
-          "refuses it without them",
-          "[first_hour]") {
+TEST_CASE(
+    "study --imu reads a log in deg/s and ms with the unit options, as it reads the SI log, and "
+    "refuses it without them",
+    "[first_hour]") {
   Files f;
   const std::vector<Sample> flight = made_up_throw(f.dir);
   Units other;
