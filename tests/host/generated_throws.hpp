@@ -64,6 +64,11 @@ struct RecordingSpec {
   // accelerometer's axes turned against the gyro's (drawn after everything else, so the
   // recordings without them stay as they were).
   bool sensor_errors = false;
+  // Each sampling interval drawn within ± this fraction of the period, as a phone or a
+  // logger without a hardware clock samples (the time stamps stay honest: each is the
+  // sample's true time, on the simulation's 0.1 ms grid), from draws of their own, so that
+  // the throws are the same as without. 0: a regular clock.
+  double interval_jitter = 0.0;
   std::uint32_t seed = 1;
 };
 
@@ -277,7 +282,8 @@ class ThrowGenerator {
     const V3 accel_f = accel_filter_(body_to_sensor * accel_body);
     const double period = 1.0 / spec_.rate_hz;
     if (t_ + 1e-12 < next_sample_s_) return;
-    next_sample_s_ += period;
+    const double jitter = spec_.interval_jitter;
+    next_sample_s_ += period * (1.0 + std::uniform_real_distribution<double>(-jitter, jitter)(jitter_rng_));
     aloft::ImuSample<double> s;
     s.t_us = out_.t0_us + static_cast<std::uint64_t>(std::llround(t_ * 1e6));
     s.gyro_rad_s = gyro_scale_.cwiseProduct(gyro_f) + gyro_bias_ + gyro_noise_ * normal3();
@@ -298,6 +304,8 @@ class ThrowGenerator {
 
   RecordingSpec spec_;
   std::mt19937 rng_;
+  // The sampling intervals' own draws: the same throws with and without jitter.
+  std::mt19937 jitter_rng_{spec_.seed ^ 0x5EEDu};
   Recording out_;
   double t_ = 0;
   double fine_dt_ = 1e-4;

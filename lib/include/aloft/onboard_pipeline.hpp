@@ -42,7 +42,7 @@ struct OnboardPipelineSettings {
   std::uint32_t end_flight_after_gap_us = 200000;  // longer, while airborne: flight ends unlanded
   ReleaseDetectorSettings<Scalar> release = {};
   Scalar gap_interval_factor = Scalar(3);         // stamps this many running intervals apart: a gap
-  std::uint32_t min_flight_us = 40000;            // shorter flights are dropped (a jolt, not a throw)
+  std::uint32_t min_flight_us = 100000;           // shorter flights are dropped (a jolt, not a throw)
   std::uint32_t rearm_after_landing_us = 300000;  // no release this soon after a landing (bounces)
   Scalar turned_at_least_rad = Scalar(0.5);       // FlightResult::turned
   Scalar estimate_min_turn_rad = Scalar(2);       // a flight's r fit joins the estimate past this turn

@@ -37,7 +37,7 @@ struct ReleaseDetectorSettings {
   std::uint16_t confirm_samples = 5;          // and at least this many samples
   Scalar release_fraction = Scalar(0.5);      // release: first sample below this fraction of the limit
   Scalar level_margin_m_s2 = Scalar(0.2);     // and below twice the flight's mean residual plus this
-  std::uint32_t fade_out_at_most_us = 3000;   // a fading hand force is extrapolated this far at most
+  std::uint32_t fade_out_at_most_us = 3500;   // a fading hand force is extrapolated this far at most
   Scalar step_fraction = Scalar(0.5);         // samples further apart: release at this fraction of the step
   std::uint16_t landing_samples = 3;          // consecutive samples that are not free: landing
   Scalar max_lever_arm_m = Scalar(0.15);      // |r| beyond this is not an IMU inside the body
@@ -221,7 +221,7 @@ class ReleaseDetector {
   bool confirmed(const History& history, std::uint32_t start, std::uint32_t c, std::uint32_t h) const {
     const std::uint32_t n = c - start + 1;
     if (n + 2 * h + 2 >= static_cast<std::uint32_t>(N)) return true;  // as long as the history allows
-    return n >= settings_.confirm_samples && history.t_us(c) - history.t_us(start) >= settings_.confirm_us;
+    return n >= settings_.confirm_samples && history.span_us(start, c) >= settings_.confirm_us;
   }
 
   // The first sample of the trailing run of [start, c] whose residual is down at the level
@@ -249,30 +249,60 @@ class ReleaseDetector {
     return after_fade_out(history, j0, c, h, r, level);
   }
 
-  // A contact force fades to zero at a finite rate, and its last part hides in the noise:
-  // the line through the residual at j0 (already at flight level) and at the newest
-  // earlier sample still above twice that level meets zero at the release. The first
-  // sample from then on is the release (noise at j0 can only move it later).
+  // Where the hand's force ended: a fall of the residual, extended as a straight line to
+  // zero; the first sample from then on is the release. Which fall depends on how far
+  // apart the samples are:
+  //  - under `tail_from_us`: from the newest earlier sample still above twice the level to
+  //    j0, the first at flight level. The last of a force that fades hides in the noise
+  //    there, so the line runs on past j0 (noise at j0 can only move the release later).
+  //  - from `tail_from_us` up to `fade_out_at_most_us` (about 285 Hz to 1.1 kHz): the
+  //    sensor's anti-alias filter, set in proportion to its rate, draws the end of the
+  //    force out into a tail of a few samples, and a few samples are 5-10 ms here (j0 came
+  //    5-9 ms after the release at 400 Hz behind a 100 Hz filter). So the steepest fall in
+  //    the 16 samples up to j0, each measured over at least `chord_us`: its line reaches
+  //    zero no earlier than a force that falls with a slope (or ever more steeply) has
+  //    ended, and later by the filter's delay rather than by its settling.
+  // The line is extended `fade_out_at_most_us` at most.
   ALOFT_COLD std::uint32_t after_fade_out(const History& history, std::uint32_t j0, std::uint32_t c,
                                           std::uint32_t h, const Vec3<Scalar>& r, Scalar level) const {
-    const Scalar e0 = residual(history, j0, h, r);
-    std::uint32_t j1 = j0;
-    Scalar e1 = e0;
-    while (j1 > j0 - 16u && j1 > h && history.holds(j1 - 1 - h)) {
-      --j1;
-      e1 = residual(history, j1, h, r);
-      if (e1 < Scalar(0) || e1 > Scalar(2) * level) break;
+    std::uint32_t a = j0, b = j0;
+    Scalar e_a = residual(history, j0, h, r), e_b = e_a;
+    const std::uint32_t dt = history.dt_us(j0);
+    if (dt < tail_from_us) {
+      while (a > j0 - 16u && a > h && history.holds(a - 1 - h)) {
+        --a;
+        e_a = residual(history, a, h, r);
+        if (e_a < Scalar(0) || e_a > Scalar(2) * level) break;
+      }
+      if (!(e_a > Scalar(2) * level)) return j0;
+    } else {
+      const std::uint32_t step = (chord_us + dt - 1u) / dt;  // samples per fall, at least chord_us
+      Scalar steepest = Scalar(0);
+      for (std::uint32_t end = j0; end + 16u > j0 && end > h + step; --end) {
+        const Scalar e_start = residual(history, end - step, h, r), e_end = residual(history, end, h, r);
+        if (e_start < Scalar(0) || e_end < Scalar(0)) break;
+        const Scalar slope = (e_start - e_end) / static_cast<Scalar>(history.span_us(end - step, end));
+        if (slope > steepest) {
+          steepest = slope;
+          a = end - step;
+          b = end;
+          e_a = e_start;
+          e_b = e_end;
+        }
+      }
     }
-    if (!(e1 > Scalar(2) * level) || !(e1 > e0)) return j0;
-    const Scalar span_us = scalar_of_us<Scalar>(history.t_us(j0) - history.t_us(j1));
-    Scalar to_zero_us = span_us * e0 / (e1 - e0);
+    if (!(e_a > e_b)) return j0;
+    Scalar to_zero_us = static_cast<Scalar>(history.span_us(a, b)) * e_b / (e_a - e_b);
     const Scalar cap_us = static_cast<Scalar>(settings_.fade_out_at_most_us);
     if (to_zero_us > cap_us) to_zero_us = cap_us;
-    const std::uint64_t zero_us = history.t_us(j0) + whole_us(to_zero_us);
-    std::uint32_t j = j0;
-    while (j < c && history.t_us(j) < zero_us) ++j;
+    // In whole µs after b (the cap keeps it far below 2^32).
+    const auto after_b_us = static_cast<std::uint32_t>(whole_us(to_zero_us));
+    std::uint32_t j = b;
+    while (j < c && history.span_us(b, j) < after_b_us) ++j;
     return j;
   }
+  static constexpr std::uint32_t tail_from_us = 900;  // samples this far apart: the steepest fall
+  static constexpr std::uint32_t chord_us = 3000;     // a fall measured over at least this long
 
   // Samples too far apart to see a hand's force fade (and an anti-alias filter that smears
   // the step over one or two of them): the release is where the residual, interpolated

@@ -40,8 +40,12 @@ class SampleHistory {
   const Vec3<Scalar>& gyro(std::uint32_t i) const { return entries_[i % N].gyro; }
   const Vec3<Scalar>& accel(std::uint32_t i) const { return entries_[i % N].accel; }
   std::uint8_t flags(std::uint32_t i) const { return flags_[i % N]; }
-  std::uint64_t t_us(std::uint32_t i) const {
+  ALOFT_OUT_OF_LINE std::uint64_t t_us(std::uint32_t i) const {
     return newest_t_us_ - (entries_[(count_ - 1) % N].t_low - entries_[i % N].t_low);
+  }
+  // Stamp difference from sample a to sample b (µs), both held, a <= b.
+  std::uint32_t span_us(std::uint32_t a, std::uint32_t b) const {
+    return entries_[b % N].t_low - entries_[a % N].t_low;
   }
   // Stamp difference to the previous sample (µs); 0 for the oldest one held.
   std::uint32_t dt_us(std::uint32_t i) const {
