@@ -20,14 +20,13 @@ std::string stem_of(const std::string& path) { return std::filesystem::path(path
 
 // A log's rates and times are checked from the physics as `aloft diagnose` checks them
 // (diagnose/1_input/unit_checks.hpp), so that a gyro in °/s or times in ms are refused
-// with the option that converts them rather than simulated into non-finite figures.
+// with the option that converts them rather than simulated into non-finite figures. The
+// rates are already in body axes here.
 diagnose::Flight unit_check_flight(const std::vector<double>& time_s,
-                                   const std::vector<Eigen::Vector3d>& rate,
-                                   const Eigen::Quaterniond& sensor_to_body) {
+                                   const std::vector<Eigen::Vector3d>& body_rate) {
   diagnose::Flight f;
-  f.sensor_to_body = sensor_to_body;
   f.time_s = time_s;
-  f.omega = rate;
+  f.omega = body_rate;
   f.usable.assign(time_s.size(), 1);
   return f;
 }
@@ -115,15 +114,14 @@ RecordedTrial load_recorded_trial(const RecordingInput& in) {
     std::vector<diagnose::Flight> unit_checked;
     for (const Segment& s : segments) {
       std::vector<double> t;
-      std::vector<Eigen::Vector3d> w, sensor_w;
+      std::vector<Eigen::Vector3d> w;
       for (std::size_t i = 0; i < log.time_s.size(); ++i) {
         if (log.time_s[i] >= s.start_s && log.time_s[i] <= s.end_s) {
           t.push_back(log.time_s[i]);
           w.push_back(to_body * log.gyro_rad_s[i]);
-          sensor_w.push_back(log.gyro_rad_s[i]);
         }
       }
-      unit_checked.push_back(unit_check_flight(t, sensor_w, out.body.imu_to_body.normalized()));
+      unit_checked.push_back(unit_check_flight(t, w));
       const std::string name =
           segments.size() > 1 || !in.segments_path.empty() ? "segment " + s.name : stem_of(in.imu_path);
       if (t.size() < 3) {
