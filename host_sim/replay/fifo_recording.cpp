@@ -9,9 +9,12 @@
 
 #include "common/commands.hpp"
 #include "common/file_error.hpp"
+#include "common/warning.hpp"
 
 namespace aloft::host {
 namespace {
+
+using icm42688p::has_header_msg;
 
 std::string at_offset(const std::string& path, std::size_t offset, const std::string& problem) {
   return path + ": byte offset " + std::to_string(offset) + ": " + problem;
@@ -41,6 +44,9 @@ std::uint32_t checked_odr(double odr_hz) {
 
 }  // namespace
 
+// Warnings name each fault with its byte offset; a file with many says so once more.
+constexpr std::uint32_t kResyncWarnings = 8;
+
 Recording read_fifo_recording(const std::string& path, double odr_hz, icm42688p::TimestampClock clock) {
   const std::uint32_t odr = checked_odr(odr_hz);
   return with_file_context(path, [&] {
@@ -52,22 +58,50 @@ Recording read_fifo_recording(const std::string& path, double odr_hz, icm42688p:
     recording.t0_us = 0;
     recording.samples.reserve(bytes.size() / icm42688p::kPacket3Bytes);
     icm42688p::FifoDecoder<float> decoder(odr, clock);
-    for (std::size_t offset = 0; offset < bytes.size(); offset += icm42688p::kPacket3Bytes) {
+    std::uint32_t packets = 0;
+    for (std::size_t offset = 0; offset < bytes.size();) {
       const std::size_t left = bytes.size() - offset;
-      if (left < icm42688p::kPacket3Bytes) {
-        throw Error(
-            at_offset(path, offset,
-                      "truncated packet (" + std::to_string(left) + " of 16 bytes at the end of the file)"));
-      }
       ImuSample<float> sample;
-      switch (decoder.decode(bytes.data() + offset, sample)) {
-        case icm42688p::PacketOutcome::foreign_header:
-          throw Error(at_offset(path, offset,
-                                "header " + hex_byte(bytes[offset]) +
-                                    " is not an ICM-42688-P packet 3 (0x68-0x6B: accel, gyro, time stamp)"));
-        case icm42688p::PacketOutcome::invalid: ++recording.invalid_samples; break;
+      const icm42688p::FifoStep step = decoder.next(bytes.data() + offset, left, sample);
+      switch (step.outcome) {
         case icm42688p::PacketOutcome::sample: recording.samples.push_back(sample); break;
+        case icm42688p::PacketOutcome::invalid: ++recording.invalid_samples; break;
+        case icm42688p::PacketOutcome::empty_read: ++recording.empty_reads; break;
+        case icm42688p::PacketOutcome::cut:
+          recording.bytes_skipped += left;
+          warn(at_offset(path, offset,
+                         "the last " + std::string(has_header_msg(bytes[offset]) ? "empty read" : "packet") +
+                             " is cut (" + std::to_string(left) +
+                             " of 16 bytes at the end of the file): skipped"));
+          break;
+        case icm42688p::PacketOutcome::foreign_header: {
+          const std::size_t skip = decoder.resync_bytes(bytes.data() + offset, left);
+          if (++recording.resyncs <= kResyncWarnings) {
+            warn(at_offset(path, offset,
+                           "header " + hex_byte(bytes[offset]) +
+                               " is not an ICM-42688-P packet 3 (0x68-0x6B: accel, gyro, time stamp): " +
+                               std::to_string(skip) + " bytes skipped to the next packet boundary"));
+          }
+          recording.bytes_skipped += skip;
+          offset += skip;
+          continue;
+        }
       }
+      if (step.outcome == icm42688p::PacketOutcome::sample ||
+          step.outcome == icm42688p::PacketOutcome::invalid)
+        ++packets;
+      offset += step.outcome == icm42688p::PacketOutcome::cut ? left : step.bytes;
+    }
+    if (recording.resyncs > kResyncWarnings) {
+      warn(path + ": " + std::to_string(recording.resyncs) + " foreign headers in all, " +
+           std::to_string(recording.bytes_skipped) + " bytes skipped");
+    }
+    // Nothing decoded is the one refusal: every fault above is survivable.
+    if (packets == 0) {
+      throw Error(at_offset(path, 0,
+                            "no ICM-42688-P packet 3 in " + std::to_string(bytes.size()) + " bytes (" +
+                                std::to_string(recording.empty_reads) + " empty reads, " +
+                                std::to_string(recording.bytes_skipped) + " bytes skipped)"));
     }
     if (recording.samples.empty()) {
       throw Error(at_offset(

@@ -10,17 +10,20 @@
 // stamp (65.536 ms); a file holds no other clock, so a longer hole is under-measured by
 // whole wraps (the firmware driver measures those with the MCU clock).
 //
-// What the file must be, or aloft::host::Error with one line naming the file and the byte
-// offset: not empty; a whole number of 16-byte packets (a truncated last packet is
-// refused); every header packet 3 (0x68-0x6B); at least one packet with data.
-//
-// A foreign header is refused, not resynchronised past (so bytes_skipped stays 0). The
-// firmware driver can resync because it flushes the FIFO and the chip restarts on a packet
-// boundary; a file has no flush. After a foreign header nothing marks where the next
-// packet starts — the header value 0x68 is also a common data byte — so any resync would
-// be a guess of the alignment, and a wrong guess turns data bytes into made-up samples.
-// The contract is one line and exit 2 for a foreign header: a replay must never
-// report a flight from bytes it had to guess at.
+// Faults, walked past with the firmware's own rules (aloft/icm42688p_fifo.hpp, next()),
+// each counted in the Recording and none an error:
+//   - HEADER_MSG (0x80, DS-000347 §6.2 "FIFO is empty"): an empty read, the byte alone or
+//     its whole 16-byte slot; counted in empty_reads.
+//   - a foreign header: skipped to the next packet boundary that two packets (headers 16
+//     bytes apart, stamps one period apart) confirm (FifoDecoder::resync_bytes); counted
+//     in resyncs, the bytes in bytes_skipped, a warning names the offset. The driver
+//     resyncs by flushing the FIFO; a file has no flush, so the boundary is searched for,
+//     and confirmed so that a data byte that looks like a header (0x68 is also a gyro's
+//     high byte at 28 rad/s) does not make up samples.
+//   - a cut last packet (power lost mid-burst): a warning naming its offset, its bytes in
+//     bytes_skipped; everything before it is kept.
+// aloft::host::Error, one line naming the file and the byte offset, only where nothing
+// decodes: an empty file, no packet 3 at all, or no packet with data.
 #pragma once
 
 #include <string>

@@ -20,7 +20,9 @@ struct Recording {
   // Source-level accounting (SPEC §5 replay report, `stream`): what the reader dropped
   // or skipped before any sample reached the pipeline. A CSV has none of these.
   std::uint32_t invalid_samples = 0;  // e.g. FIFO packets holding -32768 (no data yet)
-  std::uint64_t bytes_skipped = 0;    // bytes dropped while resynchronising on a header
+  std::uint64_t bytes_skipped = 0;    // bytes not decoded: skipped to resynchronise, or a cut last packet
+  std::uint32_t empty_reads = 0;      // FIFO reads that found it empty (HEADER_MSG, 0x80)
+  std::uint32_t resyncs = 0;          // foreign headers skipped past to the next packet boundary
   // Recording time of the first sample, so that reports can give times in the
   // recording's own base (the CSV's `t`; 0 for the first valid FIFO packet).
   std::uint64_t t0_us = 0;

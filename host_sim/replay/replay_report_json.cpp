@@ -63,6 +63,8 @@ json stream_json(const ReplayResult& result) {
           {"invalid_samples", result.invalid_samples},
           {"clipped_samples", result.stream.clipped_samples},
           {"bytes_skipped", result.bytes_skipped},
+          {"empty_reads", result.empty_reads},
+          {"resyncs", result.resyncs},
           {"gaps", gaps},
           {"lost_s", static_cast<double>(result.stream.lost_us) / 1e6}};
 }

@@ -1,6 +1,7 @@
 // The replay report of SPEC §5 as JSON:
 //   { "recording": {...}, "stream": { "samples", "invalid_samples", "clipped_samples",
-//                 "bytes_skipped", "gaps": [ { "at_s", "length_s" } ], "lost_s" },
+//                 "bytes_skipped", "empty_reads", "resyncs", "gaps": [ { "at_s", "length_s" } ],
+//                 "lost_s" },
 //     "flights": [ { "flight", "release_s", "landing_s", "samples", "gaps",
 //                    "clipped_samples", "imu_position_m", "imu_position_from",
 //                    "rms_da_deg", "max_da_deg", "rms_rel_err", "comparisons"[, "note"] } ] }

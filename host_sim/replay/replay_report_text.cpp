@@ -37,11 +37,12 @@ std::string flight_row(const ReplayResult& result, const FlightResult<float>& f)
 }  // namespace
 
 std::string replay_report_text(const Recording& recording, const ReplayResult& result) {
-  std::string text =
-      printf_text("%s: %u samples, %u gaps (%.6f s lost), %u clipped, %u invalid, %llu bytes skipped\n",
-                  recording.path.c_str(), result.stream.samples, result.stream.gaps,
-                  double(result.stream.lost_us) / 1e6, result.stream.clipped_samples, result.invalid_samples,
-                  static_cast<unsigned long long>(result.bytes_skipped));
+  std::string text = printf_text(
+      "%s: %u samples, %u gaps (%.6f s lost), %u clipped, %u invalid, %u empty reads, %llu bytes "
+      "skipped\n",
+      recording.path.c_str(), result.stream.samples, result.stream.gaps, double(result.stream.lost_us) / 1e6,
+      result.stream.clipped_samples, result.invalid_samples, result.empty_reads,
+      static_cast<unsigned long long>(result.bytes_skipped));
   if (result.flights.empty()) return text + "no flight found\n";
   text += "flight  release_s  landing_s samples gaps  imu_position_mm         rms_da_deg rms_rel_err\n";
   for (const FlightResult<float>& f : result.flights) text += flight_row(result, f);

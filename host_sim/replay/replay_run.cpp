@@ -35,6 +35,8 @@ ReplayResult run_replay(const ReplaySettings& settings, const std::string& body_
   ReplayResult result;
   result.invalid_samples = recording.invalid_samples;
   result.bytes_skipped = recording.bytes_skipped;
+  result.empty_reads = recording.empty_reads;
+  result.resyncs = recording.resyncs;
   result.t0_us = std::llround(recording.t0_s * 1e6);
   // The pipeline is large (K simulations); on the heap rather than the stack.
   auto pipeline =

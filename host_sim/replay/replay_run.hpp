@@ -42,6 +42,8 @@ struct ReplayResult {
   StreamCounts stream;  // as the pipeline counted them
   std::uint32_t invalid_samples = 0;
   std::uint64_t bytes_skipped = 0;
+  std::uint32_t empty_reads = 0;
+  std::uint32_t resyncs = 0;
   std::vector<StreamGap> gaps;
   std::vector<FlightResult<float>> flights;
   std::int64_t t0_us = 0;  // the recording's first sample in its own time base

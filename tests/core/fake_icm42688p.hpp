@@ -16,8 +16,13 @@
 //     per INTF_CONFIG0) and FIFO_DATA (no address increment) are read as the chip does.
 // Faults, scheduled by the test: power-up packets without data (-32768), a wrong
 // WHO_AM_I, a register that ignores writes, a register that changes on its own
-// (corrupt_register), a garbled header, empty reads, and a truncated burst (the port
-// sees the short transfer and returns bus_error).
+// (corrupt_register), a garbled header, empty reads, a truncated burst (the port
+// sees the short transfer and returns bus_error), and reads of FIFO_DATA that find the
+// FIFO empty (HEADER_MSG, 0x80, DS-000347 §6.2): whole bursts that read 0x80 while
+// FIFO_COUNT said there were packets (empty_bursts), or one 0x80 byte before the
+// packets of a burst, which then ends 15 bytes into its last packet: a cut tail
+// (empty_byte_before_next_burst). A tap (tap_fifo_data) sees every byte read from
+// FIFO_DATA, as a logic analyser would: the recording that `aloft replay --fifo` reads.
 #pragma once
 
 #include <cstdint>
@@ -66,6 +71,19 @@ class FakeIcm42688p {
     truncate_armed_ = true;
     truncate_at_ = bytes;
   }
+  // The next n FIFO_DATA bursts read as from an empty FIFO: every byte 0x80 (what
+  // pop_byte gives), nothing taken from the FIFO; one empty read per 16-byte slot.
+  void empty_bursts(std::uint32_t n) { empty_bursts_left_ = n; }
+  // The next burst begins with one 0x80 byte, then the FIFO's bytes: its last packet is
+  // cut 15 bytes in, and the FIFO's read point is left inside that packet.
+  void empty_byte_before_next_burst() { empty_byte_armed_ = true; }
+  // Every byte read from FIFO_DATA, in order, to `tap` (no heap: the test stores them).
+  using FifoTap = void (*)(void* context, const std::uint8_t* bytes, std::uint16_t length);
+  void tap_fifo_data(FifoTap tap, void* context) {
+    tap_ = tap;
+    tap_context_ = context;
+  }
+  std::uint32_t empty_reads_sent() const { return empty_reads_sent_; }
   void corrupt_register(std::uint8_t bank, std::uint8_t reg, std::uint8_t value) { regs_[bank][reg] = value; }
 
   std::uint8_t reg(std::uint8_t bank, std::uint8_t reg) const { return regs_[bank][reg]; }
@@ -207,7 +225,21 @@ class FakeIcm42688p {
     const bool truncated = truncate_armed_ && truncate_at_ < length;
     const std::uint16_t n = truncated ? truncate_at_ : length;
     truncate_armed_ = false;
-    for (std::uint16_t i = 0; i < length; ++i) data[i] = i < n ? pop_byte() : 0xFF;
+    if (empty_bursts_left_ > 0) {
+      --empty_bursts_left_;
+      for (std::uint16_t i = 0; i < length; ++i) data[i] = 0x80;
+      empty_reads_sent_ +=
+          static_cast<std::uint32_t>((length + kEncoderPacket3Bytes - 1) / kEncoderPacket3Bytes);
+    } else {
+      std::uint16_t i = 0;
+      if (empty_byte_armed_ && length > 0) {
+        data[i++] = 0x80;
+        ++empty_reads_sent_;
+      }
+      empty_byte_armed_ = false;
+      for (; i < length; ++i) data[i] = i < n ? pop_byte() : 0xFF;
+    }
+    if (tap_ != nullptr) tap_(tap_context_, data, n);
     return truncated ? aloft::Status::bus_error : aloft::Status::ok;
   }
 
@@ -255,6 +287,11 @@ class FakeIcm42688p {
   bool sampling_ = false;
   bool truncate_armed_ = false;
   std::uint16_t truncate_at_ = 0;
+  std::uint32_t empty_bursts_left_ = 0;
+  bool empty_byte_armed_ = false;
+  std::uint32_t empty_reads_sent_ = 0;
+  FifoTap tap_ = nullptr;
+  void* tap_context_ = nullptr;
 };
 
 }  // namespace aloft_test

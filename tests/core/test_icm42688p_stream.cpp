@@ -83,6 +83,47 @@ ALOFT_TEST_CASE("ICM-42688-P empty reads are counted and lose nothing", "[icm426
   ALOFT_CHECK(check.samples + 1u >= 200u);
 }
 
+ALOFT_TEST_CASE("ICM-42688-P bursts that read 0x80 (FIFO empty) are empty reads and lose nothing",
+                "[icm42688p]") {
+  FakeIcm42688p chip(&aloft_test::mixed_sample);
+  Icm42688pDriver<float> driver(chip.bus(), DriverSettings());
+  ALOFT_REQUIRE(driver.begin() == Status::ok);
+  StreamCheck<float> check;
+  ALOFT_CHECK(aloft_test::run_polls(driver, chip, check, 100, 1000) == 0u);
+  const std::uint32_t before = driver.counters().empty_reads;
+  chip.empty_bursts(3);  // 1, then 2, then 3 packets waiting: 6 slots of 0x80
+  ALOFT_CHECK(aloft_test::run_polls(driver, chip, check, 3, 1000) == 0u);
+  ALOFT_CHECK(chip.empty_reads_sent() == 6u);
+  ALOFT_CHECK(driver.counters().empty_reads == before + 6u);
+  ALOFT_CHECK(aloft_test::run_polls(driver, chip, check, 100, 1000) == 0u);
+  const auto& c = driver.counters();
+  ALOFT_CHECK(c.resyncs + c.bytes_skipped + c.overflows + c.gaps == 0u);
+  ALOFT_CHECK(check.gaps == 0u);
+  ALOFT_CHECK(check.mismatches == 0u);
+  ALOFT_CHECK(check.samples == chip.packets_made() - chip.fifo_bytes() / 16u);
+}
+
+ALOFT_TEST_CASE("ICM-42688-P a 0x80 byte before a burst: counted; the tail it cut is resynchronised",
+                "[icm42688p]") {
+  FakeIcm42688p chip(&aloft_test::mixed_sample);
+  Icm42688pDriver<float> driver(chip.bus(), DriverSettings());
+  ALOFT_REQUIRE(driver.begin() == Status::ok);
+  StreamCheck<float> check;
+  ALOFT_CHECK(aloft_test::run_polls(driver, chip, check, 100, 1000) == 0u);
+  const std::uint32_t before = driver.counters().empty_reads;
+  chip.advance_us(3000);  // 4 packets wait
+  chip.empty_byte_before_next_burst();
+  ALOFT_CHECK(aloft_test::run_polls(driver, chip, check, 100, 1000) == 0u);
+  const auto& c = driver.counters();
+  ALOFT_CHECK(c.empty_reads == before + 1u);
+  ALOFT_CHECK(c.resyncs == 1u);
+  ALOFT_CHECK(c.bytes_skipped == 15u);  // the cut packet: 15 of its bytes were read
+  ALOFT_CHECK(c.overflows + c.bus_errors == 0u);
+  ALOFT_REQUIRE(check.gaps == 1u);
+  ALOFT_CHECK(check.mismatches == 0u);
+  ALOFT_CHECK(c.gaps == 1u);
+}
+
 ALOFT_TEST_CASE("ICM-42688-P overflow shorter than a stamp wrap: flushed, gap measured", "[icm42688p]") {
   FakeIcm42688p chip(&aloft_test::mixed_sample);
   Icm42688pDriver<float> driver(chip.bus(), settings_at(OutputDataRate::hz4000));

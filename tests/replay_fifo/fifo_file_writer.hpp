@@ -22,6 +22,18 @@ struct FifoFile {
     std::uint32_t count = 0;
   };
   std::vector<Hole> holes;  // samples left out, as after an overflow
+  // Empty reads (a header with HEADER_MSG, 0x80, DS-000347 §6.2) before sample `before`:
+  // the byte alone (a reader that stops at it), or a whole 16-byte slot, 0x80 and 15 fill
+  // bytes (a fixed-size burst while the FIFO was empty; the datasheet does not say what the
+  // rest reads, so the fill is the test's choice).
+  struct EmptyRead {
+    std::uint32_t before = 0;
+    bool whole_slot = false;
+    std::uint8_t fill = 0x80;
+  };
+  std::vector<EmptyRead> empty_reads;
+  std::int64_t foreign_header_packet = -1;  // this sample's header reads 0x3C
+  std::uint32_t cut_tail = 0;               // the first bytes of sample `packets`, cut (0-15)
 
   bool missing(std::uint32_t k) const {
     for (const Hole& h : holes) {
@@ -32,14 +44,27 @@ struct FifoFile {
 
   std::string bytes() const {
     std::string out;
-    for (std::uint32_t k = 0; k < packets; ++k) {
-      if (missing(k)) continue;
-      const ChipSample s = k < without_data ? no_data_sample() : mixed_sample(k);
-      std::uint8_t packet[kEncoderPacket3Bytes];
-      encode_packet3(s, static_cast<std::uint16_t>((stamp_start + k * period_us) & 0xFFFFu), true, packet);
-      out.append(reinterpret_cast<const char*>(packet), sizeof packet);
+    for (std::uint32_t k = 0; k <= packets; ++k) {
+      for (const EmptyRead& e : empty_reads) {
+        if (e.before != k) continue;
+        out += '\x80';
+        if (e.whole_slot) out.append(kEncoderPacket3Bytes - 1, static_cast<char>(e.fill));
+      }
+      if (k == packets) {
+        out += packet(k).substr(0, cut_tail);
+        break;
+      }
+      if (!missing(k)) out += packet(k);
     }
     return out;
+  }
+
+  std::string packet(std::uint32_t k) const {
+    const ChipSample s = k < without_data ? no_data_sample() : mixed_sample(k);
+    std::uint8_t p[kEncoderPacket3Bytes];
+    encode_packet3(s, static_cast<std::uint16_t>((stamp_start + k * period_us) & 0xFFFFu), true, p);
+    if (static_cast<std::int64_t>(k) == foreign_header_packet) p[0] = 0x3C;
+    return std::string(reinterpret_cast<const char*>(p), sizeof p);
   }
 };
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "aloft/icm42688p_driver.hpp"
+#include "common/warning.hpp"
 #include "fake_icm42688p.hpp"
 #include "fifo_file_writer.hpp"
 #include "one_line_error.hpp"
@@ -103,22 +104,112 @@ TEST_CASE("replay --fifo: the file reader and the firmware driver agree on the s
   }
 }
 
-TEST_CASE("replay --fifo: bad bytes get one line naming the file and the offset", "[replay_fifo]") {
+TEST_CASE("replay --fifo: empty reads (0x80) are counted, the byte alone or a whole slot", "[replay_fifo]") {
+  aloft::test::ScratchDir dir;
+  FifoFile plain;
+  plain.packets = 100;
+  FifoFile file = plain;
+  using E = FifoFile::EmptyRead;
+  file.empty_reads = {E{0, false},       E{10, false},      E{10, false},      E{20, true, 0x80},
+                      E{30, true, 0x00}, E{40, true, 0xFF}, E{50, false},      E{50, true, 0x80},
+                      E{60, true, 0x80}, E{60, true, 0x80}, E{100, true, 0x00}};
+  aloft::host::WarningCapture warnings;
+  const aloft::host::Recording r = read_fifo_recording(dir.write("empty_reads.bin", file.bytes()), 1000);
+  const aloft::host::Recording want = read_fifo_recording(dir.write("plain.bin", plain.bytes()), 1000);
+  CHECK(file.bytes().size() == 100u * 16u + 4u + 7u * 16u);  // 4 bytes alone, 7 whole slots
+  CHECK(r.empty_reads == 11u);
+  CHECK(r.bytes_skipped == 0u);
+  CHECK(r.resyncs == 0u);
+  CHECK(warnings.messages().empty());
+  REQUIRE(r.samples.size() == 100u);
+  for (std::size_t i = 0; i < r.samples.size(); ++i) {
+    REQUIRE(r.samples[i].t_us == want.samples[i].t_us);
+    REQUIRE(r.samples[i].accel_m_s2 == want.samples[i].accel_m_s2);
+    REQUIRE(r.samples[i].flags == want.samples[i].flags);
+  }
+}
+
+TEST_CASE("replay --fifo: a cut last packet is a warning naming its offset; all before it is kept",
+          "[replay_fifo]") {
+  aloft::test::ScratchDir dir;
+  FifoFile file;
+  file.packets = 10;
+  file.cut_tail = 7;
+  {
+    aloft::host::WarningCapture warnings;
+    const aloft::host::Recording r = read_fifo_recording(dir.write("cut.bin", file.bytes()), 1000);
+    CHECK(r.samples.size() == 10u);
+    CHECK(r.bytes_skipped == 7u);
+    CHECK(r.resyncs == 0u);
+    REQUIRE(warnings.messages().size() == 1u);
+    CHECK(warnings.contains("cut.bin: byte offset 160: the last packet is cut (7 of 16 bytes"));
+  }
+  // A fixed-size burst cut inside an empty slot.
+  file.cut_tail = 0;
+  file.empty_reads = {FifoFile::EmptyRead{10, true, 0x00}};
+  aloft::host::WarningCapture warnings;
+  const aloft::host::Recording r =
+      read_fifo_recording(dir.write("cut_slot.bin", file.bytes().substr(0, 160 + 5)), 1000);
+  CHECK(r.samples.size() == 10u);
+  CHECK(r.empty_reads == 0u);
+  CHECK(r.bytes_skipped == 5u);
+  CHECK(warnings.contains("byte offset 160: the last empty read is cut (5 of 16 bytes"));
+}
+
+TEST_CASE("replay --fifo: a foreign header is skipped to the next packet boundary, counted",
+          "[replay_fifo]") {
+  aloft::test::ScratchDir dir;
+  FifoFile file;
+  file.packets = 100;
+  file.foreign_header_packet = 40;
+  {
+    aloft::host::WarningCapture warnings;
+    const aloft::host::Recording r = read_fifo_recording(dir.write("foreign.bin", file.bytes()), 1000);
+    CHECK(r.resyncs == 1u);
+    CHECK(r.bytes_skipped == 16u);
+    REQUIRE(r.samples.size() == 99u);
+    CHECK(r.samples[40].t_us == 41000u);  // sample 40 is gone: a gap of 2 ms
+    CHECK(r.samples[40].gap_before());
+    check_holds_sample(r.samples[40], 41);
+    REQUIRE(warnings.messages().size() == 1u);
+    CHECK(warnings.contains("foreign.bin: byte offset 640: header 0x3C"));
+    CHECK(warnings.contains("16 bytes skipped"));
+  }
+  // Shifted by one byte: the first "header" is a data byte; the stream starts at 15.
+  FifoFile ten;
+  ten.packets = 10;
+  aloft::host::WarningCapture warnings;
+  const aloft::host::Recording shifted =
+      read_fifo_recording(dir.write("shifted.bin", ten.bytes().substr(1)), 1000);
+  CHECK(shifted.resyncs == 1u);
+  CHECK(shifted.bytes_skipped == 15u);
+  REQUIRE(shifted.samples.size() == 9u);
+  check_holds_sample(shifted.samples[0], 1);
+  // Junk between two packets: skipped, nothing lost.
+  std::string junk = ten.bytes();
+  junk.insert(16 * 4, "\x3C\x11\x68\x33\x44", 5);
+  const aloft::host::Recording r = read_fifo_recording(dir.write("junk.bin", junk), 1000);
+  CHECK(r.resyncs == 1u);
+  CHECK(r.bytes_skipped == 5u);
+  CHECK(r.samples.size() == 10u);
+  CHECK(warnings.contains("junk.bin: byte offset 64: header 0x3C"));
+}
+
+TEST_CASE("replay --fifo: one line naming the file, only where nothing decodes", "[replay_fifo]") {
   aloft::test::ScratchDir dir;
   FifoFile file;
   file.packets = 10;
   const std::string good = file.bytes();
+  const aloft::host::WarningCapture quiet;
   CHECK_ONE_LINE_ERROR(read_fifo_recording(dir.write("empty.bin", ""), 1000), "empty.bin", "byte offset 0",
                        "empty");
-  CHECK_ONE_LINE_ERROR(read_fifo_recording(dir.write("cut.bin", good.substr(0, 16 * 3 + 7)), 1000), "cut.bin",
-                       "byte offset 48", "truncated packet (7 of 16 bytes");
-  std::string foreign = good;
-  foreign[16 * 2] = '\x3C';
-  CHECK_ONE_LINE_ERROR(read_fifo_recording(dir.write("foreign.bin", foreign), 1000), "foreign.bin",
-                       "byte offset 32", "header 0x3C");
-  // Shifted by one byte: the first header is a data byte.
-  CHECK_ONE_LINE_ERROR(read_fifo_recording(dir.write("shifted.bin", good.substr(1)), 1000), "shifted.bin",
-                       "byte offset 0", "not an ICM-42688-P packet 3");
+  CHECK_ONE_LINE_ERROR(read_fifo_recording(dir.write("junk.bin", std::string(64, '\x3C')), 1000), "junk.bin",
+                       "no ICM-42688-P packet 3 in 64 bytes (0 empty reads, 64 bytes skipped)");
+  CHECK_ONE_LINE_ERROR(read_fifo_recording(dir.write("only_empty.bin", std::string(48, '\x80')), 1000),
+                       "only_empty.bin",
+                       "no ICM-42688-P packet 3 in 48 bytes (3 empty reads, 0 bytes skipped)");
+  CHECK_ONE_LINE_ERROR(read_fifo_recording(dir.write("cut_only.bin", good.substr(0, 9)), 1000),
+                       "cut_only.bin", "no ICM-42688-P packet 3 in 9 bytes (0 empty reads, 9 bytes skipped)");
   FifoFile no_data;
   no_data.packets = 5;
   no_data.without_data = 5;

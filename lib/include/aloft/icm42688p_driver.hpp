@@ -18,11 +18,15 @@
 //     flushed; the samples lost make a gap, whose length the next sample's time stamp
 //     gives: measured from the stamps, with the wrap count (65.536 ms at 1 µs) taken from
 //     the MCU clock (bus.now_us), so gaps longer than one wrap are measured too.
-//   - a header that is not packet 3: the rest of the burst is skipped (bytes_skipped),
-//     the FIFO flushed and the stream resynchronised on the next packet boundary.
+//   - a header that is not packet 3, or a packet cut by the burst's end (after a lone
+//     HEADER_MSG byte): the rest of the burst is skipped (bytes_skipped), the FIFO
+//     flushed and the stream resynchronised on the next packet boundary.
+//   - a header with HEADER_MSG (0x80, §6.2 "FIFO is empty") inside a burst: an empty
+//     read, counted, the walk goes on (the byte alone or its 16-byte slot, by the rule
+//     of aloft/icm42688p_fifo.hpp).
 //   - a bus error during the burst (a truncated transfer the port detected): the same.
 //   - packets holding -32768 (no data yet, as after power-up): dropped.
-//   - FIFO_COUNT below one packet: an empty read.
+//   - FIFO_COUNT below one packet: an empty read (no burst).
 //
 // RAM: the object itself, burst buffer included, at most 512 bytes (static_assert below).
 // No heap, no exceptions, no blocking wait longer than the datasheet's 1 ms after reset.
@@ -117,8 +121,8 @@ struct DriverCounters {
   std::uint32_t invalid = 0;          // packets holding -32768, dropped
   std::uint32_t resyncs = 0;          // foreign header or broken burst: flushed, resynchronised
   std::uint32_t overflows = 0;        // FIFO full: flushed
-  std::uint32_t bytes_skipped = 0;    // bytes read but not decoded (after a foreign header)
-  std::uint32_t empty_reads = 0;      // polls that found no whole packet
+  std::uint32_t bytes_skipped = 0;    // bytes read but not decoded (foreign header, cut packet)
+  std::uint32_t empty_reads = 0;      // polls that found no whole packet, and HEADER_MSG reads
   std::uint32_t register_faults = 0;  // configuration registers found without their bits
   std::uint32_t bus_errors = 0;       // bus calls that failed
   std::uint32_t gaps = 0;             // samples with gap_before
@@ -334,21 +338,31 @@ Status Icm42688pDriver<Scalar>::read_burst(std::uint16_t packets_in_fifo, const 
     decoder_.expect_gap(us_to_ticks(first_mcu_us - last_sample_mcu_us_));
   }
   data_lost_ = false;
-  for (std::uint16_t i = 0; i < n; ++i) {
+  const std::uint16_t bytes = static_cast<std::uint16_t>(n * kPacket3Bytes);
+  std::uint16_t i = 0;  // packets so far
+  for (std::uint16_t at = 0; at < bytes;) {
     ImuSample<Scalar> sample;
-    const PacketOutcome outcome = decoder_.decode(burst_ + i * kPacket3Bytes, sample);
-    if (outcome == PacketOutcome::foreign_header) {
+    const FifoStep step = decoder_.next(burst_ + at, bytes - at, sample);
+    if (step.outcome == PacketOutcome::foreign_header || step.outcome == PacketOutcome::cut) {
+      // Foreign, or a packet cut by the end of the burst (a lone HEADER_MSG byte moved
+      // the packets): the FIFO's read point is not on a boundary. Flush and restart.
       ++counters_.resyncs;
-      counters_.bytes_skipped += static_cast<std::uint32_t>(n - i) * kPacket3Bytes;
+      counters_.bytes_skipped += static_cast<std::uint32_t>(bytes - at);
       flush_and_mark_lost();
       return Status::ok;
     }
-    ++counters_.packets;
-    if (outcome == PacketOutcome::invalid) {
-      ++counters_.invalid;
+    at = static_cast<std::uint16_t>(at + step.bytes);
+    if (step.outcome == PacketOutcome::empty_read) {
+      ++counters_.empty_reads;
       continue;
     }
-    emit(sample, first_mcu_us + static_cast<std::uint64_t>(i) * period_us(), sink);
+    ++counters_.packets;
+    if (step.outcome == PacketOutcome::invalid) {
+      ++counters_.invalid;
+    } else {
+      emit(sample, first_mcu_us + static_cast<std::uint64_t>(i) * period_us(), sink);
+    }
+    ++i;
   }
   return Status::ok;
 }

@@ -20,8 +20,35 @@
 //   - gap_before: the stamps moved on by more than 1.5 nominal periods since the last
 //     sample returned: packets were lost (a flush) or dropped (invalid). The stamps are
 //     exact, so a flush that lost nothing flags nothing.
+//
+// Walking FIFO_DATA bytes (next(): one item at a time; the driver walks each burst, the
+// host's `aloft replay --fifo` a whole recording, with this same code):
+//   - a packet-3 header (0x68-0x6B) with 16 bytes: a packet (sample or invalid);
+//   - a header with HEADER_MSG set (0x80; §6.2 "FIFO is empty"): an empty read, never an
+//     error. The datasheet defines only that header bit; what the rest of a burst read
+//     from an empty FIFO holds it does not say (0x80 again, 0x00 or 0xFF are all
+//     plausible, and a fixed-size reader records them). A recording holds either the
+//     byte alone (a reader that stopped at it) or the whole 16-byte slot (a fixed-size
+//     burst). Told apart by the byte after it (see empty_read_bytes):
+//       the next byte is a packet-3 header              -> the byte alone (1 byte);
+//       fewer than 16 bytes left                        -> the byte alone, or, when the
+//                                                          next byte is neither a header
+//                                                          nor HEADER_MSG, a cut slot;
+//       the next byte is not a header and has no HEADER_MSG (a fill byte: nothing can
+//       start there)                                    -> the whole slot (16 bytes);
+//       the next byte has HEADER_MSG (another empty read, or a fill of 0x80/0xFF): the
+//       whole slot unless a packet-3 header starts inside it (bytes 2-15), then the
+//       byte alone. So both forms decode whatever the fill; the count is one per read,
+//       except that a run of 16 or more lone 0x80 bytes counts as whole slots.
+//   - a packet-3 header with fewer than 16 bytes left: a cut packet (power lost
+//     mid-burst), `cut`, its bytes not decoded;
+//   - any other header: foreign. Nothing marks where the next packet starts. The driver
+//     drops the rest of the burst and flushes the FIFO (the chip restarts on a packet
+//     boundary); a recording has no flush, so its reader skips to the next boundary that
+//     two packets confirm (resync_bytes()).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "aloft/icm42688p_registers.hpp"
@@ -50,6 +77,10 @@ inline std::int16_t big_endian_i16(const std::uint8_t* bytes) {
   return static_cast<std::int16_t>(static_cast<std::uint16_t>((bytes[0] << 8) | bytes[1]));
 }
 
+inline std::uint16_t stamp_of(const std::uint8_t* packet) {
+  return static_cast<std::uint16_t>(big_endian_i16(packet + kPacket3TimestampOffset));
+}
+
 // Reads the 16 bytes at `bytes` as packet 3 (§6 packet structure). The header is not
 // checked here.
 inline RawPacket3 parse_packet3(const std::uint8_t* bytes) {
@@ -60,7 +91,7 @@ inline RawPacket3 parse_packet3(const std::uint8_t* bytes) {
     p.gyro[axis] = big_endian_i16(bytes + kPacket3GyroOffset + 2 * axis);
   }
   p.temperature = static_cast<std::int8_t>(bytes[kPacket3TemperatureOffset]);
-  p.timestamp = static_cast<std::uint16_t>(big_endian_i16(bytes + kPacket3TimestampOffset));
+  p.timestamp = stamp_of(bytes);
   return p;
 }
 
@@ -92,7 +123,31 @@ enum class PacketOutcome : std::uint8_t {
   sample,          // `out` holds a new sample
   invalid,         // a -32768 packet: dropped, the clock moved on
   foreign_header,  // not packet 3: nothing decoded, no state changed
+  empty_read,      // HEADER_MSG: the FIFO was empty (next() only)
+  cut,             // the bytes end inside a packet or an empty slot (next() only)
 };
+
+// One item of a walk over FIFO bytes: what it was, and how many bytes it took (0 for a
+// foreign header: where the next item starts is the caller's to find).
+struct FifoStep {
+  PacketOutcome outcome;
+  std::uint16_t bytes;
+};
+
+inline bool has_header_msg(std::uint8_t header) { return (header & kHeaderMsg) != 0; }
+
+// Bytes taken by the empty read whose HEADER_MSG byte is bytes[0] (`left` ≥ 1 bytes from
+// there), by the rule at the top of this file; 0 when the bytes end inside its slot.
+inline std::uint16_t empty_read_bytes(const std::uint8_t* bytes, std::size_t left) {
+  if (left == 1 || is_packet3_header(bytes[1])) return 1;
+  if (left < kPacket3Bytes) return has_header_msg(bytes[1]) ? 1 : 0;
+  if (has_header_msg(bytes[1])) {
+    for (std::uint16_t i = 2; i < kPacket3Bytes; ++i) {
+      if (is_packet3_header(bytes[i])) return 1;
+    }
+  }
+  return kPacket3Bytes;
+}
 
 template <typename Scalar>
 class FifoDecoder {
@@ -128,6 +183,35 @@ class FifoDecoder {
     if (ticks_ - last_sample_ticks_ > gap_threshold_ticks_) add_flag(out, imu_gap_before);
     last_sample_ticks_ = ticks_;
     return PacketOutcome::sample;
+  }
+
+  // The next item of `left` ≥ 1 bytes of FIFO_DATA (the rules at the top of this file).
+  FifoStep next(const std::uint8_t* bytes, std::size_t left, ImuSample<Scalar>& out) {
+    if (has_header_msg(bytes[0])) {
+      const std::uint16_t n = empty_read_bytes(bytes, left);
+      return n > 0 ? FifoStep{PacketOutcome::empty_read, n}
+                   : FifoStep{PacketOutcome::cut, std::uint16_t(left)};
+    }
+    if (!is_packet3_header(bytes[0])) return {PacketOutcome::foreign_header, 0};
+    if (left < kPacket3Bytes) return {PacketOutcome::cut, static_cast<std::uint16_t>(left)};
+    return {decode(bytes, out), kPacket3Bytes};
+  }
+
+  // After a foreign header at bytes[0]: the bytes to skip (≥ 1, at most `left`) to the
+  // next packet boundary, confirmed by two packet-3 headers 16 bytes apart whose stamps
+  // are 0.5 to 1.5 periods apart. A data byte can look like a header (a gyro at 28 rad/s
+  // has a high byte of 0x68), but then the "stamps" are data too: the chance that a wrong
+  // offset passes is about (4/256)² × 1/64, 4e-6. A last packet without a successor is
+  // skipped with the rest. Host only: the driver flushes instead.
+  std::size_t resync_bytes(const std::uint8_t* bytes, std::size_t left) const {
+    const std::uint64_t period = gap_threshold_ticks_ * 2 / 3;
+    for (std::size_t at = 1; at + 2 * kPacket3Bytes <= left; ++at) {
+      const std::uint8_t* a = bytes + at;
+      if (!is_packet3_header(a[0]) || !is_packet3_header(a[kPacket3Bytes])) continue;
+      const auto step = static_cast<std::uint16_t>(stamp_of(a + kPacket3Bytes) - stamp_of(a));
+      if (2 * step >= period && step <= gap_threshold_ticks_) return at;
+    }
+    return left;
   }
 
   // Microseconds of the unwrapped tick count (integer, from the count itself: no drift).
