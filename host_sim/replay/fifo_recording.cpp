@@ -14,7 +14,7 @@
 namespace aloft::host {
 namespace {
 
-using icm42688p::has_header_msg;
+using icm42688p::is_empty_read_header;
 
 std::string at_offset(const std::string& path, std::size_t offset, const std::string& problem) {
   return path + ": byte offset " + std::to_string(offset) + ": " + problem;
@@ -59,42 +59,47 @@ Recording read_fifo_recording(const std::string& path, double odr_hz, icm42688p:
     recording.samples.reserve(bytes.size() / icm42688p::kPacket3Bytes);
     icm42688p::FifoDecoder<float> decoder(odr, clock);
     std::uint32_t packets = 0;
+    std::vector<std::string> warnings;  // given only if the file is read: a refusal is one line
     for (std::size_t offset = 0; offset < bytes.size();) {
       const std::size_t left = bytes.size() - offset;
       ImuSample<float> sample;
       const icm42688p::FifoStep step = decoder.next(bytes.data() + offset, left, sample);
       switch (step.outcome) {
-        case icm42688p::PacketOutcome::sample: recording.samples.push_back(sample); break;
-        case icm42688p::PacketOutcome::invalid: ++recording.invalid_samples; break;
+        case icm42688p::PacketOutcome::sample:
+          recording.samples.push_back(sample);
+          ++packets;
+          break;
+        case icm42688p::PacketOutcome::invalid:
+          ++recording.invalid_samples;
+          ++packets;
+          break;
         case icm42688p::PacketOutcome::empty_read: ++recording.empty_reads; break;
         case icm42688p::PacketOutcome::cut:
-          recording.bytes_skipped += left;
-          warn(at_offset(path, offset,
-                         "the last " + std::string(has_header_msg(bytes[offset]) ? "empty read" : "packet") +
-                             " is cut (" + std::to_string(left) +
-                             " of 16 bytes at the end of the file): skipped"));
+          recording.bytes_skipped += step.bytes;
+          warnings.push_back(at_offset(
+              path, offset,
+              "the last " + std::string(is_empty_read_header(bytes[offset]) ? "empty read" : "packet") +
+                  " is cut (" + std::to_string(left) + " of 16 bytes at the end of the file): skipped"));
           break;
         case icm42688p::PacketOutcome::foreign_header: {
           const std::size_t skip = decoder.resync_bytes(bytes.data() + offset, left);
           if (++recording.resyncs <= kResyncWarnings) {
-            warn(at_offset(path, offset,
-                           "header " + hex_byte(bytes[offset]) +
-                               " is not an ICM-42688-P packet 3 (0x68-0x6B: accel, gyro, time stamp): " +
-                               std::to_string(skip) + " bytes skipped to the next packet boundary"));
+            warnings.push_back(
+                at_offset(path, offset,
+                          "header " + hex_byte(bytes[offset]) +
+                              " is not an ICM-42688-P packet 3 (0x68-0x6B: accel, gyro, time stamp): " +
+                              std::to_string(skip) + " bytes skipped to the next packet boundary"));
           }
           recording.bytes_skipped += skip;
           offset += skip;
           continue;
         }
       }
-      if (step.outcome == icm42688p::PacketOutcome::sample ||
-          step.outcome == icm42688p::PacketOutcome::invalid)
-        ++packets;
-      offset += step.outcome == icm42688p::PacketOutcome::cut ? left : step.bytes;
+      offset += step.bytes;  // a cut takes the rest
     }
     if (recording.resyncs > kResyncWarnings) {
-      warn(path + ": " + std::to_string(recording.resyncs) + " foreign headers in all, " +
-           std::to_string(recording.bytes_skipped) + " bytes skipped");
+      warnings.push_back(path + ": " + std::to_string(recording.resyncs) + " foreign headers in all, " +
+                         std::to_string(recording.bytes_skipped) + " bytes skipped");
     }
     // Nothing decoded is the one refusal: every fault above is survivable.
     if (packets == 0) {
@@ -108,6 +113,7 @@ Recording read_fifo_recording(const std::string& path, double odr_hz, icm42688p:
           path, 0,
           "no packet holds data (all " + std::to_string(recording.invalid_samples) + " hold -32768)"));
     }
+    for (const std::string& w : warnings) warn(w);
     return recording;
   });
 }

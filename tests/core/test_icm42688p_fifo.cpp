@@ -135,6 +135,69 @@ void check_rc_clock() {
   ALOFT_CHECK(out.t_us == 10032u);
 }
 
+// The walk over FIFO bytes (next()): what each item is and how many bytes it takes.
+template <typename S>
+void check_walk() {
+  using aloft::icm42688p::FifoStep;
+  FifoDecoder<S> d(1000, TimestampClock::pll_or_external);
+  aloft::ImuSample<S> out;
+  std::uint8_t b[48] = {};
+  const auto step = [&](std::size_t left) { return d.next(b, left, out); };
+  const auto is = [](FifoStep st, PacketOutcome o, std::uint16_t n) {
+    return st.outcome == o && st.bytes == n;
+  };
+  std::uint8_t packet[aloft_test::kEncoderPacket3Bytes];
+  aloft_test::encode_packet3(sample_of(1, 2, 3, 4, 5, 6), 1000, true, packet);
+  const auto put_packet = [&](int at) {
+    for (int i = 0; i < 16; ++i) b[at + i] = packet[i];
+  };
+  const auto fill = [&](int from, int to, std::uint8_t v) {
+    for (int i = from; i < to; ++i) b[i] = v;
+  };
+  // 0x80 then a packet header: the byte alone.
+  b[0] = 0x80;
+  put_packet(1);
+  ALOFT_CHECK(is(step(17), PacketOutcome::empty_read, 1));
+  ALOFT_CHECK(is(step(1), PacketOutcome::empty_read, 1));  // the last byte of the bytes
+  // 0x80 and 15 fill bytes (0x00, 0xFF, 0x80): the whole slot.
+  for (std::uint8_t f : {std::uint8_t{0x00}, std::uint8_t{0xFF}, std::uint8_t{0x80}}) {
+    fill(1, 16, f);
+    put_packet(16);
+    ALOFT_CHECK(is(step(32), PacketOutcome::empty_read, 16));
+  }
+  // 0x80 0x80 and a packet: two lone bytes, the first one by the header inside the slot.
+  b[1] = 0x80;
+  put_packet(2);
+  ALOFT_CHECK(is(step(18), PacketOutcome::empty_read, 1));
+  // Fewer than 16 bytes left: 0x80 0x80 is a lone byte; 0x80 and fill is a cut slot.
+  fill(0, 16, 0x80);
+  ALOFT_CHECK(is(step(2), PacketOutcome::empty_read, 1));
+  b[1] = 0x00;
+  ALOFT_CHECK(is(step(5), PacketOutcome::cut, 5));
+  // A packet cut by the end of the bytes; 0xFF and 0x3C are foreign (nothing taken).
+  put_packet(0);
+  ALOFT_CHECK(is(step(9), PacketOutcome::cut, 9));
+  ALOFT_CHECK(!d.started());
+  ALOFT_CHECK(is(step(16), PacketOutcome::sample, 16));
+  b[0] = 0xFF;
+  ALOFT_CHECK(is(step(16), PacketOutcome::foreign_header, 0));
+  b[0] = 0x3C;
+  ALOFT_CHECK(is(step(16), PacketOutcome::foreign_header, 0));
+  // Resync: 3 junk bytes, then two packets one period apart: skip 3. A header-like byte
+  // in the junk does not fool it (its "successor" is not a packet one period on).
+  fill(0, 48, 0x00);
+  b[0] = 0x3C;
+  b[1] = 0x68;
+  put_packet(3);
+  aloft_test::encode_packet3(sample_of(1, 2, 3, 4, 5, 6), 2000, true, packet);
+  put_packet(19);
+  ALOFT_CHECK(d.resync_bytes(b, 35) == 3u);
+  ALOFT_CHECK(d.resync_bytes(b, 34) == 34u);  // no confirmed pair: all skipped
+  aloft_test::encode_packet3(sample_of(1, 2, 3, 4, 5, 6), 9000, true, packet);  // 8 periods on
+  put_packet(19);
+  ALOFT_CHECK(d.resync_bytes(b, 35) == 35u);
+}
+
 }  // namespace
 
 ALOFT_TEST_CASE("ICM-42688-P packet 3 decodes to m/s² and rad/s", "[icm42688p]") {
@@ -160,4 +223,10 @@ ALOFT_TEST_CASE("ICM-42688-P time stamps unwrap to 64-bit microseconds", "[icm42
 ALOFT_TEST_CASE("ICM-42688-P stamps on the internal RC clock are scaled by 32/30", "[icm42688p]") {
   check_rc_clock<float>();
   check_rc_clock<double>();
+}
+
+ALOFT_TEST_CASE("ICM-42688-P FIFO bytes: 0x80 empty reads, cut packets, foreign headers, resync",
+                "[icm42688p]") {
+  check_walk<float>();
+  check_walk<double>();
 }

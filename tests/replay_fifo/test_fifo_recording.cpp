@@ -193,6 +193,67 @@ TEST_CASE("replay --fifo: a foreign header is skipped to the next packet boundar
   CHECK(r.bytes_skipped == 5u);
   CHECK(r.samples.size() == 10u);
   CHECK(warnings.contains("junk.bin: byte offset 64: header 0x3C"));
+  // 0xFF (a bus floating high) has HEADER_MSG's bit but is not 0x80: foreign, not empty.
+  std::string high = ten.bytes();
+  high.insert(16 * 6, "\xFF", 1);
+  const aloft::host::Recording h = read_fifo_recording(dir.write("high.bin", high), 1000);
+  CHECK(h.resyncs == 1u);
+  CHECK(h.bytes_skipped == 1u);
+  CHECK(h.empty_reads == 0u);
+  CHECK(h.samples.size() == 10u);
+}
+
+TEST_CASE("replay --fifo: the fake chip's bytes, faults included: the reader keeps what the driver keeps",
+          "[replay_fifo]") {
+  // Every byte the driver read from FIFO_DATA, tapped as a logic analyser would: 0x80
+  // bursts, a garbled header, and power lost 7 bytes before the end of the last burst.
+  aloft_test::FakeChipFaults faults;
+  faults.garbled_header_packet = 1500;
+  aloft_test::FakeIcm42688p chip(&aloft_test::mixed_sample, faults, 0xFF00);
+  std::string tapped;
+  chip.tap_fifo_data(
+      [](void* c, const std::uint8_t* b, std::uint16_t n) {
+        static_cast<std::string*>(c)->append(reinterpret_cast<const char*>(b), n);
+      },
+      &tapped);
+  aloft::Icm42688pDriver<float> driver(chip.bus(), aloft::icm42688p::DriverSettings());
+  REQUIRE(driver.begin() == aloft::Status::ok);
+  std::vector<aloft::ImuSample<float>> from_driver;
+  const aloft::icm42688p::SampleSink<float> sink{
+      &from_driver, [](void* c, const aloft::ImuSample<float>& s) {
+        static_cast<std::vector<aloft::ImuSample<float>>*>(c)->push_back(s);
+      }};
+  while (chip.packets_made() < 3000) {
+    if (chip.packets_made() == 1000) chip.empty_bursts(3);
+    if (chip.packets_made() == 2000) {
+      chip.advance_us(5000);  // with the next ms, 6 packets wait: a burst of 96 bytes reads 0x80
+      chip.empty_bursts(1);
+    }
+    chip.advance_us(1000);
+    REQUIRE(driver.poll(sink) == aloft::Status::ok);
+  }
+  const aloft::icm42688p::DriverCounters& c = driver.counters();
+  CHECK(c.resyncs == 1u);
+  CHECK(c.bytes_skipped == 16u);
+  const std::uint32_t empty_slots = chip.empty_reads_sent();
+  CHECK(empty_slots == 1u + 2u + 3u + 6u);  // 1, 2, 3 packets waiting; then 6
+  REQUIRE(tapped.size() % 16u == 0u);
+  aloft::test::ScratchDir dir;
+  aloft::host::WarningCapture warnings;
+  const aloft::host::Recording r =
+      read_fifo_recording(dir.write("tapped.bin", tapped.substr(0, tapped.size() - 7)), 1000);
+  CHECK(r.empty_reads == empty_slots);
+  CHECK(r.resyncs == 1u);
+  CHECK(r.bytes_skipped == 16u + 9u);  // the garbled packet, and the 9 bytes of the cut one
+  CHECK(warnings.contains("the last packet is cut (9 of 16 bytes"));
+  // The same samples, but the last one, whose packet the power cut took.
+  REQUIRE(r.samples.size() == from_driver.size() - 1u);
+  for (std::size_t i = 0; i < r.samples.size(); ++i) {
+    REQUIRE(r.samples[i].t_us == from_driver[i].t_us);
+    REQUIRE(r.samples[i].accel_m_s2 == from_driver[i].accel_m_s2);
+    REQUIRE(r.samples[i].gyro_rad_s == from_driver[i].gyro_rad_s);
+    REQUIRE(r.samples[i].flags == from_driver[i].flags);
+  }
 }
 
 TEST_CASE("replay --fifo: one line naming the file, only where nothing decodes", "[replay_fifo]") {

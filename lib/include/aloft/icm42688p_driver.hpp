@@ -19,9 +19,9 @@
 //     gives: measured from the stamps, with the wrap count (65.536 ms at 1 µs) taken from
 //     the MCU clock (bus.now_us), so gaps longer than one wrap are measured too.
 //   - a header that is not packet 3, or a packet cut by the burst's end (after a lone
-//     HEADER_MSG byte): the rest of the burst is skipped (bytes_skipped), the FIFO
+//     0x80 byte): the rest of the burst is skipped (bytes_skipped), the FIFO
 //     flushed and the stream resynchronised on the next packet boundary.
-//   - a header with HEADER_MSG (0x80, §6.2 "FIFO is empty") inside a burst: an empty
+//   - the header 0x80 (HEADER_MSG, §6.2 "FIFO is empty") inside a burst: an empty
 //     read, counted, the walk goes on (the byte alone or its 16-byte slot, by the rule
 //     of aloft/icm42688p_fifo.hpp).
 //   - a bus error during the burst (a truncated transfer the port detected): the same.
@@ -122,7 +122,7 @@ struct DriverCounters {
   std::uint32_t resyncs = 0;          // foreign header or broken burst: flushed, resynchronised
   std::uint32_t overflows = 0;        // FIFO full: flushed
   std::uint32_t bytes_skipped = 0;    // bytes read but not decoded (foreign header, cut packet)
-  std::uint32_t empty_reads = 0;      // polls that found no whole packet, and HEADER_MSG reads
+  std::uint32_t empty_reads = 0;      // polls that found no whole packet, and 0x80 (HEADER_MSG) reads
   std::uint32_t register_faults = 0;  // configuration registers found without their bits
   std::uint32_t bus_errors = 0;       // bus calls that failed
   std::uint32_t gaps = 0;             // samples with gap_before
@@ -344,7 +344,7 @@ Status Icm42688pDriver<Scalar>::read_burst(std::uint16_t packets_in_fifo, const 
     ImuSample<Scalar> sample;
     const FifoStep step = decoder_.next(burst_ + at, bytes - at, sample);
     if (step.outcome == PacketOutcome::foreign_header || step.outcome == PacketOutcome::cut) {
-      // Foreign, or a packet cut by the end of the burst (a lone HEADER_MSG byte moved
+      // Foreign, or a packet cut by the end of the burst (a lone 0x80 byte moved
       // the packets): the FIFO's read point is not on a boundary. Flush and restart.
       ++counters_.resyncs;
       counters_.bytes_skipped += static_cast<std::uint32_t>(bytes - at);

@@ -24,22 +24,23 @@
 // Walking FIFO_DATA bytes (next(): one item at a time; the driver walks each burst, the
 // host's `aloft replay --fifo` a whole recording, with this same code):
 //   - a packet-3 header (0x68-0x6B) with 16 bytes: a packet (sample or invalid);
-//   - a header with HEADER_MSG set (0x80; §6.2 "FIFO is empty"): an empty read, never an
-//     error. The datasheet defines only that header bit; what the rest of a burst read
-//     from an empty FIFO holds it does not say (0x80 again, 0x00 or 0xFF are all
-//     plausible, and a fixed-size reader records them). A recording holds either the
+//   - the header 0x80 (HEADER_MSG = 1, §6.2 "FIFO is empty"; the other bits clear): an
+//     empty read, never an error. The datasheet defines that header; what the rest of a
+//     burst read from an empty FIFO holds it does not say (0x80 again, 0x00 or 0xFF are
+//     all plausible, and a fixed-size reader records them). A recording holds either the
 //     byte alone (a reader that stopped at it) or the whole 16-byte slot (a fixed-size
-//     burst). Told apart by the byte after it (see empty_read_bytes):
-//       the next byte is a packet-3 header              -> the byte alone (1 byte);
-//       fewer than 16 bytes left                        -> the byte alone, or, when the
-//                                                          next byte is neither a header
-//                                                          nor HEADER_MSG, a cut slot;
-//       the next byte is not a header and has no HEADER_MSG (a fill byte: nothing can
-//       start there)                                    -> the whole slot (16 bytes);
-//       the next byte has HEADER_MSG (another empty read, or a fill of 0x80/0xFF): the
-//       whole slot unless a packet-3 header starts inside it (bytes 2-15), then the
-//       byte alone. So both forms decode whatever the fill; the count is one per read,
-//       except that a run of 16 or more lone 0x80 bytes counts as whole slots.
+//     burst). Told apart by the byte after it (empty_read_bytes):
+//       the next byte is a packet-3 header       -> the byte alone (1 byte);
+//       fewer than 16 bytes left                 -> the byte alone if the next byte is
+//                                                   0x80, else a cut slot (`cut`);
+//       the next byte is neither a header nor 0x80 (a fill byte: nothing can start
+//       there)                                   -> the whole slot (16 bytes);
+//       the next byte is 0x80 (another empty read, or a fill of 0x80): the whole slot
+//       unless a packet-3 header starts inside it (bytes 2-15), then the byte alone.
+//     So both forms decode whatever the fill; the count is one per read, except that a
+//     run of 16 or more lone 0x80 bytes counts as whole slots. Only 0x80 itself: a byte
+//     with bit 7 and other bits set (0xFF from a bus that floats high) is foreign, so a
+//     dead bus shows as resyncs, not as an empty FIFO.
 //   - a packet-3 header with fewer than 16 bytes left: a cut packet (power lost
 //     mid-burst), `cut`, its bytes not decoded;
 //   - any other header: foreign. Nothing marks where the next packet starts. The driver
@@ -123,7 +124,7 @@ enum class PacketOutcome : std::uint8_t {
   sample,          // `out` holds a new sample
   invalid,         // a -32768 packet: dropped, the clock moved on
   foreign_header,  // not packet 3: nothing decoded, no state changed
-  empty_read,      // HEADER_MSG: the FIFO was empty (next() only)
+  empty_read,      // 0x80, HEADER_MSG: the FIFO was empty (next() only)
   cut,             // the bytes end inside a packet or an empty slot (next() only)
 };
 
@@ -134,14 +135,14 @@ struct FifoStep {
   std::uint16_t bytes;
 };
 
-inline bool has_header_msg(std::uint8_t header) { return (header & kHeaderMsg) != 0; }
+inline bool is_empty_read_header(std::uint8_t header) { return header == kHeaderMsg; }
 
-// Bytes taken by the empty read whose HEADER_MSG byte is bytes[0] (`left` ≥ 1 bytes from
+// Bytes taken by the empty read whose 0x80 byte is bytes[0] (`left` ≥ 1 bytes from
 // there), by the rule at the top of this file; 0 when the bytes end inside its slot.
 inline std::uint16_t empty_read_bytes(const std::uint8_t* bytes, std::size_t left) {
   if (left == 1 || is_packet3_header(bytes[1])) return 1;
-  if (left < kPacket3Bytes) return has_header_msg(bytes[1]) ? 1 : 0;
-  if (has_header_msg(bytes[1])) {
+  if (left < kPacket3Bytes) return is_empty_read_header(bytes[1]) ? 1 : 0;
+  if (is_empty_read_header(bytes[1])) {
     for (std::uint16_t i = 2; i < kPacket3Bytes; ++i) {
       if (is_packet3_header(bytes[i])) return 1;
     }
@@ -187,7 +188,7 @@ class FifoDecoder {
 
   // The next item of `left` ≥ 1 bytes of FIFO_DATA (the rules at the top of this file).
   FifoStep next(const std::uint8_t* bytes, std::size_t left, ImuSample<Scalar>& out) {
-    if (has_header_msg(bytes[0])) {
+    if (is_empty_read_header(bytes[0])) {
       const std::uint16_t n = empty_read_bytes(bytes, left);
       return n > 0 ? FifoStep{PacketOutcome::empty_read, n}
                    : FifoStep{PacketOutcome::cut, std::uint16_t(left)};
