@@ -140,7 +140,7 @@ inline std::map<std::string, std::vector<Seed>> seed_corpus() {
   }
   corpus["c3d"] = c3d;
   // ICM-42688-P FIFO bytes (`replay --fifo`): plain, with power-up packets without data,
-  // and with a hole (an overflow) across a wrap of the 16-bit stamp.
+  // with a hole (an overflow) across a wrap of the 16-bit stamp, and with faults.
   aloft_test::FifoFile fifo;
   fifo.packets = 8;
   aloft_test::FifoFile powerup = fifo;
@@ -148,8 +148,17 @@ inline std::map<std::string, std::vector<Seed>> seed_corpus() {
   aloft_test::FifoFile hole = fifo;
   hole.packets = 80;
   hole.holes = {{20, 30}};
-  corpus["icm42688p_fifo"] = {
-      {"plain.bin", fifo.bytes()}, {"powerup.bin", powerup.bytes()}, {"hole.bin", hole.bytes()}};
+  // The faults a recording of FIFO_DATA reads holds (DS-000347 §6.2): 0x80 empty reads,
+  // alone and as whole slots, a foreign header mid-stream, and a cut last packet.
+  aloft_test::FifoFile faults = fifo;
+  faults.packets = 40;
+  faults.empty_reads = {{0, false, 0x80}, {10, true, 0x00}, {20, true, 0x80}, {30, false, 0x80}};
+  faults.foreign_header_packet = 25;
+  faults.cut_tail = 9;
+  corpus["icm42688p_fifo"] = {{"plain.bin", fifo.bytes()},
+                              {"powerup.bin", powerup.bytes()},
+                              {"hole.bin", hole.bytes()},
+                              {"faults.bin", faults.bytes()}};
   // The dispatch sees every trial format (FIFO bytes and record dumps are not trials).
   std::vector<Seed> all;
   for (const auto& [harness, seeds] : corpus) {
