@@ -52,6 +52,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "aloft/cold_path.hpp"
 #include "aloft/icm42688p_registers.hpp"
 #include "aloft/imu_sample.hpp"
 
@@ -139,7 +140,7 @@ inline bool is_empty_read_header(std::uint8_t header) { return header == kHeader
 
 // Bytes taken by the empty read whose 0x80 byte is bytes[0] (`left` ≥ 1 bytes from
 // there), by the rule at the top of this file; 0 when the bytes end inside its slot.
-inline std::uint16_t empty_read_bytes(const std::uint8_t* bytes, std::size_t left) {
+ALOFT_COLD inline std::uint16_t empty_read_bytes(const std::uint8_t* bytes, std::size_t left) {
   if (left == 1 || is_packet3_header(bytes[1])) return 1;
   if (left < kPacket3Bytes) return is_empty_read_header(bytes[1]) ? 1 : 0;
   if (is_empty_read_header(bytes[1])) {
