@@ -323,48 +323,47 @@ Status Icm42688pDriver<Scalar>::poll(const SampleSink<Scalar>& sink) {
 template <typename Scalar>
 Status Icm42688pDriver<Scalar>::read_burst(std::uint16_t packets_in_fifo, const SampleSink<Scalar>& sink) {
   const std::uint16_t n = packets_in_fifo < kBurstPackets ? packets_in_fifo : kBurstPackets;
+  const std::uint32_t bytes = static_cast<std::uint32_t>(n) * kPacket3Bytes;
+  std::uint32_t at = 0;  // bytes walked
   const std::uint64_t now = bus_.now_us(bus_.context);
-  const Status s = read(Bank::bank0, bank0::fifo_data, burst_, static_cast<std::uint16_t>(n * kPacket3Bytes));
-  if (s != Status::ok) {
-    ++counters_.resyncs;
-    counters_.bytes_skipped += static_cast<std::uint32_t>(n) * kPacket3Bytes;
-    flush_and_mark_lost();
-    return s;
-  }
-  // The newest packet in the FIFO was taken about now; the older ones a period apart.
-  const std::uint64_t age_us = static_cast<std::uint64_t>(packets_in_fifo - 1) * period_us();
-  const std::uint64_t first_mcu_us = now > age_us ? now - age_us : 0;
-  if (data_lost_ && have_sample_ && first_mcu_us > last_sample_mcu_us_) {
-    decoder_.expect_gap(us_to_ticks(first_mcu_us - last_sample_mcu_us_));
-  }
-  data_lost_ = false;
-  const std::uint16_t bytes = static_cast<std::uint16_t>(n * kPacket3Bytes);
-  std::uint16_t i = 0;  // packets so far
-  for (std::uint16_t at = 0; at < bytes;) {
-    ImuSample<Scalar> sample;
-    const FifoStep step = decoder_.next(burst_ + at, bytes - at, sample);
-    if (step.outcome == PacketOutcome::foreign_header || step.outcome == PacketOutcome::cut) {
-      // Foreign, or a packet cut by the end of the burst (a lone 0x80 byte moved
-      // the packets): the FIFO's read point is not on a boundary. Flush and restart.
-      ++counters_.resyncs;
-      counters_.bytes_skipped += static_cast<std::uint32_t>(bytes - at);
-      flush_and_mark_lost();
-      return Status::ok;
+  const Status s = read(Bank::bank0, bank0::fifo_data, burst_, static_cast<std::uint16_t>(bytes));
+  if (s == Status::ok) {
+    // The newest packet in the FIFO was taken about now; the older ones a period apart.
+    const std::uint32_t period = period_us();  // once: the sink may touch memory
+    const std::uint32_t age_us = static_cast<std::uint32_t>(packets_in_fifo - 1) * period;  // <= 127 ms
+    const std::uint64_t first_mcu_us = now > age_us ? now - age_us : 0;
+    if (data_lost_ && have_sample_ && first_mcu_us > last_sample_mcu_us_) {
+      decoder_.expect_gap(us_to_ticks(first_mcu_us - last_sample_mcu_us_));
     }
-    at = static_cast<std::uint16_t>(at + step.bytes);
-    if (step.outcome == PacketOutcome::empty_read) {
-      ++counters_.empty_reads;
-      continue;
+    data_lost_ = false;
+    while (at < bytes) {
+      ImuSample<Scalar> sample;
+      const FifoStep step = decoder_.next(burst_ + at, bytes - at, sample);
+      if (step.outcome >= PacketOutcome::foreign_header) break;  // or cut
+      // The slot's place in the burst dates it (an empty slot before it counts a period:
+      // an estimate for the wrap count only, which tolerates half a wrap).
+      const std::uint32_t slot = at / kPacket3Bytes;
+      at += step.bytes;
+      if (step.outcome == PacketOutcome::empty_read) {
+        ++counters_.empty_reads;
+        continue;
+      }
+      ++counters_.packets;
+      if (step.outcome == PacketOutcome::invalid) {
+        ++counters_.invalid;
+        continue;
+      }
+      emit(sample, first_mcu_us + slot * period, sink);
     }
-    ++counters_.packets;
-    if (step.outcome == PacketOutcome::invalid) {
-      ++counters_.invalid;
-    } else {
-      emit(sample, first_mcu_us + static_cast<std::uint64_t>(i) * period_us(), sink);
-    }
-    ++i;
+    if (at == bytes) return Status::ok;
   }
-  return Status::ok;
+  // A broken transfer, a foreign header, or a packet cut by the end of the burst (a lone
+  // 0x80 byte moved the packets): the FIFO's read point is not on a packet boundary. The
+  // rest of the burst is counted, the FIFO flushed, and the chip restarts on a boundary.
+  ++counters_.resyncs;
+  counters_.bytes_skipped += bytes - at;
+  flush_and_mark_lost();
+  return s;
 }
 
 template <typename Scalar>

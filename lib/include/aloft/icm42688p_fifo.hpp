@@ -122,10 +122,11 @@ constexpr Scalar gyro_rad_s_per_lsb() {
 }
 
 enum class PacketOutcome : std::uint8_t {
-  sample,          // `out` holds a new sample
-  invalid,         // a -32768 packet: dropped, the clock moved on
+  sample,      // `out` holds a new sample
+  invalid,     // a -32768 packet: dropped, the clock moved on
+  empty_read,  // 0x80, HEADER_MSG: the FIFO was empty (next() only)
+  // The walk cannot go on from here (the two last, so that one comparison finds them):
   foreign_header,  // not packet 3: nothing decoded, no state changed
-  empty_read,      // 0x80, HEADER_MSG: the FIFO was empty (next() only)
   cut,             // the bytes end inside a packet or an empty slot (next() only)
 };
 
@@ -189,14 +190,13 @@ class FifoDecoder {
 
   // The next item of `left` ≥ 1 bytes of FIFO_DATA (the rules at the top of this file).
   FifoStep next(const std::uint8_t* bytes, std::size_t left, ImuSample<Scalar>& out) {
-    if (is_empty_read_header(bytes[0])) {
-      const std::uint16_t n = empty_read_bytes(bytes, left);
-      return n > 0 ? FifoStep{PacketOutcome::empty_read, n}
-                   : FifoStep{PacketOutcome::cut, std::uint16_t(left)};
+    const auto rest = static_cast<std::uint16_t>(left < kPacket3Bytes ? left : 0);  // a cut's bytes
+    if (is_packet3_header(bytes[0])) {
+      return rest > 0 ? FifoStep{PacketOutcome::cut, rest} : FifoStep{decode(bytes, out), kPacket3Bytes};
     }
-    if (!is_packet3_header(bytes[0])) return {PacketOutcome::foreign_header, 0};
-    if (left < kPacket3Bytes) return {PacketOutcome::cut, static_cast<std::uint16_t>(left)};
-    return {decode(bytes, out), kPacket3Bytes};
+    if (!is_empty_read_header(bytes[0])) return {PacketOutcome::foreign_header, 0};
+    const std::uint16_t n = empty_read_bytes(bytes, left);
+    return n > 0 ? FifoStep{PacketOutcome::empty_read, n} : FifoStep{PacketOutcome::cut, rest};
   }
 
   // After a foreign header at bytes[0]: the bytes to skip (≥ 1, at most `left`) to the
