@@ -37,12 +37,16 @@
 //       there)                                   -> the whole slot (16 bytes);
 //       the next byte is 0x80 (another empty read, or a fill of 0x80): the whole slot
 //       unless a packet-3 header starts inside it (bytes 2-15), then the byte alone.
-//     So both forms decode whatever the fill; the count is one per read, except that a
-//     run of 16 or more lone 0x80 bytes counts as whole slots. Only 0x80 itself: a byte
-//     with bit 7 and other bits set (0xFF from a bus that floats high) is foreign, so a
-//     dead bus shows as resyncs, not as an empty FIFO.
+//     So both forms decode, one count per read, for any fill whose bytes are not packet-3
+//     headers (tested: 0x00, 0x80, 0xFF); a run of 16 or more lone 0x80 bytes counts as
+//     whole slots. A fill that holds a header-like byte after 0x80 bytes can be read
+//     as the start of a packet, as any data byte can: nothing in the format tells them
+//     apart. Only 0x80 itself: a byte with bit 7 and other bits set (0xFF from a bus
+//     that floats high) is foreign, so a dead bus shows as resyncs, not as an empty FIFO.
 //   - a packet-3 header with fewer than 16 bytes left: a cut packet (power lost
-//     mid-burst), `cut`, its bytes not decoded;
+//     mid-burst), `cut`, its bytes not decoded. A packet cut in the middle of a
+//     recording cannot be told by its header: it is taken with the next bytes, and the
+//     damage shows as a resync after it (the format holds no checksum);
 //   - any other header: foreign. Nothing marks where the next packet starts. The driver
 //     drops the rest of the burst and flushes the FIFO (the chip restarts on a packet
 //     boundary); a recording has no flush, so its reader skips to the next boundary that
