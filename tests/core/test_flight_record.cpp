@@ -122,16 +122,32 @@ ALOFT_TEST_CASE("flight record: the tensor and settings hashes are CRC-32 of the
   aloft::Mat3<double> other = tensor;
   other(2, 2) = 0.0301;
   ALOFT_CHECK(aloft::tensor_hash(other) != 0xFABCA080u);
-  // The default settings at K = 8: zlib.crc32(struct.pack('<HH4fB3fIIfIIff4fIHffIfHfffIf',
+  // The default settings at K = 8: zlib.crc32(struct.pack('<HH4fB3fIIfIIff4fIHffIfHfffIfIIHffIH',
   // 8, 10, 1, 0, 0, 0, 0, 0, 0, 0, 20000, 200000, 3.0, 100000, 300000, 0.5, 2.0, 2.0, 0.1, 0.5,
-  // 30.0, 4000, 5, 0.5, 0.2, 3500, 0.5, 3, 0.15, 0.5, 10.0, 1000, 0.01)).
+  // 30.0, 4000, 5, 0.5, 0.2, 3500, 0.5, 3, 0.15, 0.5, 10.0, 1000, 0.01,
+  // 25000, 5000, 3, 0.8, 0.02, 15000, 4)).
+  constexpr std::uint32_t default_hash = 0x49865D8Bu;
   const aloft::OnboardPipelineSettings<float> defaults;
-  ALOFT_CHECK(aloft::settings_hash(defaults, 8) == 0x2C5AD2A9u);
-  ALOFT_CHECK(aloft::settings_hash(aloft::OnboardPipelineSettings<double>(), 8) == 0x2C5AD2A9u);
-  ALOFT_CHECK(aloft::settings_hash(defaults, 4) != 0x2C5AD2A9u);
+  ALOFT_CHECK(aloft::settings_hash(defaults, 8) == default_hash);
+  ALOFT_CHECK(aloft::settings_hash(aloft::OnboardPipelineSettings<double>(), 8) == default_hash);
+  ALOFT_CHECK(aloft::settings_hash(defaults, 4) != default_hash);
   aloft::OnboardPipelineSettings<float> release_changed = defaults;
-  release_changed.release.given_r_tolerance_m = 0.02f;  // the last field hashed
-  ALOFT_CHECK(aloft::settings_hash(release_changed, 8) != 0x2C5AD2A9u);
+  release_changed.release.given_r_tolerance_m = 0.02f;
+  ALOFT_CHECK(aloft::settings_hash(release_changed, 8) != default_hash);
+  // Each setting of the release window (aloft/release_window.hpp) changes the hash.
+  using Window = aloft::ReleaseWindowSettings<float>;
+  const auto window_changed = [&](void (*change)(Window&)) {
+    aloft::OnboardPipelineSettings<float> s = defaults;
+    change(s.release_window);
+    return aloft::settings_hash(s, 8) != default_hash;
+  };
+  ALOFT_CHECK(window_changed([](Window& w) { w.window_us += 1; }));
+  ALOFT_CHECK(window_changed([](Window& w) { w.block_us += 1; }));
+  ALOFT_CHECK(window_changed([](Window& w) { w.fit_blocks += 1; }));
+  ALOFT_CHECK(window_changed([](Window& w) { w.block_limit_floor_m_s2 += 0.1f; }));
+  ALOFT_CHECK(window_changed([](Window& w) { w.block_limit_relative += 0.01f; }));
+  ALOFT_CHECK(window_changed([](Window& w) { w.min_free_us += 1; }));
+  ALOFT_CHECK(window_changed([](Window& w) { w.min_block_samples += 1; }));
 }
 
 ALOFT_TEST_CASE("flight record: made from the pipeline's result", "[records]") {

@@ -11,6 +11,17 @@
 //     sensed; a small drag-like force (≤ 0.3 m/s²) is;
 //   - landing: a catch (force rising over 5–15 ms to 20–60 m/s², the rate fading out) or an
 //     impact (1–2 ms to 200–1500 m/s², the rate thrown off), then held again.
+// With `real_hand` (RecordingSpec) the throws are as the held-back real ones showed:
+//   - the hand lets go over 2–30 ms with a slow tail: the force falls as x (0.25 + 0.75 x)
+//     of its swing value, x the fraction of the let-go left, so its last milliseconds are
+//     a few tenths of m/s² (the real throws: 15 m/s² to 3 m/s² over the last 20–30 ms);
+//   - the hand's torque fades over the same span (the rate keeps changing until the end);
+//   - the body rings after release and after a catch: one or two structural modes at
+//     100–800 Hz along fixed body directions, decaying over 5–30 ms, up to 8 m/s² in
+//     single samples.
+// TrueFlight::release_s is where the hand's force reaches zero; `force_below_1_s` is where
+// it last fell below 1 m/s² (a tenth of g), which no accelerometer tells from its noise
+// and the air's drag: a release dated between the two is not early.
 // The accelerometer at r reads R^T f + w_dot x r + w x (w x r); both sensors pass a
 // 2nd-order Butterworth low-pass, are sampled at the rate, get white noise, and clip at
 // ±4000 °/s and ±16 g (flagged). Sensor axes may be rotated against body axes.
@@ -38,6 +49,7 @@ enum class LandingKind { catch_by_hand, impact };
 
 struct TrueFlight {
   double release_s = 0;
+  double force_below_1_s = 0;  // the hand's force at the centre of mass last fell below 1 m/s²
   double landing_s = 0;
   double release_rate_rad_s = 0;
 };
@@ -69,6 +81,9 @@ struct RecordingSpec {
   // sample's true time, on the simulation's 0.1 ms grid), from draws of their own, so that
   // the throws are the same as without. 0: a regular clock.
   double interval_jitter = 0.0;
+  // Slow let-go, hand torque to the end of it, ringing body (see the file comment), from
+  // draws of their own so that the rest of the recording is drawn as without.
+  bool real_hand = false;
   std::uint32_t seed = 1;
 };
 
@@ -95,6 +110,9 @@ class ThrowGenerator {
 
  private:
   double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
+  double hand_uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(hand_rng_);
+  }
   double normal() { return std::normal_distribution<double>(0.0, 1.0)(rng_); }
   // The draws of one expression are made one statement at a time: the order in which a
   // compiler evaluates function arguments is unspecified (gcc and clang differ), and the
@@ -172,7 +190,8 @@ class ThrowGenerator {
     const bool drop = release_rate < 0;
     const double swing = drop ? uniform(0.05, 0.2) : uniform(0.15, 0.35);
     // Contact ends at a finite rate: the force falls to zero with a slope, not tangentially.
-    const double taper = uniform(0.002, 0.010);
+    const double fast_taper = uniform(0.002, 0.010);
+    const double taper = spec_.real_hand ? hand_uniform(0.002, 0.030) : fast_taper;
     const bool torque_to_the_end = !drop && uniform(0, 1) < 0.5;
     const V3 w0 = omega_;
     const V3 w_rel = drop ? unit_times(0.0, 0.4) : V3(unit() * release_rate);
@@ -181,6 +200,7 @@ class ThrowGenerator {
     const V3 across = unit();
     const double start = t_;
     const double release = t_ + swing;
+    double force_below_1_s = t_;
     while (t_ < release - 0.5 * fine_dt_) {
       const double u = (t_ - start) / swing;
       const double ramp = u < 0.3 ? (u / 0.3) * (u / 0.3) * (3 - 2 * u / 0.3) : 1.0;
@@ -189,17 +209,52 @@ class ThrowGenerator {
       V3 f = (1 - ramp) * V3(0, 0, 9.81) + ramp * peak * dir;
       if (drop) f = V3(0, 0, 9.81);
       const double left = release - t_;
-      if (left < taper) {
-        const double x = std::sin(1.5707963 * left / taper);
-        f *= x;
-      }
-      const double sigma = torque_to_the_end ? u * u : u * u * (3 - 2 * u);
+      if (left < taper) f *= let_go_fraction(left / taper);
+      if (f.norm() >= 1.0) force_below_1_s = t_ + fine_dt_;
+      // A real hand's torque lasts as long as its force: the rate changes to the end.
+      const double sigma = torque_to_the_end || spec_.real_hand ? u * u : u * u * (3 - 2 * u);
       step(f, w0 + (w_rel - w0) * sigma);
     }
-    out_.flights.push_back({t_, 0, w_rel.norm()});
+    out_.flights.push_back({t_, std::min(force_below_1_s, t_), 0.0, w_rel.norm()});
+    if (spec_.real_hand) start_ringing();
     fly(drop ? uniform(0.15, 0.5) : uniform(0.25, 0.8));
     out_.flights.back().landing_s = t_;
-    land(uniform(0, 1) < 0.5 ? LandingKind::catch_by_hand : LandingKind::impact);
+    const LandingKind landing = uniform(0, 1) < 0.5 ? LandingKind::catch_by_hand : LandingKind::impact;
+    if (spec_.real_hand && landing == LandingKind::catch_by_hand) start_ringing();
+    land(landing);
+  }
+
+  // The fraction of the swing's force left with a fraction x of the let-go to go: the fast
+  // let-go ends as a quarter sine (a finite slope at zero); a real hand's falls as
+  // x (0.25 + 0.75 x), slowly at first and with a slow tail (a quarter of the mean slope).
+  double let_go_fraction(double x) const {
+    return spec_.real_hand ? x * (0.25 + 0.75 * x) : std::sin(1.5707963 * x);
+  }
+
+  // One or two structural modes of the body, struck by the hand letting go or catching:
+  // along a fixed body direction each, 100-800 Hz, decaying over 5-30 ms, 2-8 m/s² at
+  // first (before the sensor's low-pass).
+  void start_ringing() {
+    const int modes = hand_uniform(0, 1) < 0.5 ? 1 : 2;
+    for (int m = 0; m < 2; ++m) {
+      RingingMode& mode = ringing_[m];
+      mode.amplitude_m_s2 = m < modes ? hand_uniform(2.0, 8.0) : 0.0;
+      mode.frequency_hz = hand_uniform(100.0, 800.0);
+      mode.decay_s = hand_uniform(0.005, 0.030);
+      const double x = hand_uniform(-1, 1), y = hand_uniform(-1, 1), z = hand_uniform(-1, 1);
+      mode.direction = V3(x, y, z).normalized();
+      mode.start_s = t_;
+    }
+  }
+  V3 ringing(double t) const {
+    V3 sum = V3::Zero();
+    for (const RingingMode& mode : ringing_) {
+      const double s = t - mode.start_s;
+      if (mode.amplitude_m_s2 <= 0 || s < 0 || s > 8 * mode.decay_s) continue;
+      sum += mode.direction * (mode.amplitude_m_s2 * std::exp(-s / mode.decay_s) *
+                               std::sin(6.283185307 * mode.frequency_hz * s));
+    }
+    return sum;
   }
 
   void fly(double seconds) {
@@ -268,7 +323,8 @@ class ThrowGenerator {
     const V3 w_mid = 0.5 * (w_next + omega_);
     const V3 f_body = orientation_.conjugate() * f_world;
     const V3 r = out_.imu_position_m;
-    const V3 accel_body = f_body + w_dot.cross(r) + w_mid.cross(w_mid.cross(r));
+    V3 accel_body = f_body + w_dot.cross(r) + w_mid.cross(w_mid.cross(r));
+    if (spec_.real_hand) accel_body += ringing(t_);
     orientation_ = (orientation_ * aloft::quat_exp<double>(w_mid * fine_dt_)).normalized();
     omega_ = w_next;
     t_ += fine_dt_;
@@ -306,6 +362,16 @@ class ThrowGenerator {
   std::mt19937 rng_;
   // The sampling intervals' own draws: the same throws with and without jitter.
   std::mt19937 jitter_rng_{spec_.seed ^ 0x5EEDu};
+  // The real hand's draws (let-go span, ringing): the same throws with and without it.
+  std::mt19937 hand_rng_{spec_.seed ^ 0x4A4Du};
+  struct RingingMode {
+    double amplitude_m_s2 = 0;
+    double frequency_hz = 0;
+    double decay_s = 1;
+    double start_s = 0;
+    V3 direction = V3::UnitX();
+  };
+  RingingMode ringing_[2];
   Recording out_;
   double t_ = 0;
   double fine_dt_ = 1e-4;

@@ -24,7 +24,10 @@ struct Tally {
   int release_within_10ms = 0;
   int landing_within_5ms = 0;
   int landing_within_10ms = 0;
-  int early = 0;          // reported release before the true one
+  int early = 0;             // reported release before the true one
+  int early_in_contact = 0;  // before the hand's force fell below 1 m/s² (generated_throws.hpp)
+  int within_judged = 0;     // from 10 ms early to 20 ms late: the held-back real throws' bar
+  double worst_early_ms = 0;
   int false_flights = 0;  // reported where there was none
   int turned = 0;
   double worst_late_ms = 0;
@@ -41,6 +44,9 @@ struct Tally {
     landing_within_5ms += o.landing_within_5ms;
     landing_within_10ms += o.landing_within_10ms;
     early += o.early;
+    early_in_contact += o.early_in_contact;
+    within_judged += o.within_judged;
+    worst_early_ms = std::max(worst_early_ms, o.worst_early_ms);
     false_flights += o.false_flights;
     turned += o.turned;
     worst_late_ms = std::max(worst_late_ms, o.worst_late_ms);
@@ -53,10 +59,12 @@ struct Tally {
   void print(const char* name) const {
     std::printf(
         "%-34s flights %4d found %5.1f%% release<=5ms %5.1f%% <=10ms %5.1f%% (worst late %.2f ms) early %d "
-        "landing<=5ms %5.1f%% <=10ms %5.1f%% (worst %.2f ms) false %d turned %d\n",
+        "(in contact %d, worst %.2f ms) -10..+20ms %5.1f%% landing<=5ms %5.1f%% <=10ms %5.1f%% (worst %.2f "
+        "ms) "
+        "false %d turned %d\n",
         name, true_flights, percent(found), percent(release_within_5ms), percent(release_within_10ms),
-        worst_late_ms, early, percent(landing_within_5ms), percent(landing_within_10ms), worst_landing_ms,
-        false_flights, turned);
+        worst_late_ms, early, early_in_contact, worst_early_ms, percent(within_judged),
+        percent(landing_within_5ms), percent(landing_within_10ms), worst_landing_ms, false_flights, turned);
     if (r_estimates > 0) {
       std::vector<double> e = r_errors_mm;
       std::sort(e.begin(), e.end());
@@ -81,6 +89,15 @@ std::vector<aloft::FlightResult<float>> replay(const Recording& rec, bool give_r
   settings.check.sensor_to_body = rec.sensor_to_body.cast<float>();
   settings.imu_position_known = give_r;
   if (std::getenv("FADE")) settings.release.fade_out_at_most_us = std::atoi(std::getenv("FADE"));
+  // The window's settings from the environment, to repeat their choice on the tuned seeds
+  // (docs/firmware.md, "Real hands"): ALOFT_WINDOW_FLOOR (m/s²), ALOFT_WINDOW_RELATIVE,
+  // ALOFT_WINDOW_BLOCK_US.
+  if (const char* v = std::getenv("ALOFT_WINDOW_FLOOR"))
+    settings.release_window.block_limit_floor_m_s2 = std::strtof(v, nullptr);
+  if (const char* v = std::getenv("ALOFT_WINDOW_RELATIVE"))
+    settings.release_window.block_limit_relative = std::strtof(v, nullptr);
+  if (const char* v = std::getenv("ALOFT_WINDOW_BLOCK_US"))
+    settings.release_window.block_us = static_cast<std::uint32_t>(std::strtoul(v, nullptr, 10));
   const aloft_test::V3 off = aloft_test::V3(0.6, -0.48, 0.64) * r_error_m;
   settings.imu_position_m = (rec.imu_position_m + off).cast<float>();
   aloft::OnboardPipeline<float, 8> pipeline(nominal_tensor(rec), settings);
@@ -120,16 +137,20 @@ void score(const Recording& rec, bool give_r, Tally& t, double r_error_m) {
       const double late_ms = (r - release_us) * 1e-3;
       const double land_ms = std::abs(static_cast<double>(flights[i].landing_us) - landing_us) * 1e-3;
       if (late_ms < 0) ++t.early;
+      if (late_ms >= -10 && late_ms <= 20) ++t.within_judged;
+      if (r < static_cast<double>(rec.t0_us) + truth.force_below_1_s * 1e6) ++t.early_in_contact;
+      if (late_ms < 0) t.worst_early_ms = std::max(t.worst_early_ms, -late_ms);
       if (late_ms >= 0 && late_ms <= 5) ++t.release_within_5ms;
       if (late_ms >= 0 && late_ms <= 10) ++t.release_within_10ms;
       if (flights[i].landed && land_ms <= 5) ++t.landing_within_5ms;
       if (flights[i].landed && land_ms <= 10) ++t.landing_within_10ms;
       if (flights[i].turned) ++t.turned;
-      t.worst_late_ms = std::max(t.worst_late_ms, std::abs(late_ms));
+      t.worst_late_ms = std::max(t.worst_late_ms, late_ms);
       if (std::getenv("ALOFT_RELEASE_DEBUG") != nullptr && (late_ms < 0 || late_ms > 5 || land_ms > 5)) {
-        std::printf("  rate %g w %.1f late %.2f ms land %.2f ms landed %d\n", rec.rate_hz,
-                    truth.release_rate_rad_s, late_ms,
-                    (static_cast<double>(flights[i].landing_us) - landing_us) * 1e-3, flights[i].landed);
+        std::printf(
+            "  rate %g w %.1f late %.2f ms (contact ended %.2f ms before release) land %.2f ms landed %d\n",
+            rec.rate_hz, truth.release_rate_rad_s, late_ms, (truth.release_s - truth.force_below_1_s) * 1e3,
+            (static_cast<double>(flights[i].landing_us) - landing_us) * 1e-3, flights[i].landed);
       }
       t.worst_landing_ms = std::max(t.worst_landing_ms, land_ms);
       break;
@@ -162,7 +183,7 @@ std::uint32_t seed_shift() {
 
 Tally run(MotionKind kind, const std::vector<double>& rates, int recordings, double tensor_error, bool give_r,
           std::uint32_t seed0, const char* name, double r_error_m = 0.0, bool sensor_errors = false,
-          double interval_jitter = 0.0) {
+          double interval_jitter = 0.0, bool real_hand = false) {
   Tally t;
   for (double rate : rates) {
     Tally per_rate;
@@ -174,6 +195,7 @@ Tally run(MotionKind kind, const std::vector<double>& rates, int recordings, dou
       spec.rotate_sensor = i % 3 == 1;
       spec.sensor_errors = sensor_errors;
       spec.interval_jitter = interval_jitter;
+      spec.real_hand = real_hand;
       spec.seed =
           seed0 + static_cast<std::uint32_t>(i) + static_cast<std::uint32_t>(rate) * 1000u + seed_shift();
       const Recording rec = aloft_test::ThrowGenerator(spec).generate();
@@ -312,5 +334,48 @@ TEST_CASE("no flight in a recording without one", "[release]") {
         run(MotionKind::waving, {100, 1000, 4000}, 8, 0.15, give_r, 700, "waving, no release");
     CHECK(still.false_flights == 0);
     CHECK(waving.false_flights == 0);
+  }
+}
+
+// Real hands (generated_throws.hpp, real_hand): a let-go over 2-30 ms with a slow tail, the
+// hand's torque to the end, a body that rings after release and after a catch, at 1-4 kHz
+// (the held-back real throws: 4 kHz; real drops: 2-3 kHz). The window's settings
+// (aloft/release_window.hpp) were chosen on the first seed set ("tuned on") and are
+// reported on the second, drawn from seeds nobody looked at while choosing them ("held
+// out"); both must meet the held-back real throws' bar: within 10 ms early to 20 ms late,
+// never more than 10 ms early. Measured (gcc Release), docs/firmware.md "Real hands".
+namespace {
+struct RealHandSets {
+  Tally given, fitted, drops;
+};
+RealHandSets run_real_hands(std::uint32_t seed0, const char* set) {
+  constexpr double no_r_error = 0.0;
+  constexpr bool with_sensor_errors = true;
+  constexpr double no_jitter = 0.0;
+  constexpr bool real_hand = true;
+  char name[3][64];
+  std::snprintf(name[0], sizeof name[0], "real hand %s, r given", set);
+  std::snprintf(name[1], sizeof name[1], "real hand %s, r fitted, I 15%% off", set);
+  std::snprintf(name[2], sizeof name[2], "real hand %s, drop", set);
+  RealHandSets s;
+  s.given = run(MotionKind::spin_throw, {1000, 2000, 4000}, 15, 0.0, true, seed0, name[0], no_r_error,
+                with_sensor_errors, no_jitter, real_hand);
+  s.fitted = run(MotionKind::spin_throw, {1000, 2000, 4000}, 15, 0.15, false, seed0 + 100, name[1],
+                 no_r_error, with_sensor_errors, no_jitter, real_hand);
+  s.drops = run(MotionKind::drop, {1000, 2000, 4000}, 6, 0.15, false, seed0 + 200, name[2], no_r_error,
+                with_sensor_errors, no_jitter, real_hand);
+  return s;
+}
+}  // namespace
+
+TEST_CASE("release on real hands: slow let-go, hand torque, ringing body", "[release][real_hand]") {
+  const RealHandSets tuned = run_real_hands(1600, "tuned on");
+  const RealHandSets held_out = run_real_hands(2600, "held out");
+  for (const RealHandSets* s : {&tuned, &held_out}) {
+    for (const Tally* t : {&s->given, &s->fitted, &s->drops}) {
+      CHECK(t->worst_early_ms <= 10.0);
+      CHECK(t->false_flights == 0);
+      CHECK(t->percent(t->found) >= 97.0);
+    }
   }
 }

@@ -5,7 +5,7 @@
 // Scalar is (a firmware checks in float):
 //   tensor hash:   Ixx, Iyy, Izz, Ixy, Ixz, Iyz of the tensor as given, kg·m² (24 bytes)
 //   settings hash: every setting the onboard pipeline uses (OnboardPipelineSettings), in
-//                  the order written in settings_hash below (121 bytes): K (u16),
+//                  the order written in settings_hash below (145 bytes): K (u16),
 //                  seed_every (u16), sensor_to_body w x y z, imu_position_known (u8),
 //                  imu_position_m x y z, bridge_gap_up_to_us (u32),
 //                  end_flight_after_gap_us (u32), gap_interval_factor, min_flight_us
@@ -15,8 +15,10 @@
 //                  confirm_us (u32), confirm_samples (u16), release_fraction,
 //                  level_margin_m_s2, fade_out_at_most_us (u32), step_fraction,
 //                  landing_samples (u16), max_lever_arm_m, fit_rms_fraction, ridge_rad_s2,
-//                  derivative_half_span_us (u32), given_r_tolerance_m. (Unlisted types:
-//                  f32.)
+//                  derivative_half_span_us (u32), given_r_tolerance_m, then release_window:
+//                  window_us (u32), block_us (u32), fit_blocks (u16),
+//                  block_limit_floor_m_s2, block_limit_relative, min_free_us (u32),
+//                  min_block_samples (u16). (Unlisted types: f32.)
 #pragma once
 
 #include <cstdint>
@@ -39,7 +41,7 @@ std::uint32_t tensor_hash(const Mat3<Scalar>& tensor) {
 
 template <typename Scalar>
 std::uint32_t settings_hash(const OnboardPipelineSettings<Scalar>& s, int live_simulations) {
-  std::uint8_t bytes[121];
+  std::uint8_t bytes[145];
   std::uint8_t* p = bytes;
   const auto f32 = [&p](Scalar v) { le::put_f32(p, static_cast<float>(v)), p += 4; };
   const auto u32 = [&p](std::uint32_t v) { le::put_u32(p, v), p += 4; };
@@ -74,6 +76,14 @@ std::uint32_t settings_hash(const OnboardPipelineSettings<Scalar>& s, int live_s
   f32(r.ridge_rad_s2);
   u32(r.derivative_half_span_us);
   f32(r.given_r_tolerance_m);
+  const ReleaseWindowSettings<Scalar>& w = s.release_window;
+  u32(w.window_us);
+  u32(w.block_us);
+  u16(w.fit_blocks);
+  f32(w.block_limit_floor_m_s2);
+  f32(w.block_limit_relative);
+  u32(w.min_free_us);
+  u16(w.min_block_samples);
   return crc32(bytes, static_cast<std::size_t>(p - bytes));
 }
 

@@ -38,6 +38,15 @@ class LeverArmFit {
     ata_ += t.ata;
     ++count_;
   }
+  // n samples summarised by their mean K and mean a (a block mean: what varies within
+  // the block, as a structural mode does, is left out).
+  ALOFT_COLD void add_mean(const Mat3<Scalar>& k_mean, const Vec3<Scalar>& a_mean, std::uint32_t n) {
+    const Scalar w = static_cast<Scalar>(n);
+    ktk_ += w * (k_mean.transpose() * k_mean);
+    kta_ += w * (k_mean.transpose() * a_mean);
+    ata_ += w * a_mean.squaredNorm();
+    count_ += n;
+  }
   ALOFT_COLD void merge(const LeverArmFit& other) {
     ktk_ += other.ktk_;
     kta_ += other.kta_;

@@ -3,7 +3,8 @@
 // recording, the same code in `float`:
 //   samples -> stream accounting (dt from time stamps, gaps, clipping), sensor -> body axes
 //           -> the last 32 samples (aloft/sample_history.hpp)
-//           -> release and landing of a spinning, off-centre IMU (aloft/release_detector.hpp)
+//           -> release and landing of a spinning, off-centre IMU (aloft/release_detector.hpp),
+//              the release dated anew over a window (aloft/release_window.hpp)
 //           -> the onboard check (aloft/onboard_check.hpp) over the airborne samples, fed
 //              from the history from the (dated back) release on, never past the landing
 //           -> FlightResult, taken by the caller once the flight has ended.
@@ -27,6 +28,7 @@
 #include "aloft/imu_sample.hpp"
 #include "aloft/onboard_check.hpp"
 #include "aloft/release_detector.hpp"
+#include "aloft/release_window.hpp"
 #include "aloft/whole_microseconds.hpp"
 
 namespace aloft {
@@ -41,6 +43,7 @@ struct OnboardPipelineSettings {
   std::uint32_t bridge_gap_up_to_us = 20000;       // longer: live simulations end, seeded anew
   std::uint32_t end_flight_after_gap_us = 200000;  // longer, while airborne: flight ends unlanded
   ReleaseDetectorSettings<Scalar> release = {};
+  ReleaseWindowSettings<Scalar> release_window = {};
   Scalar gap_interval_factor = Scalar(3);         // stamps this many running intervals apart: a gap
   std::uint32_t min_flight_us = 100000;           // shorter flights are dropped (a jolt, not a throw)
   std::uint32_t rearm_after_landing_us = 300000;  // no release this soon after a landing (bounces)
@@ -88,7 +91,8 @@ class OnboardPipeline {
       : inertia_(inertia),
         settings_(settings),
         sensor_to_body_(settings.check.sensor_to_body.normalized().toRotationMatrix()),
-        detector_(settings.release, inertia.tensor()) {
+        detector_(settings.release, inertia.tensor()),
+        window_(settings.release_window) {
     check_settings_ = settings.check;
     check_settings_.sensor_to_body = Quat<Scalar>::Identity();  // the history is in body axes
   }
@@ -164,11 +168,15 @@ class OnboardPipeline {
     if (check_) {
       std::uint32_t landing = 0;
       std::uint64_t landing_us = 0;
-      if (detector_.find_landing(history_, c, half_span_, r_flight_, next_feed_, landing, landing_us)) {
+      const bool landed =
+          detector_.find_landing(history_, c, half_span_, r_flight_, next_feed_, landing, landing_us);
+      if (on_probation_) add_to_window(c);
+      if (landed) {
         feed_until(landing);
         end_flight(true, landing_us);
         return;
       }
+      if (on_probation_ && !date_release_over_window()) return;
       // Held back a few samples, so a landing can still be dated back over them.
       const std::uint32_t held_back = c + 1 > feed_lag_samples ? c + 1 - feed_lag_samples : 0u;
       const std::uint32_t pending = detector_.pending_from(c);
@@ -180,14 +188,53 @@ class OnboardPipeline {
                                                              : nullptr;
     std::uint32_t release = 0;
     std::uint64_t release_us = 0;
-    if (!detector_.find_release(history_, c, half_span_, known, rearmed_at_us_, release, release_us,
-                                r_flight_)) {
-      return;
-    }
+    const bool proposed = detector_.find_release(history_, c, half_span_, known, rearmed_at_us_, release,
+                                                 release_us, r_flight_);
+    add_to_window(c);
+    if (!proposed) return;
+    on_probation_ = true;
     // A known r that missed this release (the detector fitted one near it) is no better
     // than none: the flight's own fit takes over as soon as it would without one.
     start_flight(release, release_us, detector_.release_r_fitted());
     feed_until(c + 1);
+  }
+
+  // Sample c, as the detector has just tested it, joins the window while a release is
+  // looked for or on probation (the window needs nothing else).
+  void add_to_window(std::uint32_t c) {
+    const auto& tested = detector_.newest_tested();
+    if (tested.valid) window_.add(c, history_.t_us(c), tested.k, tested.torque_free);
+  }
+
+  // The proposed release, once the window has seen enough: kept, dated anew (the check
+  // starts again from there, as far as the history still holds it), or withdrawn. False
+  // when the flight was withdrawn.
+  ALOFT_COLD bool date_release_over_window() {
+    const Vec3<Scalar>* known = settings_.imu_position_known ? &settings_.imu_position_m
+                                : have_estimate_             ? &r_estimate_
+                                                             : nullptr;
+    LeverArmBall<Scalar> ball;
+    ball.centre = known != nullptr ? *known : Vec3<Scalar>::Zero();
+    ball.radius_m =
+        known != nullptr ? settings_.release.given_r_tolerance_m : settings_.release.max_lever_arm_m;
+    ball.otherwise = r_flight_;
+    ball.ridge_rad_s2 = settings_.release.ridge_rad_s2;
+    const WindowedRelease<Scalar> w = window_.date(release_index_, current_.release_us, ball);
+    if (!w.decided) return true;
+    on_probation_ = false;
+    if (!w.free) {
+      check_.reset();
+      detector_.reset();
+      rearmed_at_us_ = current_.release_us + 1u;
+      return false;
+    }
+    if (w.release_us != current_.release_us) {
+      const std::uint32_t fed_to = next_feed_;
+      const std::uint32_t oldest = history_.oldest();
+      start_flight(w.index > oldest ? w.index : oldest, w.release_us, fit_r_in_flight_);
+      feed_until(fed_to);
+    }
+    return true;
   }
 
   ALOFT_COLD void start_flight(std::uint32_t release, std::uint64_t release_us, bool fit_r_in_flight) {
@@ -252,6 +299,7 @@ class OnboardPipeline {
     current_.overall.merge(check_->overall());
     check_.reset();
     detector_.reset();
+    on_probation_ = false;
     if (at_us - current_.release_us < settings_.min_flight_us) {
       ++stream_.short_flights_dropped;
       return;
@@ -303,6 +351,7 @@ class OnboardPipeline {
   Mat3<Scalar> sensor_to_body_;
   SampleHistory<Scalar, history_samples> history_;
   ReleaseDetector<Scalar, history_samples> detector_;
+  ReleaseWindow<Scalar> window_;
   std::optional<OnboardCheck<Scalar, K>> check_;
   FlightResult<Scalar> current_;
   StreamCounts stream_;
@@ -319,6 +368,7 @@ class OnboardPipeline {
   std::uint32_t release_index_ = 0;
   std::uint32_t flights_ = 0;
   bool fit_r_in_flight_ = false;
+  bool on_probation_ = false;  // the release is still to be dated over the window
   bool have_estimate_ = false;
   bool finished_ = false;
 };

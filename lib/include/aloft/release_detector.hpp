@@ -76,7 +76,7 @@ class ReleaseDetector {
                                const Vec3<Scalar>* r, std::uint64_t not_before_us, std::uint32_t& release,
                                std::uint64_t& release_us, Vec3<Scalar>& r_used) {
     BodyKinematics<Scalar> k;
-    if (!history.kinematics(c, h, k) || !torque_free_at(c, h, k)) {
+    if (!tested(history, c, h, k) || !newest_.torque_free) {
       in_run_ = false;
       given_missed_ = c;
       return false;
@@ -111,9 +111,9 @@ class ReleaseDetector {
                     std::uint32_t not_before, std::uint32_t& landing, std::uint64_t& landing_us) {
     BodyKinematics<Scalar> k;
     bool evidence = false;
-    if (history.kinematics(c, h, k)) {
+    if (tested(history, c, h, k)) {
       const ResidualAndLimit<Scalar> e = residual_and_limit(settings_.free_flight, k, r);
-      evidence = !torque_free_at(c, h, k) || e.residual > e.limit;
+      evidence = !newest_.torque_free || e.residual > e.limit;
       if (!evidence) {
         landing_run_ = 0;
         flight_level_ += (e.residual - flight_level_) / Scalar(32);
@@ -153,6 +153,16 @@ class ReleaseDetector {
     const Scalar part = Scalar(0.5) + Scalar(0.5) * (level - before) / (after - before);
     return history.t_us(j - 1) + whole_us(part * static_cast<Scalar>(history.dt_us(j)));
   }
+
+  // The sample the last find_release or find_landing evaluated: its kinematics (when
+  // `valid`) and the gyro's torque verdict, for the pipeline's window
+  // (aloft/release_window.hpp) to take without forming them again.
+  struct TestedSample {
+    bool valid = false;
+    bool torque_free = false;
+    BodyKinematics<Scalar> k;
+  };
+  const TestedSample& newest_tested() const { return newest_; }
 
   // The last release confirmed was found with a fitted r, not the given one.
   bool release_r_fitted() const { return fitted_; }
@@ -216,6 +226,14 @@ class ReleaseDetector {
       found = true;
     }
     return found;
+  }
+
+  // Kinematics and torque verdict of sample c, kept as newest_.
+  bool tested(const History& history, std::uint32_t c, std::uint32_t h, BodyKinematics<Scalar>& k) {
+    newest_.valid = history.kinematics(c, h, k);
+    newest_.torque_free = newest_.valid && torque_free_at(c, h, k);
+    newest_.k = k;
+    return newest_.valid;
   }
 
   bool confirmed(const History& history, std::uint32_t start, std::uint32_t c, std::uint32_t h) const {
@@ -352,6 +370,7 @@ class ReleaseDetector {
 
   ReleaseDetectorSettings<Scalar> settings_;
   Mat3<Scalar> inertia_;
+  TestedSample newest_;
   std::uint32_t run_start_ = 0;
   std::uint32_t landing_start_ = 0;
   std::uint16_t landing_run_ = 0;
