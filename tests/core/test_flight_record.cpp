@@ -122,32 +122,81 @@ ALOFT_TEST_CASE("flight record: the tensor and settings hashes are CRC-32 of the
   aloft::Mat3<double> other = tensor;
   other(2, 2) = 0.0301;
   ALOFT_CHECK(aloft::tensor_hash(other) != 0xFABCA080u);
-  // The default settings at K = 8: zlib.crc32(struct.pack('<HH4fB3fIIfIIff4fIHffIfHfffIfIIHffIH',
-  // 8, 10, 1, 0, 0, 0, 0, 0, 0, 0, 20000, 200000, 3.0, 100000, 300000, 0.5, 2.0, 2.0, 0.1, 0.5,
-  // 30.0, 4000, 5, 0.5, 0.2, 3500, 0.5, 3, 0.15, 0.5, 10.0, 1000, 0.01,
-  // 25000, 5000, 3, 0.8, 0.02, 15000, 4)).
-  constexpr std::uint32_t default_hash = 0x49865D8Bu;
+  // The default settings at K = 8: zlib.crc32(struct.pack('<HH4fB3fIIfIIff4fIHffIfHfffIf'
+  // 'IIHffIH' 'HIIHH' 'HHH' 'HffHH' 'H', 8, 10, 1, 0, 0, 0, 0, 0, 0, 0, 20000, 200000, 3.0,
+  // 100000, 300000, 0.5, 2.0, 2.0, 0.1, 0.5, 30.0, 4000, 5, 0.5, 0.2, 3500, 0.5, 3, 0.15,
+  // 0.5, 10.0, 1000, 0.01, 25000, 5000, 3, 0.8, 0.02, 15000, 4, 16, 900, 3000, 6, 32, 16, 1,
+  // 4, 16, 0.005, 0.25, 64, 8, 8)).
+  constexpr std::uint32_t default_hash = 0x9F4693A9u;
   const aloft::OnboardPipelineSettings<float> defaults;
   ALOFT_CHECK(aloft::settings_hash(defaults, 8) == default_hash);
   ALOFT_CHECK(aloft::settings_hash(aloft::OnboardPipelineSettings<double>(), 8) == default_hash);
   ALOFT_CHECK(aloft::settings_hash(defaults, 4) != default_hash);
-  aloft::OnboardPipelineSettings<float> release_changed = defaults;
-  release_changed.release.given_r_tolerance_m = 0.02f;
-  ALOFT_CHECK(aloft::settings_hash(release_changed, 8) != default_hash);
-  // Each setting of the release window (aloft/release_window.hpp) changes the hash.
-  using Window = aloft::ReleaseWindowSettings<float>;
-  const auto window_changed = [&](void (*change)(Window&)) {
-    aloft::OnboardPipelineSettings<float> s = defaults;
-    change(s.release_window);
-    return aloft::settings_hash(s, 8) != default_hash;
+}
+
+// Every setting that changes a decision changes the hash: a record can be matched to the
+// settings it was checked with. Each line below changes one setting of
+// OnboardPipelineSettings (and what it holds) and nothing else.
+ALOFT_TEST_CASE("flight record: changing any pipeline setting changes the settings hash", "[records]") {
+  using Settings = aloft::OnboardPipelineSettings<float>;
+  const std::uint32_t default_hash = aloft::settings_hash(Settings(), 8);
+  void (*const changes[])(Settings&) = {
+      [](Settings& s) { s.check.seed_every += 1; },
+      [](Settings& s) { s.check.sensor_to_body = aloft::Quat<float>(0.6f, 0.8f, 0, 0); },
+      [](Settings& s) { s.imu_position_known = true; },
+      [](Settings& s) { s.imu_position_m.x() += 0.001f; },
+      [](Settings& s) { s.bridge_gap_up_to_us += 1; },
+      [](Settings& s) { s.end_flight_after_gap_us += 1; },
+      [](Settings& s) { s.min_flight_us += 1; },
+      [](Settings& s) { s.rearm_after_landing_us += 1; },
+      [](Settings& s) { s.turned_at_least_rad += 0.1f; },
+      [](Settings& s) { s.feed_lag_samples += 1; },
+      [](Settings& s) { s.clock.gap_interval_factor += 0.5f; },
+      [](Settings& s) { s.clock.interval_mean_samples += 1; },
+      [](Settings& s) { s.clock.derivative_half_span_us += 1; },
+      [](Settings& s) { s.clock.half_span_min_samples += 1; },
+      [](Settings& s) { s.clock.half_span_max_samples += 1; },
+      [](Settings& s) { s.release.free_flight.accel_floor_m_s2 += 0.1f; },
+      [](Settings& s) { s.release.free_flight.accel_relative += 0.01f; },
+      [](Settings& s) { s.release.free_flight.torque_relative += 0.01f; },
+      [](Settings& s) { s.release.free_flight.angular_accel_floor_rad_s2 += 1; },
+      [](Settings& s) { s.release.confirm_us += 1; },
+      [](Settings& s) { s.release.confirm_samples += 1; },
+      [](Settings& s) { s.release.release_fraction += 0.01f; },
+      [](Settings& s) { s.release.level_margin_m_s2 += 0.01f; },
+      [](Settings& s) { s.release.fade_out_at_most_us += 1; },
+      [](Settings& s) { s.release.step_fraction += 0.01f; },
+      [](Settings& s) { s.release.landing_samples += 1; },
+      [](Settings& s) { s.release.max_lever_arm_m += 0.01f; },
+      [](Settings& s) { s.release.given_r_tolerance_m += 0.001f; },
+      [](Settings& s) { s.release.fit_rms_fraction += 0.01f; },
+      [](Settings& s) { s.release.ridge_rad_s2 += 1; },
+      [](Settings& s) { s.release.steepest_fall_from_us += 1; },
+      [](Settings& s) { s.release.fall_chord_us += 1; },
+      [](Settings& s) { s.release.fall_search_samples += 1; },
+      [](Settings& s) { s.release.step_search_samples += 1; },
+      [](Settings& s) { s.release.flight_level_samples += 1; },
+      [](Settings& s) { s.release_window.window_us += 1; },
+      [](Settings& s) { s.release_window.block_us += 1; },
+      [](Settings& s) { s.release_window.fit_blocks += 1; },
+      [](Settings& s) { s.release_window.block_limit_floor_m_s2 += 0.1f; },
+      [](Settings& s) { s.release_window.block_limit_relative += 0.01f; },
+      [](Settings& s) { s.release_window.min_free_us += 1; },
+      [](Settings& s) { s.release_window.min_block_samples += 1; },
+      [](Settings& s) { s.lever_arm.estimate_min_turn_rad += 0.1f; },
+      [](Settings& s) { s.lever_arm.half_block_samples += 1; },
+      [](Settings& s) { s.lever_arm.halves_agree_m += 0.001f; },
+      [](Settings& s) { s.lever_arm.halves_agree_relative += 0.01f; },
+      [](Settings& s) { s.lever_arm.given_gives_way_after += 1; },
+      [](Settings& s) { s.lever_arm.missed_gives_way_after += 1; },
   };
-  ALOFT_CHECK(window_changed([](Window& w) { w.window_us += 1; }));
-  ALOFT_CHECK(window_changed([](Window& w) { w.block_us += 1; }));
-  ALOFT_CHECK(window_changed([](Window& w) { w.fit_blocks += 1; }));
-  ALOFT_CHECK(window_changed([](Window& w) { w.block_limit_floor_m_s2 += 0.1f; }));
-  ALOFT_CHECK(window_changed([](Window& w) { w.block_limit_relative += 0.01f; }));
-  ALOFT_CHECK(window_changed([](Window& w) { w.min_free_us += 1; }));
-  ALOFT_CHECK(window_changed([](Window& w) { w.min_block_samples += 1; }));
+  int unchanged = -1;  // the first change above that left the hash as it was
+  for (int n = 0; n < static_cast<int>(sizeof(changes) / sizeof(changes[0])); ++n) {
+    Settings s;
+    changes[n](s);
+    if (unchanged < 0 && aloft::settings_hash(s, 8) == default_hash) unchanged = n;
+  }
+  ALOFT_CHECK(unchanged == -1);
 }
 
 ALOFT_TEST_CASE("flight record: made from the pipeline's result", "[records]") {

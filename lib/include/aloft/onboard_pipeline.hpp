@@ -1,24 +1,21 @@
 // The onboard pipeline: IMU samples in (aloft/imu_sample.hpp), one result per flight out.
 // It is what a firmware runs behind its sensor driver and what `aloft replay` runs on a
 // recording, the same code in `float`:
-//   samples -> stream accounting (dt from time stamps, gaps, clipping), sensor -> body axes
+//   samples -> the stream clock (aloft/stream_clock.hpp: dt from time stamps, gaps,
+//              clipping), sensor -> body axes
 //           -> the last 32 samples (aloft/sample_history.hpp)
 //           -> release and landing of a spinning, off-centre IMU (aloft/release_detector.hpp),
 //              the release dated anew over a window (aloft/release_window.hpp)
 //           -> the onboard check (aloft/onboard_check.hpp) over the airborne samples, fed
 //              from the history from the (dated back) release on, never past the landing
 //           -> FlightResult, taken by the caller once the flight has ended.
-// Gaps: a sample flagged imu_gap_before, or whose stamp is more than `gap_interval_factor`
-// running sample intervals after the previous one, starts a gap; gaps are counted, never
-// bridged silently. A gap longer than `bridge_gap_up_to_us` ends the live simulations
-// (they are seeded anew after it); while airborne, a gap longer than
-// `end_flight_after_gap_us` ends the flight unlanded. A clipped gyro sample is not a
-// measurement: it is neither compared nor used for detection.
-// The accelerometer's position r: from the settings (`imu_position_known`), else fitted
-// over each flight's free-flight samples (aloft/lever_arm_estimate.hpp); a flight's fit
-// that turned at least `estimate_min_turn_rad`, leaves an rms residual below the
-// free-flight floor and agrees between its two halves joins the recording's estimate,
-// which the following flights then use like a known r.
+// This file is the flight's state machine: on the ground (find_release), on probation
+// (the release window), airborne (find_landing), and the feeding of the check. A gap
+// longer than `bridge_gap_up_to_us` ends the live simulations (they are seeded anew after
+// it); while airborne, a gap longer than `end_flight_after_gap_us` ends the flight
+// unlanded. A clipped gyro sample is not a measurement: it is neither compared nor used
+// for detection. The accelerometer's position r: from the settings
+// (`imu_position_known`), else estimated flight by flight (aloft/lever_arm_estimator.hpp).
 #pragma once
 
 #include <cstdint>
@@ -26,9 +23,11 @@
 
 #include "aloft/cold_path.hpp"
 #include "aloft/imu_sample.hpp"
+#include "aloft/lever_arm_estimator.hpp"
 #include "aloft/onboard_check.hpp"
 #include "aloft/release_detector.hpp"
 #include "aloft/release_window.hpp"
+#include "aloft/stream_clock.hpp"
 #include "aloft/whole_microseconds.hpp"
 
 namespace aloft {
@@ -42,22 +41,17 @@ struct OnboardPipelineSettings {
   Vec3<Scalar> imu_position_m = Vec3<Scalar>::Zero();
   std::uint32_t bridge_gap_up_to_us = 20000;       // longer: live simulations end, seeded anew
   std::uint32_t end_flight_after_gap_us = 200000;  // longer, while airborne: flight ends unlanded
+  StreamClockSettings<Scalar> clock = {};          // gaps, the running interval, the w_dot span
   ReleaseDetectorSettings<Scalar> release = {};
   ReleaseWindowSettings<Scalar> release_window = {};
-  Scalar gap_interval_factor = Scalar(3);         // stamps this many running intervals apart: a gap
+  LeverArmEstimatorSettings<Scalar> lever_arm = {};
   std::uint32_t min_flight_us = 100000;           // shorter flights are dropped (a jolt, not a throw)
   std::uint32_t rearm_after_landing_us = 300000;  // no release this soon after a landing (bounces)
   Scalar turned_at_least_rad = Scalar(0.5);       // FlightResult::turned
-  Scalar estimate_min_turn_rad = Scalar(2);       // a flight's r fit joins the estimate past this turn
-};
-
-// The whole recording so far.
-struct StreamCounts {
-  std::uint32_t samples = 0;
-  std::uint32_t gaps = 0;                   // samples flagged imu_gap_before (or stamps far apart)
-  std::uint64_t lost_us = 0;                // total length of those gaps
-  std::uint32_t clipped_samples = 0;        // samples with a clipped axis
-  std::uint32_t short_flights_dropped = 0;  // free flight shorter than min_flight_us
+  // The check is fed this many samples behind the newest, so that a landing can still be
+  // dated back over them (the landing needs `release.landing_samples` of evidence, dated
+  // back a few more).
+  std::uint16_t feed_lag_samples = 8;
 };
 
 template <typename Scalar>
@@ -85,14 +79,16 @@ template <typename Scalar, int K>
 class OnboardPipeline {
  public:
   static constexpr int history_samples = 32;
-  static constexpr std::uint32_t feed_lag_samples = 8;
 
   OnboardPipeline(const InertiaTensor<Scalar>& inertia, const OnboardPipelineSettings<Scalar>& settings)
       : inertia_(inertia),
         settings_(settings),
         sensor_to_body_(settings.check.sensor_to_body.normalized().toRotationMatrix()),
+        clock_(settings.clock),
         detector_(settings.release, inertia.tensor()),
-        window_(settings.release_window) {
+        window_(settings.release_window),
+        lever_arm_(settings.lever_arm, {settings.release.ridge_rad_s2, settings.release.max_lever_arm_m,
+                                        settings.release.free_flight.accel_floor_m_s2}) {
     check_settings_ = settings.check;
     check_settings_.sensor_to_body = Quat<Scalar>::Identity();  // the history is in body axes
   }
@@ -101,20 +97,17 @@ class OnboardPipeline {
   // after the previous one) in which case the sample is not used and nothing changes.
   Status push(const ImuSample<Scalar>& sample) {
     if (!all_finite(sample.gyro_rad_s) || !all_finite(sample.accel_m_s2)) return Status::non_finite_input;
-    if (stream_.samples > 0 && sample.t_us <= last_t_us_) return Status::time_not_increasing;
-    const std::uint64_t dt_us = stream_.samples > 0 ? sample.t_us - last_t_us_ : 0;
-    const bool gap = stream_.samples > 0 && (sample.gap_before() || stamps_far_apart(dt_us));
-    count(sample, gap, dt_us);
-    if (check_ && gap && dt_us > settings_.end_flight_after_gap_us) {
+    const std::uint64_t previous_t_us = clock_.last_t_us();
+    const StreamTick tick = clock_.tick(sample);
+    if (tick.status != Status::ok) return tick.status;
+    if (check_ && tick.gap && tick.dt_us > settings_.end_flight_after_gap_us) {
       feed_until(history_.count());
-      end_flight(false, last_t_us_);
+      end_flight(false, previous_t_us);
     }
-    const std::uint8_t flags = static_cast<std::uint8_t>(sample.flags | (gap ? imu_gap_before : 0));
+    const std::uint8_t flags = static_cast<std::uint8_t>(sample.flags | (tick.gap ? imu_gap_before : 0));
     history_.push(sample.t_us, sensor_to_body_ * sample.gyro_rad_s, sensor_to_body_ * sample.accel_m_s2,
                   flags);
-    if (!gap && dt_us > 0) track_interval(dt_us);
-    last_t_us_ = sample.t_us;
-    if (history_.count() > half_span_) detect(history_.count() - 1 - half_span_);
+    if (history_.count() > clock_.half_span()) detect(history_.count() - 1 - clock_.half_span());
     return Status::ok;
   }
 
@@ -122,7 +115,7 @@ class OnboardPipeline {
   ALOFT_COLD void finish() {
     if (!check_) return;
     feed_until(detector_.pending_from(history_.count() - 1));
-    end_flight(false, last_t_us_);
+    end_flight(false, clock_.last_t_us());
   }
 
   // Moves out the flight that ended since the last call; false when none has.
@@ -133,69 +126,46 @@ class OnboardPipeline {
     return true;
   }
 
-  const StreamCounts& stream() const { return stream_; }
+  const StreamCounts& stream() const { return clock_.counts(); }
   bool airborne() const { return check_.has_value(); }
   // The lever arm the recording's flights have given so far (valid when has_estimate()).
-  bool has_imu_position_estimate() const { return have_estimate_; }
-  const Vec3<Scalar>& imu_position_estimate() const { return r_estimate_; }
+  bool has_imu_position_estimate() const { return lever_arm_.has_estimate(); }
+  const Vec3<Scalar>& imu_position_estimate() const { return lever_arm_.estimate(); }
 
  private:
-  void count(const ImuSample<Scalar>& sample, bool gap, std::uint64_t dt_us) {
-    ++stream_.samples;
-    if (gap) {
-      ++stream_.gaps;
-      stream_.lost_us += dt_us;
-    }
-    if (sample.clipped()) ++stream_.clipped_samples;
-  }
-
-  bool stamps_far_apart(std::uint64_t dt_us) const {
-    return interval_us_ > Scalar(0) &&
-           scalar_of_us<Scalar>(dt_us) > settings_.gap_interval_factor * interval_us_;
-  }
-
-  // Running sample interval (µs) and the half span h of the w_dot difference in samples.
-  void track_interval(std::uint64_t dt_us) {
-    const Scalar dt = scalar_of_us<Scalar>(dt_us);
-    interval_us_ = interval_us_ > Scalar(0) ? interval_us_ + (dt - interval_us_) / Scalar(16) : dt;
-    const Scalar span = static_cast<Scalar>(settings_.release.derivative_half_span_us) / interval_us_;
-    half_span_ = span < Scalar(1.5) ? 1u
-                 : span > Scalar(4) ? 4u
-                                    : static_cast<std::uint32_t>(span + Scalar(0.5));
+  // The lever arm to look for a release with: given, else the recording's estimate, else none.
+  const Vec3<Scalar>* known_r() const {
+    return settings_.imu_position_known ? &settings_.imu_position_m
+           : lever_arm_.has_estimate()  ? &lever_arm_.estimate()
+                                        : nullptr;
   }
 
   void detect(std::uint32_t c) {
+    const std::uint32_t h = clock_.half_span();
     if (check_) {
-      std::uint32_t landing = 0;
-      std::uint64_t landing_us = 0;
-      const bool landed =
-          detector_.find_landing(history_, c, half_span_, r_flight_, next_feed_, landing, landing_us);
+      const FoundLanding landing = detector_.find_landing(history_, c, h, r_flight_, next_feed_);
       if (on_probation_) add_to_window(c);
-      if (landed) {
-        feed_until(landing);
-        end_flight(true, landing_us);
+      if (landing.found) {
+        feed_until(landing.index);
+        end_flight(true, landing.landing_us);
         return;
       }
       if (on_probation_ && !date_release_over_window()) return;
       // Held back a few samples, so a landing can still be dated back over them.
-      const std::uint32_t held_back = c + 1 > feed_lag_samples ? c + 1 - feed_lag_samples : 0u;
+      const std::uint32_t lag = settings_.feed_lag_samples;
+      const std::uint32_t held_back = c + 1 > lag ? c + 1 - lag : 0u;
       const std::uint32_t pending = detector_.pending_from(c);
       feed_until(pending < held_back ? pending : held_back);
       return;
     }
-    const Vec3<Scalar>* known = settings_.imu_position_known ? &settings_.imu_position_m
-                                : have_estimate_             ? &r_estimate_
-                                                             : nullptr;
-    std::uint32_t release = 0;
-    std::uint64_t release_us = 0;
-    const bool proposed = detector_.find_release(history_, c, half_span_, known, rearmed_at_us_, release,
-                                                 release_us, r_flight_);
+    const FoundRelease<Scalar> release = detector_.find_release(history_, c, h, known_r(), rearmed_at_us_);
     add_to_window(c);
-    if (!proposed) return;
+    if (!release.found) return;
+    r_flight_ = release.r;
     on_probation_ = true;
     // A known r that missed this release (the detector fitted one near it) is no better
     // than none: the flight's own fit takes over as soon as it would without one.
-    start_flight(release, release_us, detector_.release_r_fitted());
+    start_flight(release.index, release.release_us, release.r_fitted);
     feed_until(c + 1);
   }
 
@@ -210,9 +180,7 @@ class OnboardPipeline {
   // starts again from there, as far as the history still holds it), or withdrawn. False
   // when the flight was withdrawn.
   ALOFT_COLD bool date_release_over_window() {
-    const Vec3<Scalar>* known = settings_.imu_position_known ? &settings_.imu_position_m
-                                : have_estimate_             ? &r_estimate_
-                                                             : nullptr;
+    const Vec3<Scalar>* known = known_r();
     LeverArmBall<Scalar> ball;
     ball.centre = known != nullptr ? *known : Vec3<Scalar>::Zero();
     ball.radius_m =
@@ -231,22 +199,20 @@ class OnboardPipeline {
     if (w.release_us != current_.release_us) {
       const std::uint32_t fed_to = next_feed_;
       const std::uint32_t oldest = history_.oldest();
-      start_flight(w.index > oldest ? w.index : oldest, w.release_us, fit_r_in_flight_);
+      start_flight(w.index > oldest ? w.index : oldest, w.release_us, release_missed_given_r_);
       feed_until(fed_to);
     }
     return true;
   }
 
-  ALOFT_COLD void start_flight(std::uint32_t release, std::uint64_t release_us, bool fit_r_in_flight) {
+  ALOFT_COLD void start_flight(std::uint32_t release, std::uint64_t release_us, bool release_missed_given_r) {
     check_.emplace(inertia_, check_settings_);
     current_ = FlightResult<Scalar>();
     current_.release_us = release_us;
     next_feed_ = release;
     release_index_ = release;
-    fit_r_in_flight_ = fit_r_in_flight;
-    flight_fit_.reset();
-    half_fit_[0].reset();
-    half_fit_[1].reset();
+    release_missed_given_r_ = release_missed_given_r;
+    lever_arm_.start_flight(release_missed_given_r);
   }
 
   // Feeds the check every sample before index `end` not fed yet.
@@ -277,14 +243,10 @@ class OnboardPipeline {
 
   // The lever-arm fit takes the samples the gyro calls torque-free.
   void fit_sample(std::uint32_t i) {
+    const std::uint32_t h = clock_.half_span();
     BodyKinematics<Scalar> k;
-    if (!history_.kinematics(i, half_span_, k) || !detector_.torque_free_remembered(i, half_span_, k)) return;
-    const LeverArmTerms<Scalar> terms(k);
-    flight_fit_.add(terms);
-    half_fit_[(flight_fit_.count() / 16u) % 2u].add(terms);
-    // A given or earlier r gives way to this flight's own fit once it has seen enough.
-    const std::uint32_t enough = fit_r_in_flight_ ? 8u : 64u;
-    if (flight_fit_.count() >= enough) r_flight_ = flight_fit_.solve(settings_.release.ridge_rad_s2);
+    if (!history_.kinematics(i, h, k) || !detector_.torque_free_remembered(i, h, k)) return;
+    if (lever_arm_.add(LeverArmTerms<Scalar>(k))) r_flight_ = lever_arm_.flight_r();
   }
 
   // The simulations alive before a long gap cannot be carried across it.
@@ -301,7 +263,7 @@ class OnboardPipeline {
     detector_.reset();
     on_probation_ = false;
     if (at_us - current_.release_us < settings_.min_flight_us) {
-      ++stream_.short_flights_dropped;
+      ++clock_.counts().short_flights_dropped;
       return;
     }
     current_.flight_number = flights_++;
@@ -322,54 +284,31 @@ class OnboardPipeline {
   }
 
   ALOFT_COLD void report_lever_arm() {
-    if (settings_.imu_position_known) {
-      current_.imu_position_m = settings_.imu_position_m;
-      current_.lever_arm_fit_rms_m_s2 = flight_fit_.rms_residual(settings_.imu_position_m);
-      return;
-    }
-    const Scalar ridge = settings_.release.ridge_rad_s2;
-    const Vec3<Scalar> r = flight_fit_.solve(ridge);
-    const Scalar rms = flight_fit_.rms_residual(r);
-    const Vec3<Scalar> ra = half_fit_[0].solve(ridge);
-    const Vec3<Scalar> rb = half_fit_[1].solve(ridge);
-    const Scalar agree = Scalar(0.005) + Scalar(0.25) * r.norm();
-    if (current_.turn_angle_rad >= settings_.estimate_min_turn_rad &&
-        r.norm() <= settings_.release.max_lever_arm_m &&
-        rms <= settings_.release.free_flight.accel_floor_m_s2 && (ra - rb).norm() <= agree) {
-      estimate_fit_.merge(flight_fit_);
-      r_estimate_ = estimate_fit_.solve(ridge);
-      have_estimate_ = true;
-    }
-    current_.imu_position_m = have_estimate_ ? r_estimate_ : r;
-    current_.imu_position_estimated = true;
-    current_.lever_arm_fit_rms_m_s2 = flight_fit_.rms_residual(current_.imu_position_m);
+    const Vec3<Scalar>* given = settings_.imu_position_known ? &settings_.imu_position_m : nullptr;
+    const LeverArmReport<Scalar> report = lever_arm_.finish_flight(given, current_.turn_angle_rad);
+    current_.imu_position_m = report.r;
+    current_.imu_position_estimated = report.estimated;
+    current_.lever_arm_fit_rms_m_s2 = report.fit_rms_m_s2;
   }
 
   InertiaTensor<Scalar> inertia_;
   OnboardPipelineSettings<Scalar> settings_;
   OnboardCheckSettings<Scalar> check_settings_;
   Mat3<Scalar> sensor_to_body_;
+  StreamClock<Scalar> clock_;
   SampleHistory<Scalar, history_samples> history_;
   ReleaseDetector<Scalar, history_samples> detector_;
   ReleaseWindow<Scalar> window_;
+  LeverArmEstimator<Scalar> lever_arm_;
   std::optional<OnboardCheck<Scalar, K>> check_;
   FlightResult<Scalar> current_;
-  StreamCounts stream_;
-  LeverArmFit<Scalar> flight_fit_;
-  LeverArmFit<Scalar> half_fit_[2];
-  LeverArmFit<Scalar> estimate_fit_;
   Vec3<Scalar> r_flight_ = Vec3<Scalar>::Zero();  // the lever arm the open flight is judged with
-  Vec3<Scalar> r_estimate_ = Vec3<Scalar>::Zero();
-  std::uint64_t last_t_us_ = 0;
   std::uint64_t rearmed_at_us_ = 0;
-  Scalar interval_us_ = Scalar(0);
-  std::uint32_t half_span_ = 1;
   std::uint32_t next_feed_ = 0;
   std::uint32_t release_index_ = 0;
   std::uint32_t flights_ = 0;
-  bool fit_r_in_flight_ = false;
-  bool on_probation_ = false;  // the release is still to be dated over the window
-  bool have_estimate_ = false;
+  bool release_missed_given_r_ = false;  // the open flight's release was found with a fitted r
+  bool on_probation_ = false;            // the release is still to be dated over the window
   bool finished_ = false;
 };
 

@@ -44,7 +44,34 @@ struct ReleaseDetectorSettings {
   Scalar given_r_tolerance_m = Scalar(0.01);  // a given r that misses: a fit this close may replace it
   Scalar fit_rms_fraction = Scalar(0.5);  // a fitted r must leave its rms below this fraction of the limit
   Scalar ridge_rad_s2 = Scalar(10);       // see aloft/lever_arm_estimate.hpp
-  std::uint32_t derivative_half_span_us = 1000;  // w_dot from gyro samples about this far (µs) either side
+  // Dating a release whose force fades out (after_fade_out, crossing_before below):
+  std::uint32_t steepest_fall_from_us = 900;  // samples this far apart: from the steepest fall
+  std::uint32_t fall_chord_us = 3000;         // a fall measured over at least this long
+  std::uint16_t fall_search_samples = 16;     // samples before the first flight-level one searched
+  std::uint16_t step_search_samples = 6;      // samples far apart: searched for the step's top
+  // The flight's residual level while airborne, a running mean over about this many
+  // samples (the landing is dated back to where the residual left it).
+  std::uint16_t flight_level_samples = 32;
+};
+
+// A release found: its first free-flight sample, its time (earlier than that sample's
+// stamp when the samples are too far apart to resolve the hand's force fading out), and
+// the lever arm it was found with.
+template <typename Scalar>
+struct FoundRelease {
+  bool found = false;
+  std::uint32_t index = 0;
+  std::uint64_t release_us = 0;
+  Vec3<Scalar> r = Vec3<Scalar>::Zero();
+  bool r_fitted = false;  // r was fitted (none given, or the given one missed)
+};
+
+// A landing found: its first sample and its time (between that sample and the one before
+// when the samples are far apart, see level_crossing).
+struct FoundLanding {
+  bool found = false;
+  std::uint32_t index = 0;
+  std::uint64_t landing_us = 0;
 };
 
 template <typename Scalar, int N>
@@ -67,48 +94,45 @@ class ReleaseDetector {
     return torque_free(k) && centre_specific_force(k, r) <= limit(k, r);
   }
 
-  // Evaluates sample c while waiting for release; r is the known lever arm or null.
-  // True when release is confirmed: `release` is the index of its first free-flight
-  // sample, `release_us` its time (earlier than that sample's stamp when the samples are
-  // too far apart to resolve the hand's force fading out), `r_used` the lever arm it was
-  // found with (fitted when r is null).
-  ALOFT_COLD bool find_release(const History& history, std::uint32_t c, std::uint32_t h,
-                               const Vec3<Scalar>* r, std::uint64_t not_before_us, std::uint32_t& release,
-                               std::uint64_t& release_us, Vec3<Scalar>& r_used) {
+  // Evaluates sample c while waiting for release; r is the known lever arm or null (then
+  // fitted). Found once release is confirmed, dated no earlier than not_before_us.
+  ALOFT_COLD FoundRelease<Scalar> find_release(const History& history, std::uint32_t c, std::uint32_t h,
+                                               const Vec3<Scalar>* r, std::uint64_t not_before_us) {
+    FoundRelease<Scalar> out;
     BodyKinematics<Scalar> k;
     if (!tested(history, c, h, k) || !newest_.torque_free) {
       in_run_ = false;
       given_missed_ = c;
-      return false;
+      return out;
     }
     if (!in_run_ || !history.holds(run_start_ - h)) run_start_ = in_run_ ? history.oldest() + h : c;
     in_run_ = true;
     const bool given_fits = r != nullptr && centre_specific_force(k, *r) <= limit(k, *r);
     if (!given_fits) given_missed_ = c;
     std::uint32_t start = 0;
-    fitted_ = !given_fits;
+    out.r_fitted = !given_fits;
     if (given_fits) {
       // The run of samples the given r fits: from the last miss on, inside the torque-free run.
       start = given_missed_ + 1 > run_start_ ? given_missed_ + 1 : run_start_;
-      r_used = *r;
-    } else if (!fit_free_stretch(history, c, h, k, r, start, r_used)) {
-      return false;
+      out.r = *r;
+    } else if (!fit_free_stretch(history, c, h, k, r, start, out.r)) {
+      return out;
     }
-    if (!confirmed(history, start, c, h) || history.t_us(start) < not_before_us) return false;
-    release = first_at_flight_level(history, start, c, h, r_used);
-    release_us = history.t_us(release);
-    if (release > 0 && history.dt_us(release) >= settings_.fade_out_at_most_us) {
-      release_us = crossing_before(history, release, h, r_used);
+    if (!confirmed(history, start, c, h) || history.t_us(start) < not_before_us) return out;
+    out.found = true;
+    out.index = first_at_flight_level(history, start, c, h, out.r);
+    out.release_us = history.t_us(out.index);
+    if (out.index > 0 && history.dt_us(out.index) >= settings_.fade_out_at_most_us) {
+      out.release_us = crossing_before(history, out.index, h, out.r);
     }
-    return true;
+    return out;
   }
 
-  // Evaluates sample c while airborne. True when landing is confirmed (`landing` is the
-  // index of its first sample, `landing_us` its time: between that sample and the one
-  // before when the samples are far apart, see level_crossing).
+  // Evaluates sample c while airborne. Found once landing is confirmed.
   // `not_before`: the first sample that may still be dated the landing (not yet fed).
-  bool find_landing(const History& history, std::uint32_t c, std::uint32_t h, const Vec3<Scalar>& r,
-                    std::uint32_t not_before, std::uint32_t& landing, std::uint64_t& landing_us) {
+  FoundLanding find_landing(const History& history, std::uint32_t c, std::uint32_t h, const Vec3<Scalar>& r,
+                            std::uint32_t not_before) {
+    FoundLanding out;
     BodyKinematics<Scalar> k;
     bool evidence = false;
     if (tested(history, c, h, k)) {
@@ -116,7 +140,7 @@ class ReleaseDetector {
       evidence = !newest_.torque_free || e.residual > e.limit;
       if (!evidence) {
         landing_run_ = 0;
-        flight_level_ += (e.residual - flight_level_) / Scalar(32);
+        flight_level_ += (e.residual - flight_level_) / static_cast<Scalar>(settings_.flight_level_samples);
       }
     } else {
       evidence = (history.flags(c) & imu_accel_clipped) != 0;  // else: no verdict, run kept
@@ -125,19 +149,21 @@ class ReleaseDetector {
       if (landing_run_ == 0) landing_start_ = c;
       ++landing_run_;
     }
-    if (landing_run_ < settings_.landing_samples) return false;
-    landing = landing_start_;
+    if (landing_run_ < settings_.landing_samples) return out;
+    std::uint32_t landing = landing_start_;
     // Back to where the residual left the flight's own level (a force that builds up).
     const Scalar level = Scalar(2) * flight_level_ + settings_.level_margin_m_s2;
     while (landing > not_before && history.holds(landing - 1 - h) &&
            residual_above(history, landing - 1, h, r, level)) {
       --landing;
     }
-    landing_us = history.t_us(landing);
+    out.found = true;
+    out.index = landing;
+    out.landing_us = history.t_us(landing);
     if (landing > not_before && history.dt_us(landing) >= settings_.fade_out_at_most_us) {
-      landing_us = level_crossing(history, landing, h, r, level);
+      out.landing_us = level_crossing(history, landing, h, r, level);
     }
-    return true;
+    return out;
   }
 
   // Samples too far apart to see the force build up: the landing lies between the last
@@ -163,9 +189,6 @@ class ReleaseDetector {
     BodyKinematics<Scalar> k;
   };
   const TestedSample& newest_tested() const { return newest_; }
-
-  // The last release confirmed was found with a fitted r, not the given one.
-  bool release_r_fitted() const { return fitted_; }
 
   // Samples from this index on may still turn out to be the landing (not to be fed yet).
   std::uint32_t pending_from(std::uint32_t c) const { return landing_run_ > 0 ? landing_start_ : c + 1; }
@@ -270,14 +293,14 @@ class ReleaseDetector {
   // Where the hand's force ended: a fall of the residual, extended as a straight line to
   // zero; the first sample from then on is the release. Which fall depends on how far
   // apart the samples are:
-  //  - under `tail_from_us`: from the newest earlier sample still above twice the level to
+  //  - under `steepest_fall_from_us`: from the newest earlier sample still above twice the level to
   //    j0, the first at flight level. The last of a force that fades hides in the noise
   //    there, so the line runs on past j0 (noise at j0 can only move the release later).
-  //  - from `tail_from_us` up to `fade_out_at_most_us` (about 285 Hz to 1.1 kHz): the
+  //  - from `steepest_fall_from_us` up to `fade_out_at_most_us` (about 285 Hz to 1.1 kHz): the
   //    sensor's anti-alias filter, set in proportion to its rate, draws the end of the
   //    force out into a tail of a few samples, and a few samples are 5-10 ms here (j0 came
   //    5-9 ms after the release at 400 Hz behind a 100 Hz filter). So the steepest fall in
-  //    the 16 samples up to j0, each measured over at least `chord_us`: its line reaches
+  //    the `fall_search_samples` up to j0, each measured over at least `fall_chord_us`: its line reaches
   //    zero no earlier than a force that falls with a slope (or ever more steeply) has
   //    ended, and later by the filter's delay rather than by its settling.
   // The line is extended `fade_out_at_most_us` at most.
@@ -286,17 +309,19 @@ class ReleaseDetector {
     std::uint32_t a = j0, b = j0;
     Scalar e_a = residual(history, j0, h, r), e_b = e_a;
     const std::uint32_t dt = history.dt_us(j0);
-    if (dt < tail_from_us) {
-      while (a > j0 - 16u && a > h && history.holds(a - 1 - h)) {
+    const std::uint32_t searched = settings_.fall_search_samples;
+    if (dt < settings_.steepest_fall_from_us) {
+      while (a > j0 - searched && a > h && history.holds(a - 1 - h)) {
         --a;
         e_a = residual(history, a, h, r);
         if (e_a < Scalar(0) || e_a > Scalar(2) * level) break;
       }
       if (!(e_a > Scalar(2) * level)) return j0;
     } else {
-      const std::uint32_t step = (chord_us + dt - 1u) / dt;  // samples per fall, at least chord_us
+      const std::uint32_t step =
+          (settings_.fall_chord_us + dt - 1u) / dt;  // samples per fall, at least the chord
       Scalar steepest = Scalar(0);
-      for (std::uint32_t end = j0; end + 16u > j0 && end > h + step; --end) {
+      for (std::uint32_t end = j0; end + searched > j0 && end > h + step; --end) {
         const Scalar e_start = residual(history, end - step, h, r), e_end = residual(history, end, h, r);
         if (e_start < Scalar(0) || e_end < Scalar(0)) break;
         const Scalar slope = (e_start - e_end) / static_cast<Scalar>(history.span_us(end - step, end));
@@ -319,8 +344,6 @@ class ReleaseDetector {
     while (j < c && history.span_us(b, j) < after_b_us) ++j;
     return j;
   }
-  static constexpr std::uint32_t tail_from_us = 900;  // samples this far apart: the steepest fall
-  static constexpr std::uint32_t chord_us = 3000;     // a fall measured over at least this long
 
   // Samples too far apart to see a hand's force fade (and an anti-alias filter that smears
   // the step over one or two of them): the release is where the residual, interpolated
@@ -333,7 +356,7 @@ class ReleaseDetector {
     // step can leave j0 a sample or two late).
     std::uint32_t top = j0;
     Scalar e_top = Scalar(0);
-    for (std::uint32_t j = j0; j > 0 && j + step_window > j0;) {
+    for (std::uint32_t j = j0; j > 0 && j + settings_.step_search_samples > j0;) {
       --j;
       const Scalar e = residual(history, j, h, r);
       if (e > e_top) {
@@ -352,7 +375,6 @@ class ReleaseDetector {
     if (part > Scalar(1)) part = Scalar(1);  // j0 itself above the mark: no later than j + 1
     return history.t_us(j) + whole_us(part * static_cast<Scalar>(history.dt_us(j + 1)));
   }
-  static constexpr std::uint32_t step_window = 6;  // samples before j0 searched for the step's top
 
   // |a - K r| at sample j, or -1 when its kinematics are not available.
   Scalar residual(const History& history, std::uint32_t j, std::uint32_t h, const Vec3<Scalar>& r) const {
@@ -374,10 +396,9 @@ class ReleaseDetector {
   std::uint32_t run_start_ = 0;
   std::uint32_t landing_start_ = 0;
   std::uint16_t landing_run_ = 0;
-  bool in_run_ = false;              // a run of torque-free samples, from run_start_
-  bool fitted_ = false;              // find_release: r was fitted (none given, or the given one missed)
-  std::uint32_t given_missed_ = 0;   // the newest sample the given r did not fit (or not torque-free)
-  Scalar flight_level_ = Scalar(0);  // running mean residual in flight (m/s²)
+  bool in_run_ = false;                      // a run of torque-free samples, from run_start_
+  std::uint32_t given_missed_ = 0;           // the newest sample the given r did not fit (or not torque-free)
+  Scalar flight_level_ = Scalar(0);          // running mean residual in flight (m/s²)
   std::uint32_t memo_newest_ = 0xFFFFFFFFu;  // torque_free_at: the newest sample tested
   std::uint32_t memo_h_ = 0;
   std::uint32_t memo_known_ = 0;  // bit i % 32: sample i tested, with memo_h_

@@ -1,0 +1,102 @@
+// The release window (aloft/release_window.hpp): a proposed release, judged over blocks
+// of 5 ms once 25 ms of samples have followed it.
+#include "aloft/release_window.hpp"
+
+#include <cmath>
+
+#include "test_api.hpp"
+
+namespace {
+
+using V3 = aloft::Vec3<float>;
+using Window = aloft::ReleaseWindow<float>;
+
+constexpr std::uint64_t t0_us = 5000000;
+constexpr std::uint32_t period_us = 250;  // 4 kHz: 20 samples a block
+const V3 r_true(0.035f, -0.02f, 0.0f);
+
+// Sample i of a body spinning at 25 rad/s, accelerometer at r_true, plus `extra` (m/s²).
+aloft::BodyKinematics<float> kinematics(const V3& extra) {
+  aloft::BodyKinematics<float> k;
+  k.w = V3(1.0f, -0.5f, 25.0f);
+  k.a = aloft::lever_arm_matrix(k.w, k.w_dot) * r_true + extra;
+  return k;
+}
+
+std::uint64_t stamp(std::uint32_t i) { return t0_us + static_cast<std::uint64_t>(i) * period_us; }
+
+// Feeds samples [from, to) with the hand's push (m/s²) fading linearly to zero at sample
+// `hand_ends`, and a ringing mode of `ring_m_s2` at 300 Hz, decaying over 10 ms, from `hand_ends` on; returns
+// the first decided verdict for the release proposed at sample `proposed`.
+aloft::WindowedRelease<float> feed(Window& w, std::uint32_t to, std::uint32_t hand_ends, float push_m_s2,
+                                   float ring_m_s2, std::uint32_t proposed) {
+  aloft::LeverArmBall<float> ball;
+  ball.centre = r_true;
+  ball.radius_m = 0.01f;
+  ball.otherwise = r_true;
+  aloft::WindowedRelease<float> verdict;
+  for (std::uint32_t i = 0; i < to && !verdict.decided; ++i) {
+    V3 extra = V3::Zero();
+    if (i < hand_ends) extra = V3(0, 1, 0) * (push_m_s2 * static_cast<float>(hand_ends - i) / 80.0f);
+    const float t_s = static_cast<float>(i - (i < hand_ends ? i : hand_ends)) * 250e-6f;
+    if (i >= hand_ends)
+      extra = V3(1, 0, 0) * (ring_m_s2 * std::exp(-t_s / 0.01f) * std::sin(6.2831853f * 300.0f * t_s));
+    w.add(i, stamp(i), kinematics(extra), true);
+    if (i >= proposed) verdict = w.date(proposed, stamp(proposed), ball);
+  }
+  return verdict;
+}
+
+}  // namespace
+
+ALOFT_TEST_CASE("release window: free flight from the proposal keeps the proposed release",
+                "[release_window]") {
+  Window w{aloft::ReleaseWindowSettings<float>()};
+  const aloft::WindowedRelease<float> v = feed(w, 600, 200, 15.0f, 0.0f, 205);
+  ALOFT_CHECK(v.decided);
+  ALOFT_CHECK(v.free);
+  ALOFT_CHECK(v.index == 205u);
+  ALOFT_CHECK(v.release_us == stamp(205));
+}
+
+ALOFT_TEST_CASE("release window: a hand that still pushes after the proposal moves the release later",
+                "[release_window]") {
+  // The hand's push fades over 80 samples (20 ms) to sample 300; proposed at 268 (8 ms
+  // early, 6 m/s² left): the release moves to the block that starts where the hand let go.
+  Window w{aloft::ReleaseWindowSettings<float>()};
+  const aloft::WindowedRelease<float> v = feed(w, 800, 300, 15.0f, 0.0f, 268);
+  ALOFT_CHECK(v.decided);
+  ALOFT_CHECK(v.free);
+  ALOFT_CHECK(v.index == 300u);
+  ALOFT_CHECK(v.release_us == stamp(300));
+}
+
+ALOFT_TEST_CASE("release window: proposed while the hand pushes for most of the window, it is withdrawn",
+                "[release_window]") {
+  // Proposed at 240 (15 ms early): when the window is full only 10 ms of free flight
+  // follow the hand, under min_free_us.
+  Window w{aloft::ReleaseWindowSettings<float>()};
+  const aloft::WindowedRelease<float> v = feed(w, 800, 300, 15.0f, 0.0f, 240);
+  ALOFT_CHECK(v.decided);
+  ALOFT_CHECK(!v.free);
+}
+
+ALOFT_TEST_CASE("release window: a ringing body is free flight (its mode averages out of a block)",
+                "[release_window]") {
+  // 300 Hz at 5 m/s² from the release on, decaying over 10 ms: single samples over the
+  // sample-by-sample limit
+  // (2 + 0.1 |K r| = 4.2 m/s² here), their block means at most a fifth of it.
+  Window w{aloft::ReleaseWindowSettings<float>()};
+  const aloft::WindowedRelease<float> v = feed(w, 800, 200, 15.0f, 5.0f, 200);
+  ALOFT_CHECK(v.decided);
+  ALOFT_CHECK(v.free);
+  ALOFT_CHECK(v.release_us == stamp(200));
+}
+
+ALOFT_TEST_CASE("release window: a push that never ends withdraws the proposal", "[release_window]") {
+  Window w{aloft::ReleaseWindowSettings<float>()};
+  // The hand pushes to sample 10000 (still 15 m/s² · 90 % over the window): no free run.
+  const aloft::WindowedRelease<float> v = feed(w, 400, 10000, 15.0f, 0.0f, 100);
+  ALOFT_CHECK(v.decided);
+  ALOFT_CHECK(!v.free);
+}
