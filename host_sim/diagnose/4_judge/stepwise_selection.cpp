@@ -76,6 +76,7 @@ ModelStep first_step(const Analysis& a) {
   if (v.effect != Effect::none && v.chosen >= 0) {
     step.added = v.chosen;
     step.equivalent = v.equivalent;
+    step.indistinguishable = v.indistinguishable;
     step.shrink = a.candidates[static_cast<std::size_t>(v.chosen)].shrink;
   }
   return step;
@@ -109,6 +110,8 @@ bool next_step(Analysis& a, const RankingContext& context, const CandidateEvalua
     const Candidate& best = step.candidates[static_cast<std::size_t>(r.best)];
     step.added = r.best;
     step.equivalent = r.equivalent;
+    step.indistinguishable = r.tied;
+    note_ties(a.verdict, best, r.tied, step.candidates);
     step.heldout_rms_rel_err_after = best.heldout_rms_rel_err;
     step.heldout_rms_da_after_deg = best.heldout_rms_da_deg;
     step.shrink = best.shrink;
@@ -137,6 +140,7 @@ void describe_final_model(Analysis& analysis, const RankingContext& context,
     VerdictEffect e;
     e.effect = joined.effect;
     e.equivalent = s.equivalent;
+    e.indistinguishable = s.indistinguishable;
     e.step = step_number;
     e.params =
         context.nominal != nullptr ? effect_parameters(model, current.fit.theta, e.effect) : joined.params;
@@ -156,6 +160,7 @@ void describe_final_model(Analysis& analysis, const RankingContext& context,
                    [](const VerdictEffect& x, const VerdictEffect& y) { return x.shrink > y.shrink; });
   v.effect = v.effects.front().effect;
   v.equivalent = v.effects.front().equivalent;
+  v.indistinguishable = v.effects.front().indistinguishable;
   for (std::size_t i = 0; i < analysis.candidates.size(); ++i) {
     if (analysis.candidates[i].effect == v.effect && analysis.candidates[i].base.empty())
       v.chosen = static_cast<int>(i);
@@ -186,6 +191,7 @@ void select_stepwise(Analysis& analysis, const RankingContext& context, const Ca
                              " beats the noise but is too small to matter: " + why);
     v.effect = Effect::none;
     v.equivalent = {Effect::none};
+    v.indistinguishable.clear();
     v.could_not_judge.clear();
     if (none != analysis.candidates.end()) {
       v.chosen = static_cast<int>(none - analysis.candidates.begin());
