@@ -240,3 +240,30 @@ TEST_CASE("rank_step: a margin within twice the spread of the difference is a ti
   CHECK(b.verdict.effect == Effect::gyro_scale);
   CHECK(b.verdict.indistinguishable.empty());
 }
+
+TEST_CASE("rank_step: another minimum of a search is reported when it fits about as well",
+          "[candidate_ranking][ties]") {
+  const double gain = kVerdictMargin + penalty(Effect::impulse) + 50.0;
+  Candidate none = candidate(Effect::none, 2900.0, 0.10);
+  none.fit.cost = 3000.0;
+  Candidate knock = candidate(Effect::impulse, 2900.0 - gain, 0.05);
+  knock.fit.cost = 2900.0;
+  knock.fit.residual_count = 3000;
+  const auto other_at = [](double cost, double time_s) {
+    OtherMinimum m;
+    m.theta = Eigen::VectorXd::Constant(3, 0.01);
+    m.impulse_time_s = time_s;
+    m.cost = cost;
+    return m;
+  };
+  knock.fit.other_minima = {other_at(2900.0 + 0.5 * kCloseMinimum, 0.4),  // close: reported
+                            other_at(2900.0 + 2.0 * kCloseMinimum, 0.6),  // farther: not
+                            other_at(2900.0 + 0.1 * kSameMinimum, 0.8)};  // the same minimum
+  const Analysis a = ranked({none, knock});
+  REQUIRE(a.verdict.effect == Effect::impulse);
+  const Candidate& chosen = a.candidates[static_cast<std::size_t>(a.verdict.chosen)];
+  REQUIRE(chosen.alternatives.size() == 1);
+  CHECK(chosen.alternatives[0].cost_behind == Approx(0.5 * kCloseMinimum));
+  REQUIRE(a.notes.size() == 1);
+  CHECK(a.notes[0].find("another minimum") != std::string::npos);
+}

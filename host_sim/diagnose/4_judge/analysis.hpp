@@ -71,6 +71,15 @@ struct Candidate {
   bool evaluated = true;  // false: not applicable here (reason in note)
   std::string note;
   std::vector<Effect> indistinguishable;  // candidates the data cannot tell from this one
+  // Other minima of a searched parameter (the impulse time, the damping rotor) that fit
+  // about as well as the one the search kept (confidence.hpp, kCloseMinimum): their
+  // parameters and how much higher their training cost lies (negative: lower; the search
+  // keeps its choice, so that the verdict does not ride on which of two it found).
+  struct Alternative {
+    EffectParameters params;
+    double cost_behind = 0.0;
+  };
+  std::vector<Alternative> alternatives;
   // Session only: the effect parameters fitted without each flight (leave one flight out).
   std::vector<Eigen::VectorXd> heldout_theta;
   // Held-out predictions per flight and sample (each from the fold that did not see it).

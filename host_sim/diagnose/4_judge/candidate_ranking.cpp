@@ -136,6 +136,30 @@ double dispersion_of(const std::vector<Candidate>& all) {
   return std::max(1.0, dispersion < 1e299 ? dispersion : 1.0);
 }
 
+// The other minima of c's search that fit about as well as the one it kept, and better
+// than the step's reference by more than that (else both are the reference's fit, e.g. a
+// rotor too small or too loose to act, whose parameters wander without changing a thing).
+std::vector<Candidate::Alternative> close_minima(const Candidate& c, const Candidate& reference,
+                                                 const RankingContext& context) {
+  std::vector<Candidate::Alternative> out;
+  const int parameters = static_cast<int>(c.fit.theta.size() + 3 * c.fit.flights.size());
+  const double dispersion = std::max(1.0, c.fit.cost / std::max(1, c.fit.residual_count - parameters));
+  for (const OtherMinimum& m : c.fit.other_minima) {
+    const double behind = (m.cost - c.fit.cost) / dispersion;
+    const bool acts = (reference.fit.cost - m.cost) / dispersion > kCloseMinimum;
+    if (behind > kCloseMinimum || !acts || std::abs(behind) < kSameMinimum) continue;
+    Candidate::Alternative a;
+    a.cost_behind = behind;
+    if (context.nominal != nullptr && !c.fit.flights.empty()) {
+      EffectModel model = model_of(c.fit, *context.nominal, 0);
+      model.impulse_time_s = m.impulse_time_s;
+      a.params = effect_parameters(model, m.theta, c.effect);
+    }
+    out.push_back(a);
+  }
+  return out;
+}
+
 // Scores every candidate against `reference` and judges its parameters and physics.
 void score_candidates(std::vector<Candidate>& all, const Candidate& reference, const RankingContext& context,
                       double dispersion) {
@@ -154,6 +178,7 @@ void score_candidates(std::vector<Candidate>& all, const Candidate& reference, c
     c.shrink_da =
         reference.heldout_rms_da_deg > 0 ? 1.0 - c.heldout_rms_da_deg / reference.heldout_rms_da_deg : 0.0;
     if (c.reference) continue;
+    c.alternatives = close_minima(c, reference, context);
     c.identifiable = identifiable(c, context.mean_speed, context.duration_s);
     if (!c.identifiable && c.note.empty()) {
       c.note =
@@ -299,6 +324,7 @@ void rank_candidates(Analysis& analysis, const RankingContext& context) {
   }
   v.indistinguishable = step.beats_reference ? step.tied : std::vector<Effect>{};
   if (step.beats_reference) note_ties(v, *chosen, step.tied, all);
+  if (step.beats_reference) note_close_minima(analysis, *chosen);
   if (step.beats_reference && !chosen->identifiable) {
     v.confident = false;
     v.could_not_judge.push_back(std::string(effect_name(chosen->effect)) +

@@ -6,10 +6,23 @@
 #include <cstdio>
 #include <string>
 
+#include "diagnose/2_model/effect_descriptor.hpp"
+
 namespace aloft::host::diagnose {
 
 bool scores_tie(double behind, double behind_spread) {
   return std::abs(behind) <= std::max(kTieSpreads * behind_spread, kScoreRoundingTolerance);
+}
+
+void note_close_minima(Analysis& analysis, const Candidate& chosen) {
+  for (const Candidate::Alternative& a : chosen.alternatives) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  " fits about as well as the minimum kept (training chi-square %+.2f, within %.2f): ",
+                  a.cost_behind, kCloseMinimum);
+    analysis.notes.push_back(std::string(effect_name(chosen.effect)) + ": another minimum" + text +
+                             describe(chosen.effect).hooks.text(a.params));
+  }
 }
 
 void note_ties(Verdict& v, const Candidate& chosen, const std::vector<Effect>& tied,

@@ -44,6 +44,19 @@ constexpr double kTieSpreads = 2.0;
 // FMA/AVX2 libm (GLIBC_TUNABLES, tests/diagnose/same_verdict_every_cpu.sh) on the 70
 // withheld-effect flights; see docs/diagnose.md, "The same verdict on every CPU".
 constexpr double kScoreRoundingTolerance = 1.0;
+// Searches over a parameter with several minima (3_fit/effect_fit.cpp: the impulse time,
+// scanned over the whole flight and refined round the best two peaks; the damping rotor,
+// from a grid of 12 starts) keep the best, and report another minimum whose training
+// chi-square (over the fit's dispersion) lies within kCloseMinimum of it: 3.84 is the 95 %
+// point of chi-square with one degree of freedom, so each lies inside the other's 95 %
+// likelihood interval for the one searched parameter.
+constexpr double kCloseMinimum = 3.84;
+// Two minima whose costs agree within kSameMinimum are one: the same predictions reached
+// by parameters the data do not pin (a rotor too loose to turn with the body, whose size
+// then wanders); `identifiable` reports those. On the 70 withheld flights such pairs of
+// damping fits differ by 1e-11 to 1e-5, distinct minima by 0.01 or more.
+constexpr double kSameMinimum = 1e-3;
+
 // Whether a score `behind` another by this much (either sign), with this spread of the
 // difference, ties with it.
 bool scores_tie(double behind, double behind_spread);
@@ -52,6 +65,8 @@ bool scores_tie(double behind, double behind_spread);
 // the class within kScoreRoundingTolerance heads the verdict by the same order.
 // A verdict whose chosen candidate ties with ones outside its class (`tied`, found among
 // `candidates`) is not confident, one line each in could_not_judge.
+// A note for each close other minimum of the chosen candidate's search (kCloseMinimum).
+void note_close_minima(Analysis& analysis, const Candidate& chosen);
 void note_ties(Verdict& v, const Candidate& chosen, const std::vector<Effect>& tied,
                const std::vector<Candidate>& candidates);
 

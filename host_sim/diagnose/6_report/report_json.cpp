@@ -152,6 +152,12 @@ json analysis_json(const Analysis& a) {
       j["identifiable"] = c.identifiable;
       j["physical"] = c.physical;
       j["indistinguishable_from"] = names(c.indistinguishable);
+      json alternatives = json::array();
+      for (const Candidate::Alternative& alt : c.alternatives) {
+        alternatives.push_back(
+            {{"params", params_json(c.effect, alt.params)}, {"cost_behind", alt.cost_behind}});
+      }
+      j["alternatives"] = alternatives;
     } else {
       j["params"] = json::object();
       j["heldout_rms_da_deg"] = nullptr;
