@@ -108,29 +108,8 @@ json tensor_json(const TensorReport& t) {
       {"method", t.method}};
 }
 
-json analysis_json(const Analysis& a) {
-  json out;
-  if (a.tensor) out["tensor"] = tensor_json(*a.tensor);
-  out["baseline"] = {{"rms_da_deg", a.baseline.rms_da_deg}, {"rms_rel_err", a.baseline.rms_rel_err}};
-  json where;
-  where["onset_s"] = a.where.onset_s ? json(*a.where.onset_s) : json(nullptr);
-  where["dominant_axis"] = a.where.dominant_axis;
-  where["rms_gap_body_rad_s"] = json_vec(a.where.rms_gap_body_rad_s);
-  where["noise_floor_rad_s"] = json_vec(a.where.noise_floor);
-  where["gap_over_noise"] = a.where.gap_over_noise;
-  json slices = json::array();
-  for (const TimeSlice& s : a.where.slices) {
-    slices.push_back({{"from_s", s.from_s},
-                      {"to_s", s.to_s},
-                      {"rms_da_deg", s.rms_da_deg},
-                      {"rms_rel_err", s.rms_rel_err}});
-  }
-  where["gap_by_time"] = slices;
-  if (a.where.invariants) {
-    where["invariants"] = {{"kinetic_energy", invariant_json(a.where.invariants->energy)},
-                           {"angular_momentum", invariant_json(a.where.invariants->momentum)}};
-  }
-  out["where"] = where;
+// Every candidate of the first step, best first.
+json candidates_json(const Analysis& a) {
   json candidates = json::array();
   for (const Candidate& c : a.candidates) {
     json j;
@@ -167,7 +146,33 @@ json analysis_json(const Analysis& a) {
     if (!c.note.empty()) j["note"] = c.note;
     candidates.push_back(j);
   }
-  out["candidates"] = candidates;
+  return candidates;
+}
+
+json analysis_json(const Analysis& a) {
+  json out;
+  if (a.tensor) out["tensor"] = tensor_json(*a.tensor);
+  out["baseline"] = {{"rms_da_deg", a.baseline.rms_da_deg}, {"rms_rel_err", a.baseline.rms_rel_err}};
+  json where;
+  where["onset_s"] = a.where.onset_s ? json(*a.where.onset_s) : json(nullptr);
+  where["dominant_axis"] = a.where.dominant_axis;
+  where["rms_gap_body_rad_s"] = json_vec(a.where.rms_gap_body_rad_s);
+  where["noise_floor_rad_s"] = json_vec(a.where.noise_floor);
+  where["gap_over_noise"] = a.where.gap_over_noise;
+  json slices = json::array();
+  for (const TimeSlice& s : a.where.slices) {
+    slices.push_back({{"from_s", s.from_s},
+                      {"to_s", s.to_s},
+                      {"rms_da_deg", s.rms_da_deg},
+                      {"rms_rel_err", s.rms_rel_err}});
+  }
+  where["gap_by_time"] = slices;
+  if (a.where.invariants) {
+    where["invariants"] = {{"kinetic_energy", invariant_json(a.where.invariants->energy)},
+                           {"angular_momentum", invariant_json(a.where.invariants->momentum)}};
+  }
+  out["where"] = where;
+  out["candidates"] = candidates_json(a);
   const Verdict& v = a.verdict;
   json verdict;
   verdict["effect"] = effect_name(v.effect);
