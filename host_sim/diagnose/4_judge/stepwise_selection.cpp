@@ -1,6 +1,7 @@
 #include "diagnose/4_judge/stepwise_selection.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "diagnose/4_judge/practical_significance.hpp"
 
@@ -156,8 +157,14 @@ void describe_final_model(Analysis& analysis, const RankingContext& context,
     e.shrink = without > 0 ? 1.0 - current.heldout_rms_rel_err / without : 0.0;
     v.effects.push_back(e);
   }
+  // Most important first, by the shrink to 1e-6 (held-out errors agree to 4e-10 between
+  // libm builds; docs/diagnose.md, "The same verdict on every CPU"), then by step: the
+  // headline never rides on the last bits of two equal shrinks.
+  const auto rank = [](const VerdictEffect& e) { return std::llround(e.shrink * 1e6); };
   std::stable_sort(v.effects.begin(), v.effects.end(),
-                   [](const VerdictEffect& x, const VerdictEffect& y) { return x.shrink > y.shrink; });
+                   [&rank](const VerdictEffect& x, const VerdictEffect& y) {
+                     return rank(x) != rank(y) ? rank(x) > rank(y) : x.step < y.step;
+                   });
   v.effect = v.effects.front().effect;
   v.equivalent = v.effects.front().equivalent;
   v.indistinguishable = v.effects.front().indistinguishable;
