@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "common/parallel_for.hpp"
 #include "diagnose/2_model/effect_descriptor.hpp"
@@ -269,6 +271,71 @@ void walk_downhill(std::size_t& best, TryTime try_time) {
   }
 }
 
+// One quick fit of a search: where it was tried and what it reached.
+struct Trial {
+  std::size_t at = 0;  // impulse: the sample after the jump; a grid: the start's index
+  double cost = 0.0;
+  Eigen::VectorXd theta;
+  std::vector<Eigen::VectorXd> rates;
+};
+
+bool within_window(double cost, double best_cost) {
+  return cost - best_cost <= std::max(kOtherMinimumWindow, kOtherMinimumWindowShare * best_cost);
+}
+
+// A refined minimum of a search, and the impulse time it holds (impulse only).
+struct Refined {
+  LeastSquaresResult result;
+  double impulse_time_s = 0.0;
+};
+
+// Of the chosen refined minimum and another, the lower is kept and the other recorded.
+EffectFit keep_lower(Setup& setup, int p, Refined chosen, std::optional<Refined> other) {
+  if (other && other->result.cost < chosen.result.cost) std::swap(chosen, *other);
+  setup.impulse_time_s = chosen.impulse_time_s;
+  EffectFit fit = result_of(setup, chosen.result, p);
+  if (other) fit.other_minima.push_back({other->result.shared, other->impulse_time_s, other->result.cost});
+  return fit;
+}
+
+// The best quick fit more than 10 samples (the peaks' separation) from the chosen time,
+// refined at its time, when it came within the window.
+std::optional<Refined> other_impulse_time(Setup& setup, int p, const std::vector<Trial>& trials,
+                                          std::size_t best, double best_cost) {
+  const Trial* other = nullptr;
+  for (const Trial& t : trials) {
+    const bool far = t.at + 10 < best || best + 10 < t.at;
+    if (far && (other == nullptr || t.cost < other->cost)) other = &t;
+  }
+  if (other == nullptr || !within_window(other->cost, best_cost)) return std::nullopt;
+  const Flight& flight = *(*setup.data)[0].flight;
+  setup.impulse_time_s = 0.5 * (flight.time_s[other->at - 1] + flight.time_s[other->at]);
+  return Refined{minimise(problem_of(setup, p), other->theta, other->rates), setup.impulse_time_s};
+}
+
+// Two rotors are other minima when their log-size or log-rate differ by more than this
+// (a factor of two).
+constexpr double kDistinctRotor = 0.7;
+
+bool distinct_rotor(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return a.size() == b.size() && (a - b).cwiseAbs().maxCoeff() > kDistinctRotor;
+}
+
+// The best start of the damping grid that had reached another rotor than the chosen one,
+// refined, when it came within the window and stayed distinct.
+std::optional<Refined> other_rotor(const ArrowProblem& problem, const std::vector<Trial>& trials,
+                                   const Trial& best, const Eigen::VectorXd& chosen) {
+  const Trial* other = nullptr;
+  for (const Trial& t : trials) {
+    if (&t == &best || !distinct_rotor(t.theta, best.theta)) continue;
+    if (other == nullptr || t.cost < other->cost) other = &t;
+  }
+  if (other == nullptr || !within_window(other->cost, best.cost)) return std::nullopt;
+  LeastSquaresResult r = minimise(problem, other->theta, other->rates);
+  if (!distinct_rotor(r.shared, chosen)) return std::nullopt;
+  return Refined{std::move(r), 0.0};
+}
+
 EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
   const Flight& flight = *(*setup.data)[0].flight;
   const int p = static_cast<int>(setup.base_theta.size()) + 3;
@@ -285,11 +352,13 @@ EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
   // same jump and rates, so a few iterations settle it.
   Eigen::VectorXd best_theta = zero;
   std::vector<Eigen::VectorXd> best_rates = rates;
+  std::vector<Trial> trials;
   auto try_time = [&](std::size_t j, bool from_nominal) {
     if (j < 2 || j + 1 >= n || flight.time_s[j - 1] < flight.settling_until_s) return;
     setup.impulse_time_s = 0.5 * (flight.time_s[j - 1] + flight.time_s[j]);
     const LeastSquaresResult r = from_nominal ? minimise(problem_of(setup, p), zero, rates, quick)
                                               : minimise(problem_of(setup, p), best_theta, best_rates, quick);
+    trials.push_back({j, r.cost, r.shared, r.local});
     if (r.cost < best_cost) {
       best_cost = r.cost;
       best = j;
@@ -307,9 +376,10 @@ EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
   }
   walk_downhill(best, [&](long j) { try_time(static_cast<std::size_t>(std::max(0L, j)), false); });
   if (best == 0) best = flight.size() / 2;
+  std::optional<Refined> other = other_impulse_time(setup, p, trials, best, best_cost);
   setup.impulse_time_s = 0.5 * (flight.time_s[best - 1] + flight.time_s[best]);
-  const ArrowProblem problem = problem_of(setup, p);
-  return result_of(setup, minimise(problem, best_theta, best_rates), p);
+  Refined chosen{minimise(problem_of(setup, p), best_theta, best_rates), setup.impulse_time_s};
+  return keep_lower(setup, p, std::move(chosen), std::move(other));
 }
 
 }  // namespace
@@ -361,21 +431,21 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::ve
     LeastSquaresOptions quick;
     quick.max_iterations = 4;
     quick.normal_at_solution = false;  // only the costs are compared
-    double best = std::numeric_limits<double>::infinity();
-    std::vector<Eigen::VectorXd> best_rates = rates;
+    std::vector<Trial> trials;
     for (double fraction : {0.03, 0.1, 0.3}) {
       for (double rate : {3.0, 10.0, 30.0, 100.0}) {
         Eigen::VectorXd trial(2);
         trial << std::log(fraction / 0.9 / (1.0 - fraction / 0.9)), std::log(rate);
         const LeastSquaresResult r = minimise(problem, trial, rates, quick);
-        if (r.cost < best) {
-          best = r.cost;
-          theta = r.shared;
-          best_rates = r.local;
-        }
+        trials.push_back({trials.size(), r.cost, r.shared, r.local});
       }
     }
-    return result_of(setup, minimise(problem, theta, best_rates), p);
+    // The first of equal costs: the grid's order, not the last bits, breaks a tie.
+    const Trial& best = *std::min_element(trials.begin(), trials.end(),
+                                          [](const Trial& a, const Trial& b) { return a.cost < b.cost; });
+    Refined chosen{minimise(problem, best.theta, best.rates), 0.0};
+    std::optional<Refined> other = other_rotor(problem, trials, best, chosen.result.shared);
+    return keep_lower(setup, p, std::move(chosen), std::move(other));
   }
   return result_of(setup, minimise(problem, theta, rates), p);
 }

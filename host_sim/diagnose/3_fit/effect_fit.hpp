@@ -23,6 +23,22 @@ struct FlightState {
   double impulse_time_s = 0.0;  // impulse only
 };
 
+// Another minimum of a searched parameter (the impulse time, the damping rotor's start),
+// refined as the chosen one is: its parameters, impulse time and training cost. Of two
+// refined minima the search keeps the lower; the judging (4_judge/confidence.hpp,
+// kCloseMinimum) says whether the other is close enough to report.
+struct OtherMinimum {
+  Eigen::VectorXd theta;
+  double impulse_time_s = 0.0;
+  double cost = 0.0;
+};
+
+// A search refines another minimum only when a quick fit there came within this much of
+// the chosen one's cost (chi-square; or this share of that cost on data whose misfit
+// exceeds the noise): a budget, not a judgement.
+constexpr double kOtherMinimumWindow = 50.0;
+constexpr double kOtherMinimumWindowShare = 0.05;
+
 struct EffectFit {
   Effect effect = Effect::none;
   std::vector<Effect> base;  // a compound model: effects fitted with `effect` (flight_model.hpp)
@@ -36,6 +52,7 @@ struct EffectFit {
   // The same errors' full covariance (uninformed directions left out: their variance is
   // not bounded by the data).
   Eigen::MatrixXd theta_covariance;
+  std::vector<OtherMinimum> other_minima;  // searched effects only
 };
 
 // The model of `fit` for flight `index` (impulse time included).

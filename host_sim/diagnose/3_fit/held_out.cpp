@@ -4,8 +4,10 @@
 
 namespace aloft::host::diagnose {
 
+std::size_t chunk_length(std::size_t sample_count) { return std::max<std::size_t>(5, sample_count / 20); }
+
 Folds interleaved_folds(std::size_t sample_count) {
-  const std::size_t chunk = std::max<std::size_t>(5, sample_count / 20);
+  const std::size_t chunk = chunk_length(sample_count);
   Folds folds;
   for (int f = 0; f < 2; ++f) {
     folds.train[f].assign(sample_count, 0);

@@ -19,6 +19,10 @@ struct Folds {
 
 Folds interleaved_folds(std::size_t sample_count);
 
+// The length of one chunk of the interleaved folds, in samples: max(5, n / 20). Also the
+// unit over which a held-out score's spread is measured (4_judge/score_spread.hpp).
+std::size_t chunk_length(std::size_t sample_count);
+
 SampleMask all_samples(std::size_t sample_count);
 
 // The first `fraction` of the flight (at least `minimum` samples).

@@ -58,6 +58,11 @@ struct Candidate {
   double heldout_rms_da_deg = 0.0;
   double heldout_rms_rel_err = 0.0;
   double score = 0.0;
+  // The held-out score's spread (4_judge/score_spread.hpp: over the folds' chunks, in
+  // score units), and how far this candidate's score lies behind its step's chosen one
+  // (negative: ahead of it) with the spread of that difference.
+  double score_spread = 0.0;
+  double score_behind = 0.0, score_behind_spread = 0.0;
   double shrink = 0.0;                 // 1 - rel_err(with) / rel_err(none), held out
   double shrink_da = 0.0;              // the same for DA
   double reference_rms_rel_err = 0.0;  // held out, of the model this candidate is ranked against
@@ -66,6 +71,15 @@ struct Candidate {
   bool evaluated = true;  // false: not applicable here (reason in note)
   std::string note;
   std::vector<Effect> indistinguishable;  // candidates the data cannot tell from this one
+  // Other minima of a searched parameter (the impulse time, the damping rotor) that fit
+  // about as well as the one the search kept (confidence.hpp, kCloseMinimum): their
+  // parameters and how much higher their training cost lies (negative: lower; the search
+  // keeps its choice, so that the verdict does not ride on which of two it found).
+  struct Alternative {
+    EffectParameters params;
+    double cost_behind = 0.0;
+  };
+  std::vector<Alternative> alternatives;
   // Session only: the effect parameters fitted without each flight (leave one flight out).
   std::vector<Eigen::VectorXd> heldout_theta;
   // Held-out predictions per flight and sample (each from the fold that did not see it).
@@ -78,6 +92,7 @@ struct Candidate {
 struct VerdictEffect {
   Effect effect = Effect::none;
   std::vector<Effect> equivalent;
+  std::vector<Effect> indistinguishable;   // ties outside the class at its step (ModelStep)
   EffectParameters params;                 // from the final model's fit
   int step = 0;                            // the step it joined at (1: first)
   double heldout_rms_rel_err_after = 0.0;  // of the model as it stood after that step
@@ -93,6 +108,8 @@ struct ModelStep {
   std::vector<Candidate> candidates;  // best first; the reference is the starting model
   int added = -1;                     // index into candidates, -1: nothing joined
   std::vector<Effect> equivalent;     // the added effect's class at this step
+  // Additions outside that class whose score ties with it (confidence.hpp, ties).
+  std::vector<Effect> indistinguishable;
   double dispersion = 1.0;
   double heldout_rms_rel_err_before = 0.0, heldout_rms_rel_err_after = 0.0;
   double heldout_rms_da_before_deg = 0.0, heldout_rms_da_after_deg = 0.0;
@@ -102,6 +119,9 @@ struct ModelStep {
 struct Verdict {
   Effect effect = Effect::none;
   std::vector<Effect> equivalent;
+  // Candidates outside the class whose held-out score ties with the verdict's
+  // (confidence.hpp, ties): the data cannot choose between them, so not confident.
+  std::vector<Effect> indistinguishable;
   int chosen = -1;  // index into Analysis::candidates
   double heldout_rms_da_before_deg = 0.0, heldout_rms_da_after_deg = 0.0;
   double heldout_rms_rel_err_before = 0.0, heldout_rms_rel_err_after = 0.0;

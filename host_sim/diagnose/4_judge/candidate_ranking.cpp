@@ -8,6 +8,7 @@
 #include "aloft/deviation.hpp"
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/4_judge/moment_scale_equivalence.hpp"
+#include "diagnose/4_judge/score_spread.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -113,24 +114,55 @@ bool one_way_equivalence_allows(const Candidate& best, const Candidate& other,
          scale_mimicking_moments(context.nominal->principal_moments, best.params.principal_kg_m2).has_value();
 }
 
-}  // namespace
+bool eligible(const Candidate& c) {
+  return c.evaluated && c.physical && !c.reference && c.effect != Effect::none;
+}
 
-StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context, double margin) {
-  StepRanking out;
-  const auto ref_it = std::find_if(all.begin(), all.end(), [](const Candidate& c) { return c.reference; });
-  const Candidate reference = ref_it != all.end() ? *ref_it : Candidate{};
-  // Overdispersion: when even the best candidate leaves a held-out gap far beyond the
-  // noise floor (real data: the models are approximations and the phone's noise is not
-  // white), chi-square differences overstate the evidence by that factor. Dividing by the
-  // best reduced chi-square keeps the penalty and the margin meaningful (quasi-likelihood).
+bool contains(const std::vector<Effect>& list, Effect e) {
+  return std::find(list.begin(), list.end(), e) != list.end();
+}
+
+// Overdispersion: when even the best candidate leaves a held-out gap far beyond the
+// noise floor (real data: the models are approximations and the phone's noise is not
+// white), chi-square differences overstate the evidence by that factor. Dividing by the
+// best reduced chi-square keeps the penalty and the margin meaningful (quasi-likelihood).
+double dispersion_of(const std::vector<Candidate>& all) {
   double dispersion = 1e300;
   for (const Candidate& c : all) {
     if (c.evaluated && c.heldout_residuals > 0) {
       dispersion = std::min(dispersion, c.heldout_chi_square / c.heldout_residuals);
     }
   }
-  dispersion = std::max(1.0, dispersion < 1e299 ? dispersion : 1.0);
-  out.dispersion = dispersion;
+  return std::max(1.0, dispersion < 1e299 ? dispersion : 1.0);
+}
+
+// The other minima of c's search that fit about as well as the one it kept, and better
+// than the step's reference by more than that (else both are the reference's fit, e.g. a
+// rotor too small or too loose to act, whose parameters wander without changing a thing).
+std::vector<Candidate::Alternative> close_minima(const Candidate& c, const Candidate& reference,
+                                                 const RankingContext& context) {
+  std::vector<Candidate::Alternative> out;
+  const int parameters = static_cast<int>(c.fit.theta.size() + 3 * c.fit.flights.size());
+  const double dispersion = std::max(1.0, c.fit.cost / std::max(1, c.fit.residual_count - parameters));
+  for (const OtherMinimum& m : c.fit.other_minima) {
+    const double behind = (m.cost - c.fit.cost) / dispersion;
+    const bool acts = (reference.fit.cost - m.cost) / dispersion > kCloseMinimum;
+    if (behind > kCloseMinimum || !acts || std::abs(behind) < kSameMinimum) continue;
+    Candidate::Alternative a;
+    a.cost_behind = behind;
+    if (context.nominal != nullptr && !c.fit.flights.empty()) {
+      EffectModel model = model_of(c.fit, *context.nominal, 0);
+      model.impulse_time_s = m.impulse_time_s;
+      a.params = effect_parameters(model, m.theta, c.effect);
+    }
+    out.push_back(a);
+  }
+  return out;
+}
+
+// Scores every candidate against `reference` and judges its parameters and physics.
+void score_candidates(std::vector<Candidate>& all, const Candidate& reference, const RankingContext& context,
+                      double dispersion) {
   for (Candidate& c : all) {
     if (!c.evaluated) {
       c.score = 1e300;
@@ -146,6 +178,7 @@ StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context
     c.shrink_da =
         reference.heldout_rms_da_deg > 0 ? 1.0 - c.heldout_rms_da_deg / reference.heldout_rms_da_deg : 0.0;
     if (c.reference) continue;
+    c.alternatives = close_minima(c, reference, context);
     c.identifiable = identifiable(c, context.mean_speed, context.duration_s);
     if (!c.identifiable && c.note.empty()) {
       c.note =
@@ -154,38 +187,112 @@ StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context
     }
     judge_physics(c);
   }
-  std::stable_sort(all.begin(), all.end(),
-                   [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
+}
+
+// The effects the data cannot tell apart from `head`: its class that always holds, and
+// those that explain the gap as well (score within the margin) with practically the same
+// predictions (< 0.3 sigma). `head` first, the rest in the registry's order.
+std::vector<Effect> class_of(const std::vector<Candidate>& all, const Candidate& head,
+                             const RankingContext& context, double margin, double dispersion) {
+  std::vector<Effect> out = always_equivalent(head.effect, context.gyro_input);
+  for (const Candidate& c : all) {
+    if (&c == &head || !c.evaluated || c.reference || c.effect == Effect::none) continue;
+    if (c.score < head.score + margin && one_way_equivalence_allows(head, c, context) &&
+        prediction_distance(c, head, context.flights, context.inverse_sigma) < 0.3 * std::sqrt(dispersion)) {
+      if (!contains(out, c.effect)) out.push_back(c.effect);
+    }
+  }
+  std::sort(out.begin() + 1, out.end());
+  return out;
+}
+
+// Every candidate's spread, and its score behind `head` with the spread of that difference.
+void measure_against(std::vector<Candidate>& all, std::size_t head,
+                     const std::vector<std::vector<double>>& chunks, double dispersion) {
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    Candidate& c = all[i];
+    if (!c.evaluated) continue;
+    c.score_spread = spread_of_sum(chunks[i]) / dispersion;
+    c.score_behind = c.score - all[head].score;
+    c.score_behind_spread = spread_of_difference(chunks[i], chunks[head]) / dispersion;
+  }
+}
+
+// Who heads a tie (confidence.hpp): of the effects one with best both ways
+// (always_equivalent, e.g. inertia_axes and sensor_misalignment from a gyro) that tie with
+// it, and of any candidate within the rounding tolerance, the first in the registry.
+// Not the classes the data finds (score within the margin, close predictions): on the
+// withheld flights those hold wrong moments beside a misalignment, and the registry's
+// order named the moments there. Nor a class that holds one way only (a clock drift is a
+// uniform gyro scale, not the reverse): the registry would name the general model where
+// its special case fits as well (imu_clock_drift_2). Needs measure_against(best).
+std::size_t fixed_order_headline(const std::vector<Candidate>& all, std::size_t best, bool gyro_input) {
+  const std::vector<Effect> best_class = always_equivalent(all[best].effect, gyro_input);
+  std::size_t head = best;
   for (std::size_t i = 0; i < all.size(); ++i) {
     const Candidate& c = all[i];
-    if (c.reference) out.reference = static_cast<int>(i);
-    if (out.best < 0 && c.evaluated && c.physical && !c.reference && c.effect != Effect::none) {
-      out.best = static_cast<int>(i);
-    }
+    if (!eligible(c)) continue;
+    const bool one =
+        contains(best_class, c.effect) && contains(always_equivalent(c.effect, gyro_input), all[best].effect);
+    const bool tie = one ? scores_tie(c.score_behind, c.score_behind_spread)
+                         : std::abs(c.score_behind) <= kScoreRoundingTolerance;
+    if (tie && c.effect < all[head].effect) head = i;
   }
-  if (out.best < 0 || out.reference < 0) return out;
-  const Candidate& best = all[static_cast<std::size_t>(out.best)];
-  out.beats_reference = best.score < all[static_cast<std::size_t>(out.reference)].score - margin;
-  out.equivalent = always_equivalent(best.effect, context.gyro_input);
-  // Effects the data cannot tell apart from the best one here: they explain the gap as
-  // well (score within the margin) with practically the same predictions (< 0.3 sigma).
-  for (const Candidate& c : all) {
-    if (&c == &best || !c.evaluated || c.reference || c.effect == Effect::none) continue;
-    if (c.score < best.score + margin && one_way_equivalence_allows(best, c, context) &&
-        prediction_distance(c, best, context.flights, context.inverse_sigma) < 0.3 * std::sqrt(dispersion)) {
-      if (std::find(out.equivalent.begin(), out.equivalent.end(), c.effect) == out.equivalent.end()) {
-        out.equivalent.push_back(c.effect);
-      }
-    }
-  }
-  if (out.beats_reference) {
-    for (Candidate& c : all) {
-      if (std::find(out.equivalent.begin(), out.equivalent.end(), c.effect) == out.equivalent.end()) continue;
+  return head;
+}
+
+// The class's members name each other; a tie outside the class and the headline name
+// each other.
+void mark_indistinguishable(std::vector<Candidate>& all, const StepRanking& out) {
+  Candidate& head = all[static_cast<std::size_t>(out.best)];
+  for (Candidate& c : all) {
+    if (contains(out.equivalent, c.effect)) {
       for (Effect e : out.equivalent) {
         if (e != c.effect) c.indistinguishable.push_back(e);
       }
+    } else if (contains(out.tied, c.effect)) {
+      c.indistinguishable.push_back(head.effect);
     }
   }
+  for (Effect e : out.tied) head.indistinguishable.push_back(e);
+}
+
+}  // namespace
+
+StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context, double margin) {
+  StepRanking out;
+  const auto ref_it = std::find_if(all.begin(), all.end(), [](const Candidate& c) { return c.reference; });
+  const Candidate reference = ref_it != all.end() ? *ref_it : Candidate{};
+  const double dispersion = dispersion_of(all);
+  out.dispersion = dispersion;
+  score_candidates(all, reference, context, dispersion);
+  std::stable_sort(all.begin(), all.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (all[i].reference) out.reference = static_cast<int>(i);
+    if (out.best < 0 && eligible(all[i])) out.best = static_cast<int>(i);
+  }
+  if (out.best < 0 || out.reference < 0) return out;
+  const std::size_t best = static_cast<std::size_t>(out.best);
+  out.beats_reference = all[best].score < all[static_cast<std::size_t>(out.reference)].score - margin;
+  std::vector<std::vector<double>> chunks;
+  for (const Candidate& c : all)
+    chunks.push_back(chunk_chi_squares(c, context.flights, context.inverse_sigma));
+  measure_against(all, best, chunks, dispersion);
+  out.equivalent = class_of(all, all[best], context, margin, dispersion);
+  const std::size_t head = fixed_order_headline(all, best, context.gyro_input);
+  if (head != best) {
+    measure_against(all, head, chunks, dispersion);
+    out.equivalent = class_of(all, all[head], context, margin, dispersion);
+  }
+  out.best = static_cast<int>(head);
+  for (const Candidate& c : all) {
+    if (eligible(c) && !contains(out.equivalent, c.effect) &&
+        scores_tie(c.score_behind, c.score_behind_spread))
+      out.tied.push_back(c.effect);
+  }
+  std::sort(out.tied.begin(), out.tied.end());
+  if (out.beats_reference) mark_indistinguishable(all, out);
   return out;
 }
 
@@ -215,6 +322,9 @@ void rank_candidates(Analysis& analysis, const RankingContext& context) {
     v.heldout_rms_da_after_deg = chosen->heldout_rms_da_deg;
     v.heldout_rms_rel_err_after = chosen->heldout_rms_rel_err;
   }
+  v.indistinguishable = step.beats_reference ? step.tied : std::vector<Effect>{};
+  if (step.beats_reference) note_ties(v, *chosen, step.tied, all);
+  if (step.beats_reference) note_close_minima(analysis, *chosen);
   if (step.beats_reference && !chosen->identifiable) {
     v.confident = false;
     v.could_not_judge.push_back(std::string(effect_name(chosen->effect)) +

@@ -35,12 +35,17 @@ struct RankingContext {
 // `reference` (the model the step starts from), sorts best first, and picks the best
 // physical candidate if it beats the reference by more than `margin`, with the effects
 // the data cannot tell from it (score within the margin, predictions within 0.3 sigma).
+// Ties (confidence.hpp): members of that class whose scores tie are named in the
+// registry's order, so `best` is the first of them in the registry, not the one whose fit
+// ended a bit lower; candidates outside the class that tie with it are `tied`.
+// Fills every evaluated candidate's score_spread, score_behind and score_behind_spread.
 struct StepRanking {
   double dispersion = 1.0;
   int reference = -1;  // indices into the sorted `all`
   int best = -1;
   bool beats_reference = false;
-  std::vector<Effect> equivalent;  // of `best`, itself first
+  std::vector<Effect> equivalent;  // of `best`, itself first, the rest in registry order
+  std::vector<Effect> tied;        // outside the class, in registry order
 };
 StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context, double margin);
 

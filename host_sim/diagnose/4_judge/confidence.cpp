@@ -1,10 +1,46 @@
 // The two confidence judgements of confidence.hpp.
 #include "diagnose/4_judge/confidence.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
+#include "diagnose/2_model/effect_descriptor.hpp"
+
 namespace aloft::host::diagnose {
+
+bool scores_tie(double behind, double behind_spread) {
+  return std::abs(behind) <= std::max(kTieSpreads * behind_spread, kScoreRoundingTolerance);
+}
+
+void note_close_minima(Analysis& analysis, const Candidate& chosen) {
+  for (const Candidate::Alternative& a : chosen.alternatives) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  " fits about as well as the minimum kept (training chi-square %+.2f, within %.2f): ",
+                  a.cost_behind, kCloseMinimum);
+    analysis.notes.push_back(std::string(effect_name(chosen.effect)) + ": another minimum" + text +
+                             describe(chosen.effect).hooks.text(a.params));
+  }
+}
+
+void note_ties(Verdict& v, const Candidate& chosen, const std::vector<Effect>& tied,
+               const std::vector<Candidate>& candidates) {
+  for (Effect e : tied) {
+    const auto other = std::find_if(candidates.begin(), candidates.end(),
+                                    [e](const Candidate& c) { return c.effect == e && c.evaluated; });
+    if (other == candidates.end()) continue;
+    v.confident = false;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "%s and %s are indistinguishable here: their held-out scores differ by %.1f, within "
+                  "%.0f x the spread of that difference (%.1f) or %.1f",
+                  effect_name(chosen.effect), effect_name(e), std::abs(other->score_behind), kTieSpreads,
+                  other->score_behind_spread, kScoreRoundingTolerance);
+    v.could_not_judge.push_back(text);
+  }
+}
 
 void judge_confidence(Analysis& analysis) {
   Verdict& v = analysis.verdict;

@@ -30,6 +30,46 @@ constexpr std::size_t kMinimumSamples = 20;
 constexpr double kPenaltyPerParameter = 4.0;
 constexpr double kVerdictMargin = 25.0;
 
+// Ties (candidate_ranking.cpp, rank_step). Two candidates whose held-out scores differ by
+// no more than kTieSpreads times the spread of that difference (score_spread.hpp: the
+// chunk-by-chunk differences of their held-out chi-square) are indistinguishable: both are
+// named, the verdict is not confident, and the report says why. k = 2: a difference
+// within two standard errors is one a two-sided test at about 5 % cannot tell from zero
+// (the chunks' differences are close to normal once summed over ~20 chunks).
+constexpr double kTieSpreads = 2.0;
+// Scores closer than this are equal whatever their spread: two fits of one class (e.g.
+// inertia_axes and sensor_misalignment from a gyro, the same predictions) differ only by
+// where each fit stopped and by the last bits of libm's sin/exp/pow, which glibc picks by
+// CPU. Measured: the largest difference of a candidate's score between the SSE2 and the
+// FMA/AVX2 libm (GLIBC_TUNABLES, tests/diagnose/same_verdict_every_cpu.sh) on the 70
+// withheld-effect flights; see docs/diagnose.md, "The same verdict on every CPU".
+constexpr double kScoreRoundingTolerance = 1.0;
+// Searches over a parameter with several minima (3_fit/effect_fit.cpp: the impulse time,
+// scanned over the whole flight and refined round the best two peaks; the damping rotor,
+// from a grid of 12 starts) keep the best, and report another minimum whose training
+// chi-square (over the fit's dispersion) lies within kCloseMinimum of it: 3.84 is the 95 %
+// point of chi-square with one degree of freedom, so each lies inside the other's 95 %
+// likelihood interval for the one searched parameter.
+constexpr double kCloseMinimum = 3.84;
+// Two minima whose costs agree within kSameMinimum are one: the same predictions reached
+// by parameters the data do not pin (a rotor too loose to turn with the body, whose size
+// then wanders); `identifiable` reports those. On the 70 withheld flights such pairs of
+// damping fits differ by 1e-11 to 1e-5, distinct minima by 0.01 or more.
+constexpr double kSameMinimum = 1e-3;
+
+// Whether a score `behind` another by this much (either sign), with this spread of the
+// difference, ties with it.
+bool scores_tie(double behind, double behind_spread);
+// Within an equivalence class, tied members are named in one fixed order, the registry's
+// (2_model/effects/effect_list.def), whatever fit ended a bit lower; a candidate outside
+// the class within kScoreRoundingTolerance heads the verdict by the same order.
+// A verdict whose chosen candidate ties with ones outside its class (`tied`, found among
+// `candidates`) is not confident, one line each in could_not_judge.
+// A note for each close other minimum of the chosen candidate's search (kCloseMinimum).
+void note_close_minima(Analysis& analysis, const Candidate& chosen);
+void note_ties(Verdict& v, const Candidate& chosen, const std::vector<Effect>& tied,
+               const std::vector<Candidate>& candidates);
+
 // A stepwise addition must shrink the held-out relative error by at least this: a real
 // second cause takes a visible share of what is left, a model's small misfit of the first
 // does not. Chosen with the stepwise selection (3086d66); the closest measured case since

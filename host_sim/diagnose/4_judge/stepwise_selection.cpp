@@ -1,6 +1,7 @@
 #include "diagnose/4_judge/stepwise_selection.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "diagnose/4_judge/practical_significance.hpp"
 
@@ -76,6 +77,7 @@ ModelStep first_step(const Analysis& a) {
   if (v.effect != Effect::none && v.chosen >= 0) {
     step.added = v.chosen;
     step.equivalent = v.equivalent;
+    step.indistinguishable = v.indistinguishable;
     step.shrink = a.candidates[static_cast<std::size_t>(v.chosen)].shrink;
   }
   return step;
@@ -109,6 +111,8 @@ bool next_step(Analysis& a, const RankingContext& context, const CandidateEvalua
     const Candidate& best = step.candidates[static_cast<std::size_t>(r.best)];
     step.added = r.best;
     step.equivalent = r.equivalent;
+    step.indistinguishable = r.tied;
+    note_ties(a.verdict, best, r.tied, step.candidates);
     step.heldout_rms_rel_err_after = best.heldout_rms_rel_err;
     step.heldout_rms_da_after_deg = best.heldout_rms_da_deg;
     step.shrink = best.shrink;
@@ -137,6 +141,7 @@ void describe_final_model(Analysis& analysis, const RankingContext& context,
     VerdictEffect e;
     e.effect = joined.effect;
     e.equivalent = s.equivalent;
+    e.indistinguishable = s.indistinguishable;
     e.step = step_number;
     e.params =
         context.nominal != nullptr ? effect_parameters(model, current.fit.theta, e.effect) : joined.params;
@@ -152,10 +157,17 @@ void describe_final_model(Analysis& analysis, const RankingContext& context,
     e.shrink = without > 0 ? 1.0 - current.heldout_rms_rel_err / without : 0.0;
     v.effects.push_back(e);
   }
+  // Most important first, by the shrink to 1e-6 (held-out errors agree to 4e-10 between
+  // libm builds; docs/diagnose.md, "The same verdict on every CPU"), then by step: the
+  // headline never rides on the last bits of two equal shrinks.
+  const auto rank = [](const VerdictEffect& e) { return std::llround(e.shrink * 1e6); };
   std::stable_sort(v.effects.begin(), v.effects.end(),
-                   [](const VerdictEffect& x, const VerdictEffect& y) { return x.shrink > y.shrink; });
+                   [&rank](const VerdictEffect& x, const VerdictEffect& y) {
+                     return rank(x) != rank(y) ? rank(x) > rank(y) : x.step < y.step;
+                   });
   v.effect = v.effects.front().effect;
   v.equivalent = v.effects.front().equivalent;
+  v.indistinguishable = v.effects.front().indistinguishable;
   for (std::size_t i = 0; i < analysis.candidates.size(); ++i) {
     if (analysis.candidates[i].effect == v.effect && analysis.candidates[i].base.empty())
       v.chosen = static_cast<int>(i);
@@ -186,6 +198,7 @@ void select_stepwise(Analysis& analysis, const RankingContext& context, const Ca
                              " beats the noise but is too small to matter: " + why);
     v.effect = Effect::none;
     v.equivalent = {Effect::none};
+    v.indistinguishable.clear();
     v.could_not_judge.clear();
     if (none != analysis.candidates.end()) {
       v.chosen = static_cast<int>(none - analysis.candidates.begin());

@@ -45,6 +45,7 @@ json verdict_effects_json(const Verdict& v) {
   for (const VerdictEffect& e : v.effects) {
     out.push_back({{"effect", effect_name(e.effect)},
                    {"equivalent", names(e.equivalent)},
+                   {"indistinguishable_from", names(e.indistinguishable)},
                    {"params", params_json(e.effect, e.params)},
                    {"heldout_rms_rel_err_after", e.heldout_rms_rel_err_after},
                    {"heldout_rms_da_after_deg", e.heldout_rms_da_after_deg},
@@ -68,6 +69,7 @@ json steps_json(const Analysis& a) {
         {"added", s.added >= 0 ? json(effect_name(candidates[static_cast<std::size_t>(s.added)].effect))
                                : json(nullptr)},
         {"equivalent", names(s.equivalent)},
+        {"indistinguishable_from", names(s.indistinguishable)},
         {"heldout_rms_rel_err_before", s.heldout_rms_rel_err_before},
         {"heldout_rms_rel_err_after", s.heldout_rms_rel_err_after},
         {"heldout_rms_da_before_deg", s.heldout_rms_da_before_deg},
@@ -81,6 +83,9 @@ json steps_json(const Analysis& a) {
                          {"heldout_rms_rel_err", c.heldout_rms_rel_err},
                          {"shrink", c.shrink},
                          {"score", c.score},
+                         {"score_spread", c.score_spread},
+                         {"score_behind", c.score_behind},
+                         {"score_behind_spread", c.score_behind_spread},
                          {"physical", c.physical}});
       }
       step["candidates"] = tried;
@@ -101,6 +106,47 @@ json tensor_json(const TensorReport& t) {
       {"ratios", {std::string("I") + axis[1] + "/I" + axis[0], std::string("I") + axis[2] + "/I" + axis[0]}},
       {"flights", t.flights},
       {"method", t.method}};
+}
+
+// Every candidate of the first step, best first.
+json candidates_json(const Analysis& a) {
+  json candidates = json::array();
+  for (const Candidate& c : a.candidates) {
+    json j;
+    j["effect"] = effect_name(c.effect);
+    j["evaluated"] = c.evaluated;
+    if (c.evaluated) {
+      j["params"] = params_json(c.effect, c.params);
+      j["heldout_rms_da_deg"] = c.heldout_rms_da_deg;
+      j["heldout_rms_rel_err"] = c.heldout_rms_rel_err;
+      j["shrink"] = c.shrink;
+      j["shrink_da"] = c.shrink_da;
+      j["heldout_chi_square_per_residual"] =
+          c.heldout_residuals ? c.heldout_chi_square / c.heldout_residuals : 0.0;
+      j["parameter_count"] = effect_penalty_count(c.effect);
+      j["score"] = c.score;
+      j["score_spread"] = c.score_spread;
+      j["score_behind"] = c.score_behind;
+      j["score_behind_spread"] = c.score_behind_spread;
+      j["identifiable"] = c.identifiable;
+      j["physical"] = c.physical;
+      j["indistinguishable_from"] = names(c.indistinguishable);
+      json alternatives = json::array();
+      for (const Candidate::Alternative& alt : c.alternatives) {
+        alternatives.push_back(
+            {{"params", params_json(c.effect, alt.params)}, {"cost_behind", alt.cost_behind}});
+      }
+      j["alternatives"] = alternatives;
+    } else {
+      j["params"] = json::object();
+      j["heldout_rms_da_deg"] = nullptr;
+      j["heldout_rms_rel_err"] = nullptr;
+      j["shrink"] = nullptr;
+    }
+    if (!c.note.empty()) j["note"] = c.note;
+    candidates.push_back(j);
+  }
+  return candidates;
 }
 
 json analysis_json(const Analysis& a) {
@@ -126,38 +172,12 @@ json analysis_json(const Analysis& a) {
                            {"angular_momentum", invariant_json(a.where.invariants->momentum)}};
   }
   out["where"] = where;
-  json candidates = json::array();
-  for (const Candidate& c : a.candidates) {
-    json j;
-    j["effect"] = effect_name(c.effect);
-    j["evaluated"] = c.evaluated;
-    if (c.evaluated) {
-      j["params"] = params_json(c.effect, c.params);
-      j["heldout_rms_da_deg"] = c.heldout_rms_da_deg;
-      j["heldout_rms_rel_err"] = c.heldout_rms_rel_err;
-      j["shrink"] = c.shrink;
-      j["shrink_da"] = c.shrink_da;
-      j["heldout_chi_square_per_residual"] =
-          c.heldout_residuals ? c.heldout_chi_square / c.heldout_residuals : 0.0;
-      j["parameter_count"] = effect_penalty_count(c.effect);
-      j["score"] = c.score;
-      j["identifiable"] = c.identifiable;
-      j["physical"] = c.physical;
-      j["indistinguishable_from"] = names(c.indistinguishable);
-    } else {
-      j["params"] = json::object();
-      j["heldout_rms_da_deg"] = nullptr;
-      j["heldout_rms_rel_err"] = nullptr;
-      j["shrink"] = nullptr;
-    }
-    if (!c.note.empty()) j["note"] = c.note;
-    candidates.push_back(j);
-  }
-  out["candidates"] = candidates;
+  out["candidates"] = candidates_json(a);
   const Verdict& v = a.verdict;
   json verdict;
   verdict["effect"] = effect_name(v.effect);
   verdict["equivalent"] = names(v.equivalent);
+  verdict["indistinguishable_from"] = names(v.indistinguishable);
   verdict["params"] = model_params_json(v);
   verdict["heldout_rms_da_before_deg"] = v.heldout_rms_da_before_deg;
   verdict["heldout_rms_da_after_deg"] = v.heldout_rms_da_after_deg;
@@ -206,6 +226,11 @@ std::string analysis_summary(const Analysis& a) {
     out << " (indistinguishable here from";
     for (std::size_t i = 1; i < v.equivalent.size(); ++i) out << " " << effect_name(v.equivalent[i]);
     out << ")";
+  }
+  if (!v.indistinguishable.empty()) {
+    out << " (tied with";
+    for (Effect e : v.indistinguishable) out << " " << effect_name(e);
+    out << ": the data cannot choose)";
   }
   if (!v.effects.empty()) {
     out << ": " << params_text(v.effects.front().effect, v.effects.front().params) << "\n";
