@@ -2,8 +2,8 @@
 //   make_fifo_throw BODY.json IMU.csv OUT.cpp OUT.bin
 // Each CSV sample (read as `aloft replay --imu` reads it) becomes raw counts (±16 g:
 // 2048 LSB/g; ±2000 °/s: 16.4 LSB/(°/s), rounded, clamped to ±32767) and a packet 3 made
-// by the datasheet encoder (tests/core/icm42688p_packet_encoder.hpp). The file's stamps
-// are those the fake chip (tests/core/fake_icm42688p.hpp) gives sample k after the
+// by the datasheet encoder (port/fakes/icm42688p_packet_encoder.hpp). The file's stamps
+// are those the fake chip (port/fakes/fake_icm42688p.hpp) gives sample k after the
 // driver's bring-up: 0xF000 + (k + 1) periods of 1 µs ticks, wrapping at 16 bits.
 #include <cinttypes>
 #include <cmath>
