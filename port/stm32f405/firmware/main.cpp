@@ -139,7 +139,7 @@ ALOFT_COLD void report_finished_flights() {
   ReportWriter out;
   aloft::FlightResult<float> flight;
   while (pipeline->take_finished_flight(flight)) {
-    aloft_replay_example::write_flight_lines(out, flight, 0);
+    aloft_flight_lines::write_flight_lines(out, flight, 0);
     store_record(flight);
   }
 }
