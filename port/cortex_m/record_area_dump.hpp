@@ -1,7 +1,7 @@
 // Flight records on a firmware that runs under QEMU or a debugger: store a finished
 // flight in the record ring, and write the whole record area out to a host file by
 // semihosting, for `aloft records` to read (the end-to-end test of issue 23). On QEMU the
-// block device is the RAM fake (tests/core/fake_flash.hpp: no cut scheduled, it is a
+// block device is the RAM fake (port/fakes/fake_flash.hpp: no cut scheduled, it is a
 // plain NOR flash in RAM), since QEMU does not model the STM32 flash interface.
 #pragma once
 

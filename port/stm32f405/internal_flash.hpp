@@ -11,7 +11,7 @@
 // locked again after every operation.
 //
 // QEMU's netduinoplus2 does not model the flash interface: under QEMU the firmware uses
-// the RAM fake (tests/core/fake_flash.hpp); this driver has been compiled for the
+// the RAM fake (port/fakes/fake_flash.hpp); this driver has been compiled for the
 // cortex-m4f toolchain, not run.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Example ICM-42688-P FIFO files for the tests and the fuzz seeds: packets encoded from
-// the datasheet's layout (tests/core/icm42688p_packet_encoder.hpp, not lib/'s decoder),
+// the datasheet's layout (port/fakes/icm42688p_packet_encoder.hpp, not lib/'s decoder),
 // sample k from aloft_test::mixed_sample(k) at k periods after the first, time stamps at
 // 1 µs from `stamp_start` (so that they wrap), as the driver's configuration gives them.
 #pragma once

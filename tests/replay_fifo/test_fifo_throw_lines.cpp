@@ -1,4 +1,4 @@
-// The STM32F405 replay image's host side (port/stm32f405/firmware/host): make_fifo_throw
+// The STM32F405 replay image's host side (port/host_tools): make_fifo_throw
 // turns examples/throw_imu.csv into FIFO bytes, and fifo_replay_lines prints the host's
 // result for them in the image's format. Here those lines must say exactly what
 // `aloft replay --fifo --json` says about the same bytes; under QEMU the image's lines

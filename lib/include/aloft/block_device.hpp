@@ -11,7 +11,7 @@
 //     not; inside erase(), any byte of the block erased or not.
 // Ports: the STM32F405's internal flash (port/stm32f405/internal_flash.hpp); the tests
 // use a RAM-backed fake that enforces these rules and cuts the power where told
-// (tests/core/fake_flash.hpp), and a file-backed one on the host.
+// (port/fakes/fake_flash.hpp), and a file-backed one on the host.
 #pragma once
 
 #include <cstdint>

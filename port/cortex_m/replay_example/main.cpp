@@ -41,7 +41,7 @@ aloft::ImuSample<float> sample_at(unsigned i) {
 
 void write_finished_flights(aloft::port::ReportWriter& out) {
   while (pipeline->take_finished_flight(flight))
-    stored::write_flight_lines(out, flight, stored::stored_t0_us);
+    aloft_flight_lines::write_flight_lines(out, flight, stored::stored_t0_us);
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 // `aloft replay --imu` hands them to the pipeline (float, µs after the first sample,
 // flags), and the settings it takes from the body file. The definition
 // (stored_recording.cpp in the build folder) is written at build time by
-// host/make_replay_source.cpp, through the host's own reader of the CSV.
+// port/host_tools/make_replay_source.cpp, through the host's own reader of the CSV.
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 // fake_imu_bus() of fake_imu_bus.hpp: the tests' fake ICM-42688-P
-// (tests/core/fake_icm42688p.hpp) playing the recorded throw of replay_throw.hpp from
+// (port/fakes/fake_icm42688p.hpp) playing the recorded throw of replay_throw.hpp from
 // flash: sample k is the throw's k-th, and after its last one the chip delivers packets
 // without data (-32768, dropped by the driver), so the firmware sees its stream end.
 //

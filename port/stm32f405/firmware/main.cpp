@@ -44,7 +44,7 @@ aloft::ImuBus board_imu_bus() { return aloft_stm32f405::fake_imu_bus(); }
 constexpr int exit_stream_ended = 0;
 
 // QEMU does not model the flash controller, so the replay image keeps its record ring on
-// the RAM fake (tests/core/fake_flash.hpp, three 512-byte blocks) and writes the record
+// the RAM fake (port/fakes/fake_flash.hpp, three 512-byte blocks) and writes the record
 // area out by semihosting at the end (ALOFT_STM32F405_RECORDS_PATH, given by the test);
 // the host reads it back with `aloft records`' reader.
 aloft::testing::FakeFlash<512, 3> record_flash;
@@ -139,7 +139,7 @@ ALOFT_COLD void report_finished_flights() {
   ReportWriter out;
   aloft::FlightResult<float> flight;
   while (pipeline->take_finished_flight(flight)) {
-    aloft_replay_example::write_flight_lines(out, flight, 0);
+    aloft_flight_lines::write_flight_lines(out, flight, 0);
     store_record(flight);
   }
 }

@@ -1,6 +1,6 @@
 // The recorded throw the replay image's fake chip plays (fake_imu_bus.cpp), and the body
 // it was thrown with. The definition (replay_throw.cpp in the build folder) is written at
-// build time by host/make_fifo_throw.cpp from examples/throw_imu.csv and
+// build time by port/host_tools/make_fifo_throw.cpp from examples/throw_imu.csv and
 // examples/throw_body.json, which also writes the same packets as a FIFO file for the
 // host's `aloft replay --fifo` (tests/stm32f405 compares the two results).
 #pragma once

@@ -5,7 +5,7 @@
 // instructions.
 //
 // The samples come through the ICM-42688-P driver (aloft/icm42688p_driver.hpp) polling
-// the tests' fake chip (tests/core/fake_icm42688p.hpp), which makes the throw's packets:
+// the tests' fake chip (port/fakes/fake_icm42688p.hpp), which makes the throw's packets:
 // each loop step moves the chip's clock by one period (one packet) and polls once.
 //
 // Built twice: as is, and with ALOFT_STM32F405_TIMING_BASELINE, where each step makes

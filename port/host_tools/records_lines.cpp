@@ -17,10 +17,10 @@ void write_stdout(const char* text) { std::fputs(text, stdout); }
 
 void write_record(aloft::port::ReportWriter& out, const aloft::FlightRecord& r) {
   out.text("flight ").integer(r.flight_number).line();
-  aloft_replay_example::write_seconds(out.text("release_s "), static_cast<std::int64_t>(r.release_us));
+  aloft_flight_lines::write_seconds(out.text("release_s "), static_cast<std::int64_t>(r.release_us));
   out.line();
   if (r.landed) {
-    aloft_replay_example::write_seconds(out.text("landing_s "), static_cast<std::int64_t>(r.landing_us));
+    aloft_flight_lines::write_seconds(out.text("landing_s "), static_cast<std::int64_t>(r.landing_us));
     out.line();
   } else {
     out.text("landing_s null").line();
@@ -30,9 +30,9 @@ void write_record(aloft::port::ReportWriter& out, const aloft::FlightRecord& r) 
   out.text("imu_position_from ").text(r.imu_position_estimated ? "estimated" : "body").line();
   out.text("comparisons ").integer(r.comparisons).line();
   out.text("rms_da_deg ").fixed(r.rms_da_rad * 57.2957795f, 6).line();
-  out.text("rms_da_rad_bits ").integer(aloft_replay_example::bits_of(r.rms_da_rad)).line();
+  out.text("rms_da_rad_bits ").integer(aloft_flight_lines::bits_of(r.rms_da_rad)).line();
   out.text("rms_rel_err ").fixed(r.rms_rel_err, 6).line();
-  out.text("rms_rel_err_bits ").integer(aloft_replay_example::bits_of(r.rms_rel_err)).line();
+  out.text("rms_rel_err_bits ").integer(aloft_flight_lines::bits_of(r.rms_rel_err)).line();
   out.text("record_sequence ").integer(r.sequence).line();
 }
 

@@ -1,6 +1,6 @@
 // Host program: `aloft replay`'s own code path (host_sim/replay: the CSV reader, the body
 // settings, run_replay) on a body file and an IMU CSV, printing each flight as the replay
-// firmware prints it (../flight_lines.hpp). The firmware's output must equal this one
+// firmware prints it (port/cortex_m/flight_lines.hpp). The firmware's output must equal this one
 // (tests/target), and this one must agree with `aloft replay --json` (tests/replay).
 //   replay_lines BODY.json IMU.csv
 #include <cstdio>
@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
     aloft::port::ReportWriter out(write_stdout);
     out.text("aloft replay host: OnboardPipeline<float, 8>, recording ").text(argv[2]).line();
     for (const aloft::FlightResult<float>& f : result.flights) {
-      aloft_replay_example::write_flight_lines(out, f, result.t0_us);
+      aloft_flight_lines::write_flight_lines(out, f, result.t0_us);
     }
     out.text("stream_samples ").integer(result.stream.samples).line();
     out.text("stream_gaps ").integer(result.stream.gaps).line();

@@ -1,6 +1,7 @@
-// Writes stored_recording.cpp (see ../stored_recording.hpp): the samples of an IMU CSV as
-// `aloft replay --imu` reads them (host_sim/replay/imu_csv_recording), and the settings it
-// takes from the body file (replay_settings_from_body), as const arrays for flash.
+// Writes stored_recording.cpp (see port/cortex_m/replay_example/stored_recording.hpp): the
+// samples of an IMU CSV as `aloft replay --imu` reads them (host_sim/replay/imu_csv_recording),
+// and the settings it takes from the body file (replay_settings_from_body), as const arrays
+// for flash.
 //   make_replay_source BODY.json IMU.csv NAME OUT.cpp
 // Floats are written with 9 significant digits, which read back as the same float.
 #include <cinttypes>
@@ -21,19 +22,19 @@ void write_samples(std::FILE* out, const aloft::host::Recording& recording) {
   for (const aloft::ImuSample<float>& s : recording.samples) {
     if (s.t_us > 0xffffffffu) throw std::runtime_error("recording longer than 4294 s");
     std::fprintf(out, "    {%" PRIu64 "u, {%s, %s, %s}, {%s, %s, %s}, %uu},\n", s.t_us,
-                 aloft_replay_example::float_literal(s.gyro_rad_s.x()).c_str(),
-                 aloft_replay_example::float_literal(s.gyro_rad_s.y()).c_str(),
-                 aloft_replay_example::float_literal(s.gyro_rad_s.z()).c_str(),
-                 aloft_replay_example::float_literal(s.accel_m_s2.x()).c_str(),
-                 aloft_replay_example::float_literal(s.accel_m_s2.y()).c_str(),
-                 aloft_replay_example::float_literal(s.accel_m_s2.z()).c_str(), unsigned(s.flags));
+                 aloft_host_tools::float_literal(s.gyro_rad_s.x()).c_str(),
+                 aloft_host_tools::float_literal(s.gyro_rad_s.y()).c_str(),
+                 aloft_host_tools::float_literal(s.gyro_rad_s.z()).c_str(),
+                 aloft_host_tools::float_literal(s.accel_m_s2.x()).c_str(),
+                 aloft_host_tools::float_literal(s.accel_m_s2.y()).c_str(),
+                 aloft_host_tools::float_literal(s.accel_m_s2.z()).c_str(), unsigned(s.flags));
   }
   std::fprintf(out, "};\nconst unsigned stored_sample_count = %zuu;\n", recording.samples.size());
 }
 
 void write_settings(std::FILE* out, const aloft::host::ReplaySettings& settings, std::int64_t t0_us) {
   std::fprintf(out, "const std::int64_t stored_t0_us = %" PRId64 ";\n", t0_us);
-  aloft_replay_example::write_settings_source(out, settings, "stored");
+  aloft_host_tools::write_settings_source(out, settings, "stored");
 }
 
 }  // namespace

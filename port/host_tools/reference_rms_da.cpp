@@ -1,6 +1,6 @@
 // The host's double-precision answer for the example firmware: the same onboard check
-// (check_settings.hpp) on the same flight files, in double. Prints the lines the firmware
-// prints, so the comparison test reads both the same way.
+// (port/cortex_m/example/check_settings.hpp) on the same flight files, in double. Prints the lines the
+// firmware prints, so the comparison test reads both the same way.
 //   reference_rms_da BODY.json IMU.csv
 #include <cmath>
 #include <cstdio>

@@ -1,8 +1,9 @@
-// The lines the replay firmware prints per flight, and the host program that replays the
-// same CSV prints the same way (host/replay_lines.cpp): one writer for both, so equal
-// results print as equal text. Times are whole microseconds in the recording's base,
-// written as seconds with six decimals; each float result also as its bit pattern, so
-// that equality is checked exactly, not to the printed digits.
+// The lines the replay firmwares (port/cortex_m/replay_example, port/stm32f405/firmware)
+// print per flight, and the host programs that replay the same recording print the same
+// way (port/host_tools: replay_lines.cpp, fifo_replay_lines.cpp, records_lines.cpp): one
+// writer for all, so equal results print as equal text. Times are whole microseconds in
+// the recording's base, written as seconds with six decimals; each float result also as
+// its bit pattern, so that equality is checked exactly, not to the printed digits.
 //   flight 0
 //   release_s 0.202000
 //   landing_s 0.500000          (or "landing_s null")
@@ -24,7 +25,7 @@
 #include "aloft_port/divide_u64.hpp"
 #include "aloft_port/report_writer.hpp"
 
-namespace aloft_replay_example {
+namespace aloft_flight_lines {
 
 ALOFT_COLD inline void write_seconds(aloft::port::ReportWriter& out, std::int64_t us) {
   if (us < 0) {
@@ -71,4 +72,4 @@ ALOFT_COLD inline void write_flight_lines(aloft::port::ReportWriter& out, const 
   out.text("rms_rel_err_bits ").integer(bits_of(rms_rel_err)).line();
 }
 
-}  // namespace aloft_replay_example
+}  // namespace aloft_flight_lines

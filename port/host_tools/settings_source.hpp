@@ -1,5 +1,5 @@
-// What the replay firmwares' build-time generators (make_replay_source here,
-// port/stm32f405/firmware/host/make_fifo_throw.cpp) write of a body file's replay
+// What the replay firmwares' build-time generators (make_replay_source.cpp and
+// make_fifo_throw.cpp, both here) write of a body file's replay
 // settings: C++ definitions of PREFIX_inertia_kg_m2, PREFIX_sensor_to_body_wxyz,
 // PREFIX_imu_position_known and PREFIX_imu_position_m. Floats are written with 9
 // significant digits, which read back as the same float.
@@ -10,7 +10,7 @@
 
 #include "replay/replay_run.hpp"
 
-namespace aloft_replay_example {
+namespace aloft_host_tools {
 
 inline std::string float_literal(float v) {
   char text[40];
@@ -39,4 +39,4 @@ inline void write_settings_source(std::FILE* out, const aloft::host::ReplaySetti
                float_literal(r.x()).c_str(), float_literal(r.y()).c_str(), float_literal(r.z()).c_str());
 }
 
-}  // namespace aloft_replay_example
+}  // namespace aloft_host_tools

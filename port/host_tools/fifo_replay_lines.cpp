@@ -1,6 +1,6 @@
 // Host program: `aloft replay --fifo`'s own code path (host_sim/replay: the FIFO reader,
 // the body settings, run_replay) on a body file and a FIFO file, printing each flight as
-// the STM32F405 replay image prints it (port/cortex_m/replay_example/flight_lines.hpp).
+// the STM32F405 replay image prints it (port/cortex_m/flight_lines.hpp).
 // The image's output must equal this one (tests/stm32f405), and this one must agree with
 // `aloft replay --fifo --json` (tests/replay_fifo).
 //   fifo_replay_lines BODY.json FIFO.bin ODR_HZ
@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     aloft::port::ReportWriter out(write_stdout);
     out.text("aloft replay host: OnboardPipeline<float, 8>, FIFO file ").text(argv[2]).line();
     for (const aloft::FlightResult<float>& f : result.flights) {
-      aloft_replay_example::write_flight_lines(out, f, result.t0_us);
+      aloft_flight_lines::write_flight_lines(out, f, result.t0_us);
     }
     out.text("stream_samples ").integer(result.stream.samples).line();
     out.text("stream_gaps ").integer(result.stream.gaps).line();

@@ -1,5 +1,5 @@
-// Writes recorded_flight.cpp (see ../recorded_flight.hpp): the flight of a body file and
-// an IMU log as const arrays, which the linker puts in flash.
+// Writes recorded_flight.cpp (see port/cortex_m/example/recorded_flight.hpp): the flight
+// of a body file and an IMU log as const arrays, which the linker puts in flash.
 //   make_flight_source BODY.json IMU.csv SOURCE_NAME OUT.cpp
 // Each number is rounded to float and written with 9 significant digits, which
 // round-trips every float exactly.
