@@ -18,8 +18,10 @@
 //    than proposed when a slow let-go still pushed (its force is slow, and stays in the
 //    block mean), earlier when a ringing body broke the sample-by-sample run.
 //  - A run shorter than `min_free_us` is no flight yet: the proposal is withdrawn.
-// The proposed release is kept when the window's lies within one block of it (it is dated
-// more finely than a block's grid).
+// The proposed release is kept (it is dated more finely than a block's grid) unless the
+// window's lies more than one block after it, or more than two blocks before it (a proposal
+// held back by ringing; closer than that, the block grid is no better than the proposal),
+// and at rates where a block holds fewer than `min_block_samples` samples.
 #pragma once
 
 #include <cstdint>
@@ -74,8 +76,9 @@ struct WindowedRelease {
 template <typename Scalar>
 class ReleaseWindow {
  public:
-  static constexpr int ring_blocks =
-      12;  // the window's 5 closed blocks past the proposal, its own, the open one
+  // The window's 5 closed blocks past the proposal, its own block, the open one, and 5
+  // before it: a proposal held back by ringing can be moved up to 25 ms earlier.
+  static constexpr int ring_blocks = 12;
 
   explicit ReleaseWindow(const ReleaseWindowSettings<Scalar>& settings) : settings_(settings) {}
 
@@ -122,9 +125,7 @@ class ReleaseWindow {
     const Block& first = closed(run - 1u);
     if (end_low - first.start_low_us < settings_.min_free_us) return out;
     out.free = true;
-    // Later only: where the proposal was held back by a ringing body it lies within
-    // 20 ms of the truth already, and blocks of few samples (a block's span under
-    // `min_block_samples` intervals) date no better than the sample-by-sample rules.
+    // Blocks of few samples date no better than the sample-by-sample rules (file comment).
     const auto after_us = static_cast<std::int32_t>(first.start_low_us - proposed_low);
     const auto block_us = static_cast<std::int32_t>(settings_.block_us);
     const bool moved =
