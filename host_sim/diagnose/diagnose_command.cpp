@@ -18,7 +18,6 @@
 #include "diagnose/1_input/flight_input.hpp"
 #include "diagnose/1_input/marker_fit_check.hpp"
 #include "diagnose/1_input/segment_checks.hpp"
-#include "diagnose/1_input/unit_checks.hpp"
 #include "diagnose/5_flow/diagnosis.hpp"
 #include "diagnose/6_report/corrected_body.hpp"
 #include "diagnose/6_report/gap_plot.hpp"
@@ -29,6 +28,7 @@
 #include "readers/imu_units.hpp"
 #include "readers/marker_pose_fit.hpp"
 #include "readers/pose_naming_options.hpp"
+#include "readers/rate_units_check.hpp"
 #include "readers/segments.hpp"
 #include "readers/time_stamps.hpp"
 #include "readers/trial_file.hpp"
@@ -93,6 +93,15 @@ struct Trial {
   std::string source;
 };
 
+// The flights' rates as the unit check reads them (readers/rate_units_check.hpp), which
+// study shares without knowing diagnose's flights.
+std::vector<RateSeries> rate_series(const std::vector<diagnose::Flight>& flights) {
+  std::vector<RateSeries> out;
+  out.reserve(flights.size());
+  for (const diagnose::Flight& f : flights) out.push_back({f.sensor_to_body, f.time_s, f.omega, f.usable});
+  return out;
+}
+
 // The log in SI units, its accelerometer checked (a log in g would be one long flight).
 ImuLog read_imu_log(const DiagnoseOptions& o) {
   ImuLog log = read_imu_csv(o.imu);
@@ -144,7 +153,7 @@ Trial read_trial(const DiagnoseOptions& o, const Body& body) {
     } else {
       t.flights.push_back(diagnose::flight_from_imu(log, body, -INFINITY, INFINITY, file_name(o.imu)));
     }
-    diagnose::check_rate_units(t.flights, body, o.imu);
+    check_rate_units(rate_series(t.flights), body, o.imu);
   } else if (!o.markers.empty()) {
     t.source = o.markers;
     PoseFitReport fit_report;

@@ -70,6 +70,183 @@ std::optional<std::size_t> natural_record_length(const ByteView& file, std::size
   return length;
 }
 
+// The parameter section's 4-byte header: where it starts, its own block count and the
+// processor whose number formats the rest of the file is written in.
+struct SectionHead {
+  std::size_t start = 0;
+  std::size_t blocks = 0;
+  Processor processor = Processor::intel;
+};
+
+SectionHead read_section_head(const ByteView& file, std::size_t first_block, const std::string& path) {
+  if (first_block == 0) throw Error(path + ": header points to parameter block 0");
+  SectionHead section;
+  section.start = (first_block - 1) * kBlockBytes;
+  const std::uint8_t* head = file.at(section.start, 4);
+  if (!head) {
+    throw Error(path + ": parameter section (block " + std::to_string(first_block) +
+                ") lies beyond the end of the file");
+  }
+  const int processor = head[3];
+  if (processor != 84 && processor != 85 && processor != 86) {
+    throw Error(path + ": unknown processor type " + std::to_string(processor) +
+                " in the parameter section (expected 84 Intel, 85 DEC or 86 MIPS)");
+  }
+  section.processor = static_cast<Processor>(processor);
+  section.blocks = head[2];
+  return section;
+}
+
+// The section ends where the data section starts (header word 9). Its own block count is
+// only a fallback: writers get it wrong (c3d.org sample13 says 3 blocks and fills 6) or
+// leave it 0.
+std::size_t section_end(const ByteView& file, std::size_t first_block, const SectionHead& head) {
+  const std::uint8_t* data_start_word = file.at(16, 2);
+  const std::size_t data_start = data_start_word ? decode_u16(data_start_word, head.processor) : 0;
+  std::size_t end = file.size();
+  if (data_start > first_block) {
+    end = std::min(end, (data_start - 1) * kBlockBytes);
+  } else if (head.blocks > 0) {
+    end = std::min(end, head.start + head.blocks * kBlockBytes);
+  }
+  return end;
+}
+
+// What a record starts with, common to groups and parameters: its name, its group id
+// (negative for a group) and the offset word that chains it to the next record.
+struct RecordHead {
+  std::string name;
+  int group_id = 0;
+  std::size_t offset_pos = 0;    // where the offset word lies; offsets count from here
+  std::int16_t next_offset = 0;  // 0: the last record
+  std::size_t body() const { return offset_pos + 2; }
+};
+
+// The head of the record at `pos`, its offset word repaired if need be. nullopt at the end
+// of the chain, and also on damage, which `section.damage` then names.
+std::optional<RecordHead> read_record_head(const ByteView& file, std::size_t pos, std::size_t end,
+                                           ParameterSection& section) {
+  const std::uint8_t* record = pos + 2 <= end ? file.at(pos, 2) : nullptr;
+  if (!record) {
+    section.damage = "record " + where(pos) + " runs past the section's end";
+    return std::nullopt;
+  }
+  const auto name_chars = static_cast<std::int8_t>(record[0]);
+  if (name_chars == 0) return std::nullopt;  // the usual end of the chain
+  const auto group_id = static_cast<std::int8_t>(record[1]);
+  if (group_id == 0) {
+    section.damage = "record " + where(pos) + " has group id 0";
+    return std::nullopt;
+  }
+  const std::size_t name_length = static_cast<std::size_t>(std::abs(int{name_chars}));
+  RecordHead head;
+  head.offset_pos = pos + 2 + name_length;
+  const std::uint8_t* name_bytes = head.offset_pos + 2 <= end ? file.at(pos + 2, name_length + 2) : nullptr;
+  if (!name_bytes) {
+    section.damage = "record name " + where(pos) + " runs past the section's end";
+    return std::nullopt;
+  }
+  head.name = printable_upper(name_bytes, name_length);
+  head.group_id = group_id;
+  head.next_offset = decode_i16(name_bytes + name_length, section.processor);
+  if (head.next_offset < 0 || head.offset_pos + static_cast<std::size_t>(head.next_offset) > end) {
+    // Seen in the wild (c3d.org sample02, SGI files): one offset word left in the
+    // byte order of another processor. The record's own contents then tell where
+    // the next one starts.
+    const auto natural = natural_record_length(file, head.body(), end, group_id < 0, section.processor);
+    if (!natural) {
+      section.damage =
+          "record " + brief(head.name) + " " + where(pos) + " points to the next record outside the section";
+      return std::nullopt;
+    }
+    section.repairs.push_back("record " + brief(head.name) + " " + where(pos) + ": offset " +
+                              std::to_string(head.next_offset) + " replaced by its length " +
+                              std::to_string(*natural));
+    head.next_offset = static_cast<std::int16_t>(*natural);
+  }
+  return head;
+}
+
+// A parameter record's type, dimensions and data, all of which must lie before `limit`
+// (the next record, or the section's end `end`). nullopt on damage, named in `damage`.
+std::optional<Parameter> read_parameter(const ByteView& file, std::size_t pos, const RecordHead& head,
+                                        std::size_t limit, std::size_t end, std::string& damage) {
+  const std::size_t body = head.body();
+  const std::string& name = head.name;
+  const std::uint8_t* type_dims = body + 2 <= limit ? file.at(body, 2) : nullptr;
+  if (!type_dims) {
+    damage = "parameter " + brief(name) + " " + where(pos) + " is cut short";
+    return std::nullopt;
+  }
+  Parameter p;
+  p.name = name;
+  p.type = static_cast<std::int8_t>(type_dims[0]);
+  if (p.type != -1 && p.type != 1 && p.type != 2 && p.type != 4) {
+    damage = "parameter " + brief(name) + " " + where(pos) + " has unknown type " + std::to_string(p.type);
+    return std::nullopt;
+  }
+  const std::size_t dimension_count = type_dims[1];
+  const std::uint8_t* dims =
+      body + 2 + dimension_count <= limit ? file.at(body + 2, dimension_count) : nullptr;
+  if (!dims) {
+    damage = "parameter " + brief(name) + " " + where(pos) + ": dimensions cut short";
+    return std::nullopt;
+  }
+  std::size_t count = 1;
+  for (std::size_t d = 0; d < dimension_count; ++d) {
+    p.dimensions.push_back(dims[d]);
+    count *= dims[d];  // at most 255^255 in theory: bounded by the check below
+    if (count > end) break;
+  }
+  const std::size_t values_start = body + 2 + dimension_count;
+  const std::size_t data_size = count * static_cast<std::size_t>(std::abs(p.type));
+  const std::uint8_t* data =
+      count <= end && values_start + data_size <= limit ? file.at(values_start, data_size) : nullptr;
+  if (!data) {
+    damage = "parameter " + brief(name) + " " + where(pos) + ": data runs past the record";
+    return std::nullopt;
+  }
+  p.data.assign(data, data + data_size);
+  return p;
+}
+
+// The records as read, before each parameter is given its group's name: a group's
+// record may come after its parameters'.
+struct Records {
+  struct Pending {
+    int group_id;
+    Parameter parameter;
+  };
+  std::map<int, std::string> group_names;
+  std::vector<Pending> pending;
+};
+
+// Follows the chain of records from `pos` until its last record or the first damage.
+Records walk_records(const ByteView& file, std::size_t pos, std::size_t end, ParameterSection& section) {
+  Records records;
+  for (std::size_t count = 0;; ++count) {
+    if (count == kMaxRecords) {
+      section.damage = "too many records (" + std::to_string(kMaxRecords) + ")";
+      break;
+    }
+    const std::optional<RecordHead> head = read_record_head(file, pos, end, section);
+    if (!head) break;
+    const std::size_t next = head->offset_pos + static_cast<std::size_t>(head->next_offset);
+    // The record's contents must lie before the next record (or the section's end).
+    const std::size_t limit = head->next_offset == 0 ? end : next;
+    if (head->group_id < 0) {
+      records.group_names[-head->group_id] = head->name;
+    } else {
+      std::optional<Parameter> p = read_parameter(file, pos, *head, limit, end, section.damage);
+      if (!p) break;
+      records.pending.push_back({head->group_id, std::move(*p)});
+    }
+    if (head->next_offset == 0) break;  // the last record
+    pos = next;                         // always forward: next_offset > 0 here
+  }
+  return records;
+}
+
 }  // namespace
 
 const Parameter* ParameterSection::find(const std::string& group, const std::string& name) const {
@@ -115,136 +292,15 @@ std::vector<std::string> ParameterSection::strings(const std::string& group, con
 
 ParameterSection parse_parameter_section(const ByteView& file, std::size_t first_block,
                                          const std::string& path) {
+  const SectionHead head = read_section_head(file, first_block, path);
   ParameterSection section;
-  if (first_block == 0) throw Error(path + ": header points to parameter block 0");
-  const std::size_t start = (first_block - 1) * kBlockBytes;
-  const std::uint8_t* head = file.at(start, 4);
-  if (!head) {
-    throw Error(path + ": parameter section (block " + std::to_string(first_block) +
-                ") lies beyond the end of the file");
-  }
-  const int processor = head[3];
-  if (processor != 84 && processor != 85 && processor != 86) {
-    throw Error(path + ": unknown processor type " + std::to_string(processor) +
-                " in the parameter section (expected 84 Intel, 85 DEC or 86 MIPS)");
-  }
-  section.processor = static_cast<Processor>(processor);
-  const Processor format = section.processor;
-  // The section ends where the data section starts (header word 9). Its own block
-  // count is only a fallback: writers get it wrong (c3d.org sample13 says 3 blocks and
-  // fills 6) or leave it 0.
-  const std::uint8_t* data_start_word = file.at(16, 2);
-  const std::size_t data_start = data_start_word ? decode_u16(data_start_word, format) : 0;
-  const std::size_t blocks = head[2];
-  std::size_t end = file.size();
-  if (data_start > first_block) {
-    end = std::min(end, (data_start - 1) * kBlockBytes);
-  } else if (blocks > 0) {
-    end = std::min(end, start + blocks * kBlockBytes);
-  }
-
-  std::map<int, std::string> group_names;
-  struct Pending {
-    int group_id;
-    Parameter parameter;
-  };
-  std::vector<Pending> pending;
-
-  std::size_t pos = start + 4;
-  for (std::size_t records = 0;; ++records) {
-    if (records == kMaxRecords) {
-      section.damage = "too many records (" + std::to_string(kMaxRecords) + ")";
-      break;
-    }
-    const std::uint8_t* record = pos + 2 <= end ? file.at(pos, 2) : nullptr;
-    if (!record) {
-      section.damage = "record " + where(pos) + " runs past the section's end";
-      break;
-    }
-    const auto name_chars = static_cast<std::int8_t>(record[0]);
-    if (name_chars == 0) break;  // the usual end of the chain
-    const auto group_id = static_cast<std::int8_t>(record[1]);
-    if (group_id == 0) {
-      section.damage = "record " + where(pos) + " has group id 0";
-      break;
-    }
-    const std::size_t name_length = static_cast<std::size_t>(std::abs(int{name_chars}));
-    const std::size_t offset_pos = pos + 2 + name_length;
-    const std::uint8_t* name_bytes = offset_pos + 2 <= end ? file.at(pos + 2, name_length + 2) : nullptr;
-    if (!name_bytes) {
-      section.damage = "record name " + where(pos) + " runs past the section's end";
-      break;
-    }
-    const std::string name = printable_upper(name_bytes, name_length);
-    std::int16_t next_offset = decode_i16(name_bytes + name_length, format);
-    const std::size_t body = offset_pos + 2;
-    if (next_offset < 0 || offset_pos + static_cast<std::size_t>(next_offset) > end) {
-      // Seen in the wild (c3d.org sample02, SGI files): one offset word left in the
-      // byte order of another processor. The record's own contents then tell where
-      // the next one starts.
-      const auto natural = natural_record_length(file, body, end, group_id < 0, format);
-      if (!natural) {
-        section.damage =
-            "record " + brief(name) + " " + where(pos) + " points to the next record outside the section";
-        break;
-      }
-      section.repairs.push_back("record " + brief(name) + " " + where(pos) + ": offset " +
-                                std::to_string(next_offset) + " replaced by its length " +
-                                std::to_string(*natural));
-      next_offset = static_cast<std::int16_t>(*natural);
-    }
-    const std::size_t next = offset_pos + static_cast<std::size_t>(next_offset);
-    // The record's contents must lie before the next record (or the section's end).
-    const std::size_t limit = next_offset == 0 ? end : next;
-
-    if (group_id < 0) {
-      group_names[-group_id] = name;
-    } else {
-      const std::uint8_t* type_dims = body + 2 <= limit ? file.at(body, 2) : nullptr;
-      if (!type_dims) {
-        section.damage = "parameter " + brief(name) + " " + where(pos) + " is cut short";
-        break;
-      }
-      Parameter p;
-      p.name = name;
-      p.type = static_cast<std::int8_t>(type_dims[0]);
-      if (p.type != -1 && p.type != 1 && p.type != 2 && p.type != 4) {
-        section.damage =
-            "parameter " + brief(name) + " " + where(pos) + " has unknown type " + std::to_string(p.type);
-        break;
-      }
-      const std::size_t dimension_count = type_dims[1];
-      const std::uint8_t* dims =
-          body + 2 + dimension_count <= limit ? file.at(body + 2, dimension_count) : nullptr;
-      if (!dims) {
-        section.damage = "parameter " + brief(name) + " " + where(pos) + ": dimensions cut short";
-        break;
-      }
-      std::size_t count = 1;
-      for (std::size_t d = 0; d < dimension_count; ++d) {
-        p.dimensions.push_back(dims[d]);
-        count *= dims[d];  // at most 255^255 in theory: bounded by the check below
-        if (count > end) break;
-      }
-      const std::size_t values_start = body + 2 + dimension_count;
-      const std::size_t data_size = count * static_cast<std::size_t>(std::abs(p.type));
-      const std::uint8_t* data =
-          count <= end && values_start + data_size <= limit ? file.at(values_start, data_size) : nullptr;
-      if (!data) {
-        section.damage = "parameter " + brief(name) + " " + where(pos) + ": data runs past the record";
-        break;
-      }
-      p.data.assign(data, data + data_size);
-      pending.push_back({group_id, std::move(p)});
-    }
-    if (next_offset == 0) break;  // the last record
-    pos = next;                   // always forward: next_offset > 0 here
-  }
-
-  for (Pending& entry : pending) {
-    const auto group = group_names.find(entry.group_id);
+  section.processor = head.processor;
+  const std::size_t end = section_end(file, first_block, head);
+  Records records = walk_records(file, head.start + 4, end, section);
+  for (Records::Pending& entry : records.pending) {
+    const auto group = records.group_names.find(entry.group_id);
     entry.parameter.group =
-        group != group_names.end() ? group->second : "GROUP" + std::to_string(entry.group_id);
+        group != records.group_names.end() ? group->second : "GROUP" + std::to_string(entry.group_id);
     section.parameters.push_back(std::move(entry.parameter));
   }
   return section;

@@ -3,7 +3,7 @@
 // the log is read, so that nothing downstream sees anything but SI. A log's units are
 // not guessed from the size of its numbers (a ball really spins at 200 rad/s); the
 // diagnosis checks them against the physics and names these options when they are off
-// (diagnose/1_input/unit_checks.hpp).
+// (readers/rate_units_check.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -37,6 +37,93 @@ std::string join(const std::vector<std::string>& names) {
   return out;
 }
 
+// The body's markers found among the file's, in the body's order.
+struct MatchedMarkers {
+  std::vector<std::string> names;
+  std::vector<Eigen::Vector3d> body_points;
+  std::vector<int> file_index;  // of each in the file's markers
+};
+
+// Throws naming every marker of the body that the file lacks.
+MatchedMarkers match_markers(const MarkerTrial& markers, const Body& body) {
+  const std::string& path = markers.path;
+  if (body.markers_m.size() < 3) {
+    throw Error(path + ": body '" + body.name + "' has " + std::to_string(body.markers_m.size()) +
+                " markers; fitting poses needs at least three");
+  }
+  MatchedMarkers matched;
+  std::vector<std::string> missing;
+  for (const auto& [name, point] : body.markers_m) {
+    const int index = find_marker(markers.marker_names, name);
+    if (index < 0) {
+      missing.push_back(name);
+      continue;
+    }
+    matched.names.push_back(name);
+    matched.body_points.push_back(point);
+    matched.file_index.push_back(index);
+  }
+  if (!missing.empty()) {
+    throw Error(path + ": marker" + (missing.size() > 1 ? "s " : " ") + join(missing) + " of body '" +
+                body.name + "' not in the file (it has " + join(markers.marker_names) + ")");
+  }
+  return matched;
+}
+
+// The matched markers that one frame sees, kept from frame to frame so that their
+// storage is reused.
+struct VisibleMarkers {
+  std::vector<Eigen::Vector3d> body;
+  std::vector<Eigen::Vector3d> world;
+  std::vector<std::size_t> marker;  // index into MatchedMarkers
+
+  void find(const MatchedMarkers& matched, const std::vector<Eigen::Vector3d>& frame) {
+    body.clear();
+    world.clear();
+    marker.clear();
+    for (std::size_t m = 0; m < matched.file_index.size(); ++m) {
+      const Eigen::Vector3d& p = frame[static_cast<std::size_t>(matched.file_index[m])];
+      if (p.allFinite()) {
+        body.push_back(matched.body_points[m]);
+        world.push_back(p);
+        marker.push_back(m);
+      }
+    }
+  }
+};
+
+// Frame f was not posed: it extends the last gap when that ends just before it.
+void add_to_gaps(std::vector<FrameRange>& gaps, std::size_t f, double time_s) {
+  if (!gaps.empty() && gaps.back().last_frame + 1 == f) {
+    gaps.back().last_frame = f;
+    gaps.back().end_s = time_s;
+  } else {
+    gaps.push_back({f, f, time_s, time_s});
+  }
+}
+
+// Each marker's squared residuals summed over the frames that see it, for its RMS.
+struct MarkerResidualSums {
+  std::vector<double> square_sum;
+  std::vector<int> frames;
+
+  explicit MarkerResidualSums(std::size_t markers) : square_sum(markers, 0.0), frames(markers, 0) {}
+  void add(const std::vector<std::size_t>& seen_marker, const std::vector<double>& point_residuals) {
+    for (std::size_t i = 0; i < seen_marker.size(); ++i) {
+      square_sum[seen_marker[i]] += point_residuals[i] * point_residuals[i];
+      ++frames[seen_marker[i]];
+    }
+  }
+  std::vector<double> rms() const {
+    std::vector<double> out;
+    for (std::size_t m = 0; m < frames.size(); ++m) {
+      out.push_back(frames[m] > 0 ? std::sqrt(square_sum[m] / frames[m])
+                                  : std::numeric_limits<double>::quiet_NaN());
+    }
+    return out;
+  }
+};
+
 }  // namespace
 
 bool fit_rigid_transform(const std::vector<Eigen::Vector3d>& body_points,
@@ -73,28 +160,7 @@ bool fit_rigid_transform(const std::vector<Eigen::Vector3d>& body_points,
 
 PoseTrial fit_poses(const MarkerTrial& markers, const Body& body, PoseFitReport* report) {
   const std::string& path = markers.path;
-  if (body.markers_m.size() < 3) {
-    throw Error(path + ": body '" + body.name + "' has " + std::to_string(body.markers_m.size()) +
-                " markers; fitting poses needs at least three");
-  }
-  std::vector<std::string> body_names;
-  std::vector<Eigen::Vector3d> body_points;
-  std::vector<int> file_index;
-  std::vector<std::string> missing;
-  for (const auto& [name, point] : body.markers_m) {
-    const int index = find_marker(markers.marker_names, name);
-    if (index < 0) {
-      missing.push_back(name);
-      continue;
-    }
-    body_names.push_back(name);
-    body_points.push_back(point);
-    file_index.push_back(index);
-  }
-  if (!missing.empty()) {
-    throw Error(path + ": marker" + (missing.size() > 1 ? "s " : " ") + join(missing) + " of body '" +
-                body.name + "' not in the file (it has " + join(markers.marker_names) + ")");
-  }
+  const MatchedMarkers matched = match_markers(markers, body);
 
   const std::size_t frames = markers.positions_m.size();
   PoseFitReport local;
@@ -106,38 +172,20 @@ PoseTrial fit_poses(const MarkerTrial& markers, const Body& body, PoseFitReport*
   PoseTrial poses;
   poses.path = path;
   poses.format = markers.format;
-  std::vector<Eigen::Vector3d> seen_body;
-  std::vector<Eigen::Vector3d> seen_world;
-  std::vector<std::size_t> seen_marker;
+  VisibleMarkers seen;
   std::vector<double> point_residuals;
-  std::vector<double> marker_square_sum(file_index.size(), 0.0);
-  std::vector<int> marker_frames(file_index.size(), 0);
+  MarkerResidualSums marker_sums(matched.file_index.size());
   double residual_sum = 0.0;
   for (std::size_t f = 0; f < frames; ++f) {
-    seen_body.clear();
-    seen_world.clear();
-    seen_marker.clear();
-    for (std::size_t m = 0; m < file_index.size(); ++m) {
-      const Eigen::Vector3d& p = markers.positions_m[f][static_cast<std::size_t>(file_index[m])];
-      if (p.allFinite()) {
-        seen_body.push_back(body_points[m]);
-        seen_world.push_back(p);
-        seen_marker.push_back(m);
-      }
-    }
-    out.visible_markers[f] = static_cast<int>(seen_body.size());
+    seen.find(matched, markers.positions_m[f]);
+    out.visible_markers[f] = static_cast<int>(seen.body.size());
     Eigen::Quaterniond q;
     Eigen::Vector3d position;
     double rms = 0.0;
-    const bool posed = seen_body.size() >= 3 &&
-                       fit_rigid_transform(seen_body, seen_world, q, position, rms, &point_residuals);
+    const bool posed = seen.body.size() >= 3 &&
+                       fit_rigid_transform(seen.body, seen.world, q, position, rms, &point_residuals);
     if (!posed) {
-      if (!out.gaps.empty() && out.gaps.back().last_frame + 1 == f) {
-        out.gaps.back().last_frame = f;
-        out.gaps.back().end_s = markers.time_s[f];
-      } else {
-        out.gaps.push_back({f, f, markers.time_s[f], markers.time_s[f]});
-      }
+      add_to_gaps(out.gaps, f, markers.time_s[f]);
       continue;
     }
     if (!poses.orientation.empty() && q.dot(poses.orientation.back()) < 0.0) {
@@ -146,10 +194,7 @@ PoseTrial fit_poses(const MarkerTrial& markers, const Body& body, PoseFitReport*
     poses.time_s.push_back(markers.time_s[f]);
     poses.orientation.push_back(q);
     poses.position_m.push_back(position);
-    for (std::size_t i = 0; i < seen_marker.size(); ++i) {
-      marker_square_sum[seen_marker[i]] += point_residuals[i] * point_residuals[i];
-      ++marker_frames[seen_marker[i]];
-    }
+    marker_sums.add(seen.marker, point_residuals);
     out.posed_frames.push_back(f);
     out.rms_residual_m[f] = rms;
     out.max_rms_residual_m = std::max(out.max_rms_residual_m, rms);
@@ -160,12 +205,8 @@ PoseTrial fit_poses(const MarkerTrial& markers, const Body& body, PoseFitReport*
                 " frames show three non-collinear markers of body '" + body.name + "'; no flight to analyse");
   }
   out.mean_rms_residual_m = residual_sum / static_cast<double>(poses.time_s.size());
-  out.marker_names = body_names;
-  for (std::size_t m = 0; m < file_index.size(); ++m) {
-    out.marker_rms_residual_m.push_back(marker_frames[m] > 0
-                                            ? std::sqrt(marker_square_sum[m] / marker_frames[m])
-                                            : std::numeric_limits<double>::quiet_NaN());
-  }
+  out.marker_names = matched.names;
+  out.marker_rms_residual_m = marker_sums.rms();
   return poses;
 }
 

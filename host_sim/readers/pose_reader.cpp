@@ -68,15 +68,16 @@ JointColumnIndices find_joint_columns(const FreeJointColumns& joint, const std::
   return out;
 }
 
-}  // namespace
-
-static PoseTrial read_mot_unguarded(const std::string& path, const PoseNaming& naming) {
-  const std::optional<FreeJointColumns> named = free_joint_from_naming(naming);
-  const TextFile file = read_text_file(path);
+// What an OpenSim header declares, up to its endheader line.
+struct MotHeader {
   std::optional<bool> in_degrees;
-  std::size_t in_degrees_line = 0;
-  std::optional<std::size_t> declared_rows;
-  std::optional<std::size_t> declared_columns;
+  std::optional<std::size_t> rows;
+  std::optional<std::size_t> columns;
+  std::size_t end_index = 0;  // of the endheader line
+};
+
+MotHeader read_mot_header(const TextFile& file, const std::string& path) {
+  MotHeader header;
   std::size_t i = 0;
   for (; i < file.lines.size(); ++i) {
     const std::string line = to_lower(trim(file.lines[i]));
@@ -89,57 +90,74 @@ static PoseTrial read_mot_unguarded(const std::string& path, const PoseNaming& n
       if (value != "yes" && value != "no") {
         throw Error(at_line(path, i + 1, "inDegrees must be yes or no, not '" + value + "'"));
       }
-      in_degrees = value == "yes";
+      header.in_degrees = value == "yes";
     } else if (key == "nrows" || key == "datarows") {
-      declared_rows = header_count(value);
-      if (!declared_rows)
+      header.rows = header_count(value);
+      if (!header.rows)
         throw Error(at_line(path, i + 1, "nRows '" + value + "' is not a whole number up to 1e9"));
     } else if (key == "ncolumns" || key == "datacolumns") {
-      declared_columns = header_count(value);
-      if (!declared_columns)
+      header.columns = header_count(value);
+      if (!header.columns)
         throw Error(at_line(path, i + 1, "nColumns '" + value + "' is not a whole number up to 1e9"));
     }
   }
   if (i == file.lines.size()) throw Error(path + ": no endheader line (not an OpenSim .mot/.sto)");
-  in_degrees_line = i + 1;
-  ++i;
+  header.end_index = i;
+  return header;
+}
+
+// The column names, the first line after endheader that is not blank, with the time
+// column among them and as many as nColumns says.
+struct MotColumns {
+  std::vector<std::string> names;
+  std::size_t index = 0;  // of their line
+  int time = -1;
+  std::size_t line() const { return index + 1; }
+};
+
+MotColumns read_mot_columns(const TextFile& file, const MotHeader& header, const std::string& path) {
+  MotColumns columns;
+  std::size_t i = header.end_index + 1;
   while (i < file.lines.size() && is_blank(file.lines[i])) ++i;
   if (i == file.lines.size()) throw Error(path + ": no column names after endheader");
-  const std::size_t names_line = i + 1;
-  const std::vector<std::string> names = split_whitespace(file.lines[i]);
-  int time_column = -1;
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    if (to_lower(names[k]) == "time") time_column = static_cast<int>(k);
+  columns.index = i;
+  columns.names = split_whitespace(file.lines[i]);
+  for (std::size_t k = 0; k < columns.names.size(); ++k) {
+    if (to_lower(columns.names[k]) == "time") columns.time = static_cast<int>(k);
   }
-  if (time_column < 0) throw Error(at_line(path, names_line, "no time column"));
-  if (declared_columns && *declared_columns != names.size()) {
-    throw Error(at_line(path, names_line,
-                        std::to_string(names.size()) + " column names where nColumns is " +
-                            std::to_string(*declared_columns)));
+  if (columns.time < 0) throw Error(at_line(path, columns.line(), "no time column"));
+  if (header.columns && *header.columns != columns.names.size()) {
+    throw Error(at_line(path, columns.line(),
+                        std::to_string(columns.names.size()) + " column names where nColumns is " +
+                            std::to_string(*header.columns)));
   }
-  // The pose first: a file that holds none is refused for that, whatever else it lacks.
-  std::vector<std::string> data_names = names;
-  data_names.erase(data_names.begin() + time_column);
-  const std::optional<FreeJointColumns> joint =
-      named ? named : recognise_free_joint(data_names, path, names_line);
-  if (!joint) {
-    throw Error(at_line(
-        path, names_line,
-        "no free-joint pose among the columns (" + column_list(names) + "); " + how_to_name_the_pose()));
-  }
-  const JointColumnIndices columns = find_joint_columns(*joint, names, path, names_line);
-  if (!in_degrees) {
-    throw Error(at_line(path, in_degrees_line, "header lacks inDegrees=yes|no, so angle units are unknown"));
-  }
-  const bool has_position = !joint->translations.empty();
-  const double angle_scale = *in_degrees ? kPi / 180.0 : 1.0;
+  return columns;
+}
 
-  PoseTrial trial;
-  trial.path = path;
-  const std::string extension = to_lower(std::filesystem::path(path).extension().string());
-  trial.format = extension == ".sto" ? "sto" : "mot";
+// The free joint that the user named, or else the one recognised among the columns.
+FreeJointColumns mot_free_joint(const std::optional<FreeJointColumns>& named, const MotColumns& columns,
+                                const std::string& path) {
+  std::vector<std::string> data_names = columns.names;
+  data_names.erase(data_names.begin() + columns.time);
+  const std::optional<FreeJointColumns> joint =
+      named ? named : recognise_free_joint(data_names, path, columns.line());
+  if (!joint) {
+    throw Error(at_line(path, columns.line(),
+                        "no free-joint pose among the columns (" + column_list(columns.names) + "); " +
+                            how_to_name_the_pose()));
+  }
+  return *joint;
+}
+
+// Every row after the column names into `trial`, as a time and a pose; returns the line
+// number of each row, for messages about its time stamp.
+std::vector<std::size_t> read_mot_rows(const TextFile& file, const MotColumns& columns,
+                                       const FreeJointColumns& joint, const JointColumnIndices& indices,
+                                       double angle_scale, const std::string& path, PoseTrial& trial) {
+  const std::vector<std::string>& names = columns.names;
+  const bool has_position = !joint.translations.empty();
   std::vector<std::size_t> line_numbers;
-  for (++i; i < file.lines.size(); ++i) {
+  for (std::size_t i = columns.index + 1; i < file.lines.size(); ++i) {
     if (is_blank(file.lines[i])) continue;
     const std::size_t line = i + 1;
     const std::vector<std::string> cells = split_whitespace(file.lines[i]);
@@ -157,22 +175,47 @@ static PoseTrial read_mot_unguarded(const std::string& path, const PoseNaming& n
       }
       return v;
     };
-    trial.time_s.push_back(value(time_column));
+    trial.time_s.push_back(value(columns.time));
     std::array<double, 3> angles{}, distances{};
     for (std::size_t k = 0; k < 3; ++k) {
-      angles[k] = value(columns.rotation[k]) * angle_scale;
-      distances[k] = value(columns.translation[k]);
+      angles[k] = value(indices.rotation[k]) * angle_scale;
+      distances[k] = value(indices.translation[k]);
     }
-    const Eigen::Isometry3d pose = free_joint_pose(*joint, angles, distances);
+    const Eigen::Isometry3d pose = free_joint_pose(joint, angles, distances);
     trial.orientation.emplace_back(Eigen::Matrix3d(pose.linear()));  // a rotation by construction
     if (has_position) trial.position_m.push_back(pose.translation());
     line_numbers.push_back(line);
   }
+  return line_numbers;
+}
+
+}  // namespace
+
+static PoseTrial read_mot_unguarded(const std::string& path, const PoseNaming& naming) {
+  const std::optional<FreeJointColumns> named = free_joint_from_naming(naming);
+  const TextFile file = read_text_file(path);
+  const MotHeader header = read_mot_header(file, path);
+  const MotColumns columns = read_mot_columns(file, header, path);
+  // The pose first: a file that holds none is refused for that, whatever else it lacks.
+  const FreeJointColumns joint = mot_free_joint(named, columns, path);
+  const JointColumnIndices indices = find_joint_columns(joint, columns.names, path, columns.line());
+  if (!header.in_degrees) {
+    throw Error(
+        at_line(path, header.end_index + 1, "header lacks inDegrees=yes|no, so angle units are unknown"));
+  }
+  const double angle_scale = *header.in_degrees ? kPi / 180.0 : 1.0;
+
+  PoseTrial trial;
+  trial.path = path;
+  const std::string extension = to_lower(std::filesystem::path(path).extension().string());
+  trial.format = extension == ".sto" ? "sto" : "mot";
+  const std::vector<std::size_t> line_numbers =
+      read_mot_rows(file, columns, joint, indices, angle_scale, path, trial);
   if (trial.time_s.empty()) throw Error(path + ": no rows after the column names");
-  if (declared_rows && *declared_rows != trial.time_s.size()) {
+  if (header.rows && *header.rows != trial.time_s.size()) {
     throw Error(path + ": holds " + std::to_string(trial.time_s.size()) + " rows where nRows is " +
-                std::to_string(*declared_rows) +
-                (trial.time_s.size() < *declared_rows ? " (truncated file?)" : ""));
+                std::to_string(*header.rows) +
+                (trial.time_s.size() < *header.rows ? " (truncated file?)" : ""));
   }
   check_time_stamps(trial.time_s, path, line_numbers);
   make_hemispheres_continuous(trial.orientation);

@@ -1,4 +1,4 @@
-#include "diagnose/1_input/unit_checks.hpp"
+#include "readers/rate_units_check.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "common/commands.hpp"
 
-namespace aloft::host::diagnose {
+namespace aloft::host {
 namespace {
 
 // Samples per span over which the change of ω is compared with Euler's equations: long
@@ -30,7 +30,8 @@ struct Sums {
   std::size_t spans = 0;
 };
 
-void add_flight(const Flight& f, const Eigen::Matrix3d& inertia, const Eigen::Matrix3d& inverse, Sums& s) {
+void add_flight(const RateSeries& f, const Eigen::Matrix3d& inertia, const Eigen::Matrix3d& inverse,
+                Sums& s) {
   const Eigen::Matrix3d to_body = f.sensor_to_body.toRotationMatrix();
   for (std::size_t i = 0; i + kSpan < f.size(); i += kSpan) {
     bool usable = true;
@@ -75,10 +76,10 @@ std::string format(const char* pattern, double value) {
 
 }  // namespace
 
-EulerScale euler_scale(const std::vector<Flight>& flights, const Body& body) {
+EulerScale euler_scale(const std::vector<RateSeries>& flights, const Body& body) {
   const Eigen::Matrix3d inertia = body.inertia.tensor(), inverse = body.inertia.inverse();
   Sums s;
-  for (const Flight& f : flights) add_flight(f, inertia, inverse, s);
+  for (const RateSeries& f : flights) add_flight(f, inertia, inverse, s);
   EulerScale out;
   out.spans = s.spans;
   if (!(s.prediction_squared > 0.0) || !(s.change_squared > 0.0)) return out;
@@ -88,7 +89,7 @@ EulerScale euler_scale(const std::vector<Flight>& flights, const Body& body) {
   return out;
 }
 
-void check_rate_units(const std::vector<Flight>& flights, const Body& body, const std::string& source) {
+void check_rate_units(const std::vector<RateSeries>& flights, const Body& body, const std::string& source) {
   const EulerScale scale = euler_scale(flights, body);
   if (scale.explained < kExplained || !(scale.c > 0.0)) return;
   const std::string seen = "ω changes " + format("%.3g", scale.c) +
@@ -104,4 +105,4 @@ void check_rate_units(const std::vector<Flight>& flights, const Body& body, cons
   // on ../shared/data's wrong-moment sessions), and the diagnosis names a wrong tensor.
 }
 
-}  // namespace aloft::host::diagnose
+}  // namespace aloft::host

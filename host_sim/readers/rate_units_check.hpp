@@ -14,13 +14,26 @@
 // (The accelerometer's units are checked as the log is read: readers/accel_at_rest.hpp.)
 #pragma once
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
 #include <string>
 #include <vector>
 
 #include "common/body_file.hpp"
-#include "diagnose/1_input/flight.hpp"
 
-namespace aloft::host::diagnose {
+namespace aloft::host {
+
+// One flight's gyro rates as the check reads them: `aloft diagnose` and `aloft study`
+// each fill it from their own flights.
+struct RateSeries {
+  Eigen::Quaterniond sensor_to_body = Eigen::Quaterniond::Identity();
+  std::vector<double> time_s;          // strictly increasing
+  std::vector<Eigen::Vector3d> omega;  // measured rate, sensor axes
+  std::vector<char> usable;            // 0: left out (e.g. saturated)
+
+  std::size_t size() const { return time_s.size(); }
+};
 
 // How the flights' change of ω compares with Euler's equations for the body's tensor.
 struct EulerScale {
@@ -29,11 +42,11 @@ struct EulerScale {
   std::size_t spans = 0;   // spans of samples the fit used
 };
 
-EulerScale euler_scale(const std::vector<Flight>& flights, const Body& body);
+EulerScale euler_scale(const std::vector<RateSeries>& flights, const Body& body);
 
 // Throws aloft::host::Error, one line, when the flights' rates or times are off by a
 // unit's factor (°/s, ms, µs, both, or converted twice), naming the unit and the option
 // that converts it; `source` names the log.
-void check_rate_units(const std::vector<Flight>& flights, const Body& body, const std::string& source);
+void check_rate_units(const std::vector<RateSeries>& flights, const Body& body, const std::string& source);
 
-}  // namespace aloft::host::diagnose
+}  // namespace aloft::host
