@@ -10,6 +10,7 @@
 #include <string>
 #include <thread>
 
+#include "common/json_text.hpp"
 #include "common/atomic_file.hpp"
 #include "common/body_file.hpp"
 #include "common/commands.hpp"
@@ -216,7 +217,7 @@ void run_diagnose(const DiagnoseOptions& o) {
   report["baseline"]["measures"] = measures;
   std::cout << "  baseline measures: " << measures << "\n";
   if (!o.json.empty()) {
-    write_file_atomically(o.json, [&](std::ostream& out) { out << report.dump(2) << "\n"; });
+    write_file_atomically(o.json, [&](std::ostream& out) { out << json_text(report) << "\n"; });
   }
   if (!o.corrected_body.empty()) {
     const bool written = diagnose::write_corrected_body(o.body, report, o.corrected_body);

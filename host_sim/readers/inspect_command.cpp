@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/json_text.hpp"
 #include "common/body_file.hpp"
 #include "common/commands.hpp"
 #include "readers/c3d_reader.hpp"
@@ -170,7 +171,7 @@ void add_inspect_command(CLI::App& app) {
       case TrialKind::imu: summary = summarise_imu(*file, *units); break;
       case TrialKind::segments: summary = summarise_segments(*file); break;
     }
-    std::cout << summary.dump(2) << '\n';
+    std::cout << json_text(summary) << '\n';
   });
 }
 

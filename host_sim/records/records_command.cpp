@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/json_text.hpp"
 #include "common/commands.hpp"
 #include "records/record_dump.hpp"
 #include "records/records_command.hpp"
@@ -137,7 +138,7 @@ void print_json(const std::string& path, const RecordDump& dump) {
   for (const DumpProblem& p : dump.problems) problems.push_back({{"offset", p.offset}, {"reason", p.reason}});
   const nlohmann::json report = {
       {"file", path}, {"slots", dump.slots}, {"flights", flights}, {"problems", problems}};
-  std::cout << report.dump(2) << '\n';
+  std::cout << json_text(report) << '\n';
 }
 
 struct RecordsOptions {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "common/json_text.hpp"
 #include "common/atomic_file.hpp"
 #include "common/body_file.hpp"
 #include "common/commands.hpp"
@@ -47,7 +48,7 @@ void run_replay_command(const ReplayOptions& o) {
   const ReplayResult result = run_replay(replay_settings_from_body(body), o.body_path, recording);
   if (!o.json_path.empty()) {
     const nlohmann::json report = replay_report_json(recording, result);
-    write_file_atomically(o.json_path, [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+    write_file_atomically(o.json_path, [&](std::ostream& out) { out << json_text(report) << '\n'; });
   }
   std::fputs(replay_report_text(recording, result).c_str(), stdout);
 }

@@ -13,6 +13,7 @@
 
 #include <unistd.h>
 
+#include "common/json_text.hpp"
 #include "common/atomic_file.hpp"
 #include "common/atomic_folder.hpp"
 #include "common/commands.hpp"
@@ -186,7 +187,7 @@ void calibrate(const StudyOptions& o) {
   s.progress = calibration_progress();
   const CalibrationResult result = calibrate_to_paper(s, frames_to_report(o));
   if (::isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
-  write_outputs(o.out_dir, {{"calibration.json", calibration_json(result, s).dump(2) + "\n"}});
+  write_outputs(o.out_dir, {{"calibration.json", json_text(calibration_json(result, s)) + "\n"}});
   std::fputs(calibration_table(result).c_str(), stdout);
   std::printf("wall time %.1f s on %u thread%s; wrote %s/calibration.json\n", result.wall_time_s, s.threads,
               s.threads == 1 ? "" : "s", o.out_dir.c_str());
@@ -206,7 +207,7 @@ void study(const StudyOptions& o) {
   const std::string table = comparison_table(result);
   result.phase_time_s.emplace_back("outputs", seconds_since(outputs_start));
   result.wall_time_s = seconds_since(start);
-  const std::string results = results_json(result).dump(2) + "\n";
+  const std::string results = json_text(results_json(result)) + "\n";
 
   write_outputs(o.out_dir, {{"experiment.csv", experiment},
                             {"rms_da.csv", rms_da},

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "common/json_text.hpp"
 #include "common/commands.hpp"
 
 namespace aloft::host {
@@ -109,6 +110,6 @@ std::string rows_csv(const std::vector<json>& rows) {
   return out.str();
 }
 
-std::string rows_json(const std::vector<json>& rows) { return json(rows).dump(2) + "\n"; }
+std::string rows_json(const std::vector<json>& rows) { return json_text(json(rows)) + "\n"; }
 
 }  // namespace aloft::host

@@ -87,6 +87,20 @@ TEST_CASE("inspect a C3D file: layout details", "[readers][inspect]") {
   CHECK(summary["c3d"]["data"] == "integer");
 }
 
+// A label in another encoding (Latin-1 "É": 0xC9) is not valid UTF-8: the report writes
+// U+FFFD where the bad byte was, where it used to end with nlohmann::json's type_error 316.
+TEST_CASE("inspect a C3D file whose labels are not UTF-8", "[readers][inspect][bad]") {
+  ScratchDir dir;
+  aloft::test::C3dContent content;
+  content.labels = {"M1", std::string("\xC9PAULE"), "M3"};
+  content.rate_hz = 100.0f;
+  content.coordinates.assign(4, std::vector<std::array<double, 3>>(3, {{1.0, 2.0, 3.0}}));
+  const auto bytes = aloft::test::write_c3d_bytes(content);
+  const auto summary = inspect({dir.write("latin1.c3d", std::string(bytes.begin(), bytes.end()))});
+  REQUIRE(summary["markers"].size() == 3);
+  CHECK(summary["markers"][1].get<std::string>() == "\xEF\xBF\xBDPAULE");
+}
+
 TEST_CASE("inspect pose, IMU and segments files, told apart by content", "[readers][inspect]") {
   ScratchDir dir;
   // No telling extension: .txt for all.

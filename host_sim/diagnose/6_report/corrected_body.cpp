@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/json_text.hpp"
 #include "common/atomic_file.hpp"
 #include "common/commands.hpp"
 
@@ -28,7 +29,7 @@ bool write_corrected_body(const std::string& body_path, const nlohmann::json& re
   // The body file was read and checked before the diagnosis: it parses.
   nlohmann::json body = nlohmann::json::parse(text.str());
   body["inertia"] = {{"tensor", tensor}};
-  write_file_atomically(out_path, [&](std::ostream& out) { out << body.dump(2) << "\n"; });
+  write_file_atomically(out_path, [&](std::ostream& out) { out << json_text(body) << "\n"; });
   return true;
 }
 
