@@ -102,7 +102,6 @@ class ReleaseWindow {
     ++b->samples;
     if (!torque_free) ++b->torque_samples;
   }
-  void clear() { count_ = 0; }
 
   // The release proposed at proposed_us (sample proposed_index), judged once the closed
   // blocks reach window_us past it, with r fitted within `ball`.
