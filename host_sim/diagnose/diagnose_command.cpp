@@ -143,7 +143,7 @@ Trial read_trial(const DiagnoseOptions& o, const Body& body) {
         throw Error(o.imu + ": a " + length + " log without an accelerometer to find its flights by" +
                     sample_rate_hint(log) + "; give --segments or --window");
       }
-      const std::vector<Segment> windows = diagnose::airborne_windows(log);
+      const std::vector<Segment> windows = diagnose::airborne_windows(log, body, o.body);
       if (windows.empty()) {
         throw Error(o.imu + ": the flight detector finds no airborne window in this " + length +
                     " log; give --segments or --window");

@@ -1,45 +1,33 @@
 #include "diagnose/1_input/airborne_windows.hpp"
 
-#include <string>
+#include <cstdio>
 
-#include "aloft/flight_detector.hpp"
+#include "replay/imu_csv_recording.hpp"
+#include "replay/replay_run.hpp"
 
 namespace aloft::host::diagnose {
+namespace {
 
-std::vector<Segment> airborne_windows(const ImuLog& log) {
+std::string how_found(const FlightResult<float>& flight) {
+  char text[96];
+  std::snprintf(text, sizeof text, "found by the firmware's release and landing code (imu.position %s)",
+                flight.imu_position_estimated ? "estimated" : "given");
+  return text;
+}
+
+}  // namespace
+
+std::vector<Segment> airborne_windows(const ImuLog& log, const Body& body, const std::string& body_source) {
   std::vector<Segment> out;
-  if (log.accel_m_s2.size() != log.time_s.size()) return out;
-  const FlightDetectorSettings<double> settings;
-  FlightDetector<double> detector(settings);
-  std::size_t start = 0;
-  int held = 0;  // consecutive samples above free fall while airborne (a catch)
-  bool airborne = false;
-  auto close = [&](std::size_t last) {
-    const double from = log.time_s[start], to = log.time_s[last];
-    if (to - from >= kShortestFlight_s) {
-      out.push_back({"airborne" + std::to_string(out.size() + 1), from, to, "found by the flight detector"});
-    }
-    detector.reset();
-    airborne = false;
-  };
-  for (std::size_t k = 0; k < log.time_s.size(); ++k) {
-    const Eigen::Vector3d& a = log.accel_m_s2[k];
-    const FlightPhase phase = detector.update(a);
-    if (!airborne && phase == FlightPhase::airborne) {
-      airborne = true;
-      held = 0;
-      start = k + 1 >= settings.release_samples ? k + 1 - settings.release_samples : 0;
-      continue;
-    }
-    if (!airborne) continue;
-    held = a.norm() >= settings.free_fall_below_m_s2 ? held + 1 : 0;
-    if (phase == FlightPhase::landed) {
-      close(k > 0 ? k - 1 : 0);
-    } else if (held >= settings.release_samples) {
-      close(k - static_cast<std::size_t>(held));  // the last free-fall sample
-    }
+  if (log.time_s.empty() || log.accel_m_s2.size() != log.time_s.size()) return out;
+  const Recording recording = imu_csv_recording(log);
+  const ReplayResult replay = run_replay(replay_settings_from_body(body), body_source, recording);
+  for (const FlightResult<float>& flight : replay.flights) {
+    const double from = recording_time_s(replay, flight.release_us);
+    const double to = flight.landed ? recording_time_s(replay, flight.landing_us) : log.time_s.back();
+    if (to - from < kShortestFlight_s) continue;
+    out.push_back({"airborne" + std::to_string(out.size() + 1), from, to, how_found(flight)});
   }
-  if (airborne && !log.time_s.empty()) close(log.time_s.size() - 1);
   return out;
 }
 

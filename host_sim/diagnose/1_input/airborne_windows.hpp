@@ -1,11 +1,16 @@
-// The flights inside a long IMU log given without --segments or --window, found with the
-// core's flight detector (aloft/flight_detector.hpp) on the accelerometer: release is a
-// run of free-fall samples, the end a landing spike or the hand's catch (|a| back above
-// the free-fall threshold for as many samples as release needs).
+// The flights inside a long IMU log given without --segments or --window, found by the
+// firmware's own release and landing code: the log runs through the onboard pipeline
+// exactly as `aloft replay --imu` runs it (replay/replay_run.hpp), with the body file's
+// `imu.position` or, without one, the pipeline's estimate of it. One implementation of
+// "when does a flight start and end" serves the firmware, replay and diagnose, so a
+// spinning body whose accelerometer sits off its centre of mass (|a| = |w x (w x r)|, far
+// from free fall) is found as the firmware finds it.
 #pragma once
 
+#include <string>
 #include <vector>
 
+#include "common/body_file.hpp"
 #include "common/trial.hpp"
 
 namespace aloft::host::diagnose {
@@ -16,8 +21,10 @@ constexpr double kLongLog_s = 5.0;
 // Shorter airborne runs are jolts, not throws.
 constexpr double kShortestFlight_s = 0.2;
 
-// The airborne windows of `log` as segments "airborne1", "airborne2", ... (empty when the
-// log has no accelerometer or no flight).
-std::vector<Segment> airborne_windows(const ImuLog& log);
+// The airborne windows of `log` as segments "airborne1", "airborne2", ..., each from the
+// pipeline's release to its landing (or to the log's end when the log ends in the air).
+// Empty when the log has no accelerometer or no flight. Throws Error naming `body_source`
+// or the log when the pipeline refuses the tensor or a sample.
+std::vector<Segment> airborne_windows(const ImuLog& log, const Body& body, const std::string& body_source);
 
 }  // namespace aloft::host::diagnose
