@@ -129,11 +129,11 @@ Trial read_trial(const DiagnoseOptions& o, const Body& body) {
       t.session = true;
       const std::vector<Segment> segments = read_segments_csv(o.segments);
       diagnose::check_segments(log, segments, o.segments);
-      t.flights = diagnose::flights_from_segments(log, body, segments);
+      t.flights = diagnose::flights_from_given_segments(log, body, o.body, segments);
     } else if (!o.window.empty()) {
       const auto [a, b] = parse_window(o.window);
       diagnose::check_segments(log, {{o.window, a, b, ""}}, "--window");
-      t.flights.push_back(diagnose::flight_from_imu(log, body, a, b, file_name(o.imu) + " " + o.window));
+      t.flights = diagnose::flights_from_given_segments(log, body, o.body, {{file_name(o.imu) + " " + o.window, a, b, ""}});
       t.source = o.imu + " (window " + o.window + ")";
     } else if (log_duration(log) > diagnose::kLongLog_s) {
       // A long log holds rest or several throws: never diagnose it as one flight.
@@ -145,7 +145,7 @@ Trial read_trial(const DiagnoseOptions& o, const Body& body) {
       }
       const std::vector<Segment> windows = diagnose::airborne_windows(log, body, o.body);
       if (windows.empty()) {
-        throw Error(o.imu + ": the flight detector finds no airborne window in this " + length +
+        throw Error(o.imu + ": the firmware's release and landing code finds no flight in this " + length +
                     " log; give --segments or --window");
       }
       t.session = true;
@@ -197,7 +197,7 @@ void run_diagnose(const DiagnoseOptions& o) {
     if (found_by_detector) {
       d.pooled.notes.push_back(
           std::to_string(flights.size()) +
-          " flight(s) found by the accelerometer's flight detector (no --segments or --window given)");
+          " flight(s) found by the firmware's release and landing code (no --segments or --window given)");
     }
     report = diagnose::session_report(d);
     std::cout << diagnose::session_summary(d);

@@ -13,6 +13,18 @@
 
 namespace aloft::host::diagnose {
 
+// Contact cut away from a given segment (contact.hpp): the hand before the firmware's
+// release, or the catch or ground after its landing.
+struct Contact {
+  double cut_from_s = 0.0, cut_to_s = 0.0;  // the samples left out
+  bool before_release = true;               // false: after the landing
+  // The largest specific force at the centre of mass over the cut samples, |a - K r|
+  // (aloft/free_flight_residual.hpp), with r as the firmware used it: the hand's or the
+  // ground's force per unit mass.
+  double beyond_rotation_m_s2 = 0.0;
+  double at_s = 0.0;  // where that largest force was
+};
+
 struct Flight {
   std::string name;        // segment name, or the file name for a single flight
   std::string comment;     // the segment's comment, if any
@@ -31,6 +43,8 @@ struct Flight {
   // settling from the spin-up, so a jump of the rate there cannot be told from the
   // filter's transient, and no impulse is placed there. -infinity: no such start.
   double settling_until_s = -std::numeric_limits<double>::infinity();
+  // What of the given segment was contact, not flight (empty when nothing was cut).
+  std::vector<Contact> contacts;
 
   std::size_t size() const { return time_s.size(); }
   double start_s() const { return time_s.empty() ? 0.0 : time_s.front(); }

@@ -1,6 +1,7 @@
 #include "diagnose/1_input/flight_input.hpp"
 
 #include "readers/body_rates.hpp"
+#include "diagnose/1_input/contact.hpp"
 #include "diagnose/1_input/rest_periods.hpp"
 #include "diagnose/1_input/saturation.hpp"
 
@@ -41,6 +42,18 @@ std::vector<Flight> flights_from_segments(const ImuLog& log, const Body& body,
   for (const Segment& s : segments) {
     flights.push_back(cut_flight(log, body, rest, s.start_s, s.end_s, s.name));
     flights.back().comment = s.comment;
+  }
+  return flights;
+}
+
+std::vector<Flight> flights_from_given_segments(const ImuLog& log, const Body& body, const std::string& body_source,
+                                                const std::vector<Segment>& segments) {
+  const std::vector<RestPeriod> rest = find_rest_periods(log);
+  std::vector<Flight> flights;
+  for (const SegmentInFlight& s : cut_contact(log, body, body_source, segments)) {
+    flights.push_back(cut_flight(log, body, rest, s.segment.start_s, s.segment.end_s, s.segment.name));
+    flights.back().comment = s.segment.comment;
+    flights.back().contacts = s.contacts;
   }
   return flights;
 }

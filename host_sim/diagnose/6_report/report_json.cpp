@@ -196,6 +196,25 @@ json analysis_json(const Analysis& a) {
   return out;
 }
 
+// Contact cut away from a given segment (1_input/contact.hpp).
+json contact_json(const std::vector<Contact>& contacts) {
+  json out = json::array();
+  for (const Contact& c : contacts) {
+    out.push_back({{"where", c.before_release ? "before release" : "after landing"},
+                   {"cut_from_s", c.cut_from_s},
+                   {"cut_to_s", c.cut_to_s},
+                   {"at_s", c.at_s},
+                   {"beyond_rotation_m_s2", c.beyond_rotation_m_s2}});
+  }
+  return out;
+}
+
+std::string contact_text(const Contact& c) {
+  return printf_text("contact at %.3f s: %.0f m/s^2 beyond rotation; %.3f to %.3f s cut away", c.at_s,
+                     c.beyond_rotation_m_s2, c.cut_from_s, c.cut_to_s) +
+         (c.before_release ? " (before the release)" : " (after the landing)");
+}
+
 std::string params_text(Effect effect, const EffectParameters& p) { return describe(effect).hooks.text(p); }
 
 // gap_over_noise is a chi-square per residual, a squared ratio: 1300 reads as "1300 x the
@@ -276,6 +295,7 @@ json flight_report(const FlightDiagnosis& d) {
                         {"reliable", d.noise.reliable}};
   out["unusable_samples"] = d.unusable_samples;
   if (!d.comment.empty()) out["comment"] = d.comment;
+  if (d.flight && !d.flight->contacts.empty()) out["contact"] = contact_json(d.flight->contacts);
   if (d.flip_period) {
     json fp = {{"measured_s", d.flip_period->measured_s},
                {"nominal_s", d.flip_period->nominal_s},
@@ -329,7 +349,11 @@ std::string flight_summary(const FlightDiagnosis& d) {
       << printf_text(", noise floor %.4f rad/s", d.noise.sigma.mean());
   if (d.unusable_samples) out << ", " << d.unusable_samples << " saturated samples left out";
   if (!d.gaps.empty()) out << ", " << d.gaps.size() << " gaps in its time stamps";
-  out << "\n" << analysis_summary(d.analysis);
+  out << "\n";
+  if (d.flight) {
+    for (const Contact& c : d.flight->contacts) out << "  " << contact_text(c) << "\n";
+  }
+  out << analysis_summary(d.analysis);
   return out.str();
 }
 
