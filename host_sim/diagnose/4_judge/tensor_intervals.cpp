@@ -92,9 +92,28 @@ void set_intervals(TensorReport& r, const Eigen::Vector2d& log_se, double quanti
   }
 }
 
-// The axes bound: the fitted rotation plus the 95 % radius of its error ellipsoid.
+// The pairs of body axes whose moments' ratio has a 95 % interval holding 1, from the
+// log ratios' covariance (body order: log I2/I1, log I3/I1) and the interval's quantile.
+void find_unresolved_planes(TensorReport& r, const Candidate& moments, const Eigen::Matrix2d& log_cov,
+                            double quantile) {
+  const Eigen::Vector2d l(std::log(r.ratio_best(0)), std::log(r.ratio_best(1)));
+  struct Pair {
+    int a, b;
+    double log_ratio, variance;
+  };
+  const Pair pairs[] = {{0, 1, l(0), log_cov(0, 0)},
+                        {0, 2, l(1), log_cov(1, 1)},
+                        {1, 2, l(1) - l(0), log_cov(0, 0) + log_cov(1, 1) - 2.0 * log_cov(0, 1)}};
+  for (const Pair& p : pairs) {
+    if (std::abs(p.log_ratio) <= quantile * std::sqrt(std::max(p.variance, 0.0))) r.unresolved_planes.push_back({p.a, p.b});
+  }
+  for (int b = 0; b < 3; ++b) r.moments_kg_m2(b) = moments.params.principal_kg_m2(r.axis_order(b));
+}
+
+// The axes bound: the fitted rotation plus the 95 % radius of its error ellipsoid. None
+// where two moments are not told apart: a rotation within their plane changes nothing.
 void set_axes(TensorReport& r, const Candidate* axes, const Eigen::Matrix3d& covariance, double widen) {
-  if (axes == nullptr) return;
+  if (axes == nullptr || !r.unresolved_planes.empty()) return;
   const double largest =
       std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvalues().maxCoeff());
   r.axes_95_deg = axes->params.angle_deg + widen * std::sqrt(kChiSquare3At95 * largest) * kDeg;
@@ -117,6 +136,7 @@ bool flight_tensor_report(const Analysis& analysis, const std::vector<const Flig
   const Eigen::Matrix2d g = log_ratio_gradient(r.axis_order);
   const Eigen::Matrix2d cov = g * moments->fit.theta_covariance * g.transpose() * inflation;
   set_intervals(r, cov.diagonal().cwiseMax(0.0).cwiseSqrt(), kNormal975);
+  find_unresolved_planes(r, *moments, cov, kNormal975);
   const Candidate* axes = find(analysis, Effect::inertia_axes);
   if (axes != nullptr) set_axes(r, axes, model_covariance_3(*axes, serial_inflation(*axes, flights)), 1.0);
   r.flights = static_cast<int>(flights.size());
@@ -145,7 +165,14 @@ bool pooled_tensor_report(const Analysis& pooled, const std::vector<const Flight
   for (const Eigen::VectorXd& t : moments->heldout_theta) spread += (g * t - mean).cwiseAbs2();
   const Eigen::Vector2d jackknife = spread * (static_cast<double>(n) - 1.0) / static_cast<double>(n);
   const double t = student_t_975(static_cast<int>(n) - 1);
-  set_intervals(r, jackknife.cwiseMax(model.diagonal().cwiseMax(0.0)).cwiseSqrt(), t);
+  const Eigen::Vector2d variance = jackknife.cwiseMax(model.diagonal().cwiseMax(0.0));
+  set_intervals(r, variance.cwiseSqrt(), t);
+  // The covariance of the two log ratios: the wider of the jackknife and the fit on the
+  // diagonal, the fit's correlation between them.
+  const double correlation = model(0, 1) / std::sqrt(std::max(model(0, 0) * model(1, 1), 1e-300));
+  Eigen::Matrix2d log_cov = variance.asDiagonal();
+  log_cov(0, 1) = log_cov(1, 0) = correlation * std::sqrt(variance(0) * variance(1));
+  find_unresolved_planes(r, *moments, log_cov, t);
 
   const Candidate* axes = find(pooled, Effect::inertia_axes);
   if (axes != nullptr && axes->heldout_theta.size() == n) {

@@ -22,6 +22,26 @@ Eigen::Vector3i principal_axis_order(const NominalInertia& nominal) {
   return best;
 }
 
+std::string unresolved_planes_text(const TensorReport& r) {
+  static const char* axis = "xyz";
+  char text[200];
+  const auto& planes = r.unresolved_planes;
+  if (planes.empty()) return "";
+  if (planes.size() == 1) {
+    const int a = planes[0][0], b = planes[0][1];
+    std::snprintf(text, sizeof text,
+                  ", I%c and I%c cannot be told apart (%.4g and %.4g kg m^2): the axes in the %c-%c plane are "
+                  "not fixed",
+                  axis[a], axis[b], r.moments_kg_m2(a), r.moments_kg_m2(b), axis[a], axis[b]);
+  } else {
+    std::snprintf(text, sizeof text,
+                  ", no two moments can be told apart (Ix %.4g, Iy %.4g, Iz %.4g kg m^2): no principal axis is "
+                  "fixed",
+                  r.moments_kg_m2(0), r.moments_kg_m2(1), r.moments_kg_m2(2));
+  }
+  return text;
+}
+
 std::string tensor_summary(const TensorReport& r) {
   static const char* axis = "xyz";
   char text[512];
@@ -36,6 +56,7 @@ std::string tensor_summary(const TensorReport& r) {
     std::snprintf(text, sizeof text, ", principal axes within %.2g deg", r.axes_95_deg);
     out += text;
   }
+  out += unresolved_planes_text(r);
   std::string outside;
   for (int i = 0; i < 2; ++i) {
     if (r.ratio_nominal(i) >= r.ratio_low(i) && r.ratio_nominal(i) <= r.ratio_high(i)) continue;

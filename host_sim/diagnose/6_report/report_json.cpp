@@ -95,6 +95,16 @@ json steps_json(const Analysis& a) {
   return out;
 }
 
+// Near-symmetric bodies (tensor_report.hpp): each plane whose axes the data do not fix.
+json unresolved_planes_json(const TensorReport& t) {
+  static const char* axis[] = {"x", "y", "z"};
+  json out = json::array();
+  for (const auto& [a, b] : t.unresolved_planes) {
+    out.push_back({{"axes", {axis[a], axis[b]}}, {"moments_kg_m2", {t.moments_kg_m2(a), t.moments_kg_m2(b)}}});
+  }
+  return out;
+}
+
 json tensor_json(const TensorReport& t) {
   static const char* axis[] = {"x", "y", "z"};
   return {
@@ -105,7 +115,8 @@ json tensor_json(const TensorReport& t) {
       {"ratio_nominal", {t.ratio_nominal(0), t.ratio_nominal(1)}},
       {"ratios", {std::string("I") + axis[1] + "/I" + axis[0], std::string("I") + axis[2] + "/I" + axis[0]}},
       {"flights", t.flights},
-      {"method", t.method}};
+      {"method", t.method},
+      {"unresolved_planes", unresolved_planes_json(t)}};
 }
 
 // Every candidate of the first step, best first.
