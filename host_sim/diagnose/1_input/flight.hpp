@@ -36,6 +36,10 @@ struct Flight {
   std::vector<double> time_s;          // as recorded, strictly increasing
   std::vector<Eigen::Vector3d> omega;  // measured rate (sensor axes / body axes)
   std::vector<char> usable;            // 0: left out of every fit (e.g. saturated)
+  // The accelerometer's specific force at each sample, sensor axes (m/s²); empty when the
+  // log has none. Never fitted: it checks what the gyro's fit proposes (an impulse's blow).
+  std::vector<Eigen::Vector3d> accel_m_s2;
+  std::optional<Eigen::Vector3d> imu_position_m;  // the body file's, body axes
   // The sensor's noise per axis where its log lies still (rest_periods.hpp); unset when
   // the log has no rest. The noise floor prefers it (noise_floor.hpp).
   std::optional<Eigen::Vector3d> rest_noise;

@@ -21,7 +21,9 @@ Flight cut_flight(const ImuLog& log, const Body& body, const std::vector<RestPer
     if (log.time_s[k] < from_s || log.time_s[k] > to_s) continue;
     flight.time_s.push_back(log.time_s[k]);
     flight.omega.push_back(log.gyro_rad_s[k]);
+    if (log.accel_m_s2.size() == log.time_s.size()) flight.accel_m_s2.push_back(log.accel_m_s2[k]);
   }
+  flight.imu_position_m = body.imu_position_m;
   flight.usable.assign(flight.size(), 1);
   mark_saturated_samples(flight);
   if (const auto noise = rest_noise(rest)) flight.rest_noise = noise->sigma;

@@ -6,6 +6,7 @@
 #include "diagnose/3_fit/held_out.hpp"
 #include "diagnose/4_judge/baseline_gap.hpp"
 #include "diagnose/4_judge/candidate_ranking.hpp"
+#include "diagnose/4_judge/impulse_force_check.hpp"
 #include "diagnose/4_judge/plausibility.hpp"
 #include "diagnose/4_judge/stepwise_selection.hpp"
 #include "diagnose/4_judge/tensor_intervals.hpp"
@@ -216,6 +217,7 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
   rank_candidates(analysis, context);
   select_stepwise(analysis, context, evaluate);
   attach_flight_tensor_report(analysis, flight, nominal);
+  check_impulse_against_accelerometer(analysis, flight);
   find_onset(analysis, flight, nominal, none_full, inverse_sigma);
   if (!d.noise.reliable) {
     analysis.verdict.confident = false;

@@ -313,6 +313,28 @@ InjectedEffect combine(InjectedEffect first, const InjectedEffect& second, const
   return first;
 }
 
+// A blow from outside that gives angular impulse L acts at a point c of the surface with
+// a linear impulse P, c x P = L: c is taken on the marker ellipsoid, perpendicular to L
+// (no draw: the flights stay as they were), and P = (L x c) / |c|^2. Over the pulse the
+// centre of mass then accelerates by P/m times the torque's half-sine profile, which the
+// accelerometer reads. Zero outside the pulse and for an instantaneous impulse.
+Eigen::Vector3d blow_acceleration(const FlightPhysics& physics, const BodyModel& body, double t) {
+  const double d = physics.impulse_duration_s;
+  if (!physics.has_impulse || !(d > 0.0)) return Eigen::Vector3d::Zero();
+  const double u = (t - physics.impulse_time_s) / d;
+  if (u < 0.0 || u > 1.0) return Eigen::Vector3d::Zero();
+  const Eigen::Vector3d& L = physics.angular_impulse_N_m_s;
+  if (!(L.norm() > 0.0)) return Eigen::Vector3d::Zero();
+  const Eigen::Vector3d l = L.normalized();
+  Eigen::Index least = 0;
+  l.cwiseAbs().minCoeff(&least);
+  const Eigen::Vector3d e = Eigen::Vector3d::Unit(least);
+  const Eigen::Vector3d dir = (e - e.dot(l) * l).normalized();
+  const Eigen::Vector3d c = dir / dir.cwiseQuotient(body.marker_semi_axes_m).norm();
+  const Eigen::Vector3d P = L.cross(c) / c.squaredNorm();
+  return P / body.mass_kg * (kPi / (2.0 * d)) * std::sin(kPi * u);
+}
+
 }  // namespace
 
 const std::vector<std::string>& effect_names() {
@@ -431,12 +453,14 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
     }
     if (spec.accelerometer) {
       // Free fall: the specific force at the sensor is only its acceleration relative
-      // to the centre of mass, w' × r + w × (w × r) (aerodynamic force neglected).
+      // to the centre of mass, w' × r + w × (w × r) (aerodynamic force neglected), and
+      // an impulse's blow.
       const Eigen::Vector3d& r = body.imu_offset_m;
       for (std::size_t k = 0; k < states.size(); ++k) {
         const Eigen::Vector3d& w = states[k].omega_body;
         const Eigen::Vector3d w_dot = dynamics.shell_angular_acceleration(true_time[k], states[k]);
-        const Eigen::Vector3d a = w_dot.cross(r) + w.cross(w.cross(r));
+        const Eigen::Vector3d a = w_dot.cross(r) + w.cross(w.cross(r)) +
+                                  blow_acceleration(effect.physics, body, true_time[k]);
         log.accel_m_s2.push_back(body_to_sensor * a + noise_rng.normal_vector(spec.accel_noise_m_s2));
       }
     }

@@ -1,0 +1,88 @@
+// An `impulse` verdict checked against the accelerometer (issue 31 item 4): a blow from
+// outside shows in the accelerometer as force beyond rotation at the impulse; a step
+// that the accelerometer does not see is not a blow, and the verdict says so.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "diagnose/1_input/flight_input.hpp"
+#include "diagnose/4_judge/impulse_force_check.hpp"
+#include "diagnose/5_flow/diagnosis.hpp"
+#include "generator/body_catalogue.hpp"
+#include "generator/flight_generator.hpp"
+
+using namespace aloft::host;
+using namespace aloft::host::diagnose;
+
+namespace {
+
+aloft::generator::GeneratedFlight impulse_flight(const std::string& body, std::uint64_t seed) {
+  aloft::generator::FlightSpec spec;
+  spec.body = body;
+  spec.effect = "impulse";
+  spec.duration_s = 1.2;
+  spec.accelerometer = true;
+  return aloft::generator::generate_flight(spec, seed);
+}
+
+// The same flight's accelerometer as if the step came from inside the body: only the
+// rotation's specific force at the sensor (w_dot from the true rates), with the
+// generator's accelerometer noise (0.05 m/s² per axis).
+Flight without_blow(Flight flight, const aloft::generator::GeneratedFlight& g) {
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  const Eigen::Vector3d r = aloft::generator::body_model(g.truth.body).imu_offset_m;
+  const Eigen::Matrix3d to_sensor = g.true_imu_to_body.conjugate().toRotationMatrix();
+  for (std::size_t k = 1; k + 1 < g.true_samples.size() && k < flight.size(); ++k) {
+    const double dt = g.true_samples[k + 1].t_s - g.true_samples[k - 1].t_s;
+    const Eigen::Vector3d w_dot = (g.true_samples[k + 1].omega_body - g.true_samples[k - 1].omega_body) / dt;
+    const Eigen::Vector3d& w = g.true_samples[k].omega_body;
+    const Eigen::Vector3d n(noise(rng), noise(rng), noise(rng));
+    flight.accel_m_s2[k] = to_sensor * (w_dot.cross(r) + w.cross(w.cross(r))) + n;
+  }
+  return flight;
+}
+
+}  // namespace
+
+TEST_CASE("impulse force: a blow is seen at the impulse, an inner step is not", "[impulse]") {
+  int flights = 0;
+  for (const char* body : {"box", "tilted_box", "racquet", "cylinder"}) {
+    for (std::uint64_t seed = 70; seed < 73; ++seed) {
+      const auto g = impulse_flight(body, seed);
+      const double t0 = *g.truth.onset_s;
+      const Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, body);
+      CAPTURE(body, seed, t0);
+      const auto blow = impulse_force(flight, t0);
+      REQUIRE(blow);
+      CHECK(blow->seen);
+      CAPTURE(blow->velocity_change_m_s, blow->elsewhere_rms_m_s);
+      const auto inner = impulse_force(without_blow(flight, g), t0);
+      REQUIRE(inner);
+      CAPTURE(inner->velocity_change_m_s, inner->elsewhere_rms_m_s);
+      CHECK_FALSE(inner->seen);
+      ++flights;
+    }
+  }
+  CHECK(flights == 12);
+}
+
+TEST_CASE("impulse force: a verdict the accelerometer does not back is not confident", "[impulse]") {
+  const auto g = impulse_flight("box", 71);
+  const Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, "box");
+  const NominalInertia nominal = NominalInertia::of(g.body.inertia);
+  const FlightDiagnosis blow = diagnose_flight(flight, nominal);
+  REQUIRE(blow.analysis.verdict.effect == Effect::impulse);
+  bool noted = false;
+  for (const std::string& n : blow.analysis.notes) noted = noted || n.find("shows a blow") != std::string::npos;
+  CHECK(noted);
+
+  const Flight inner_flight = without_blow(flight, g);
+  const FlightDiagnosis inner = diagnose_flight(inner_flight, nominal);
+  REQUIRE(inner.analysis.verdict.effect == Effect::impulse);
+  CHECK_FALSE(inner.analysis.verdict.confident);
+  bool said = false;
+  for (const std::string& w : inner.analysis.verdict.could_not_judge) said = said || w.find("no blow") != std::string::npos;
+  CHECK(said);
+}
