@@ -46,26 +46,38 @@ Flight without_blow(Flight flight, const aloft::generator::GeneratedFlight& g) {
 
 }  // namespace
 
-TEST_CASE("impulse force: a blow is seen at the impulse, an inner step is not", "[impulse]") {
-  int flights = 0;
+// Right decisions (blow seen, inner step not) over 4 bodies x the given seeds.
+struct Decisions {
+  int right = 0, total = 0;
+};
+
+Decisions decide(std::uint64_t first_seed, std::uint64_t end_seed) {
+  Decisions d;
   for (const char* body : {"box", "tilted_box", "racquet", "cylinder"}) {
-    for (std::uint64_t seed = 70; seed < 73; ++seed) {
+    for (std::uint64_t seed = first_seed; seed < end_seed; ++seed) {
       const auto g = impulse_flight(body, seed);
       const double t0 = *g.truth.onset_s;
       const Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, body);
-      CAPTURE(body, seed, t0);
       const auto blow = impulse_force(flight, t0);
-      REQUIRE(blow);
-      CHECK(blow->seen);
-      CAPTURE(blow->velocity_change_m_s, blow->elsewhere_rms_m_s);
       const auto inner = impulse_force(without_blow(flight, g), t0);
+      REQUIRE(blow);
       REQUIRE(inner);
-      CAPTURE(inner->velocity_change_m_s, inner->elsewhere_rms_m_s);
-      CHECK_FALSE(inner->seen);
-      ++flights;
+      d.right += blow->seen + !inner->seen;
+      d.total += 2;
     }
   }
-  CHECK(flights == 12);
+  return d;
+}
+
+TEST_CASE("impulse force: a blow is seen at the impulse, an inner step is not", "[impulse]") {
+  // kSeenOverElsewhere was chosen on seeds 70-72 (every decision right there) and is
+  // reported on 170-175, not looked at while choosing: 45 of 48 right (two weak blows at
+  // 2.5 and 3.5 x, one inner step on the cylinder at 4.2 x).
+  const Decisions tuned = decide(70, 73);
+  CHECK(tuned.right == tuned.total);
+  const Decisions held_out = decide(170, 176);
+  CAPTURE(held_out.right, held_out.total);
+  CHECK(held_out.right >= held_out.total * 9 / 10);
 }
 
 TEST_CASE("impulse force: a verdict the accelerometer does not back is not confident", "[impulse]") {
