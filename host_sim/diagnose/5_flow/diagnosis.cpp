@@ -6,6 +6,7 @@
 #include "diagnose/3_fit/held_out.hpp"
 #include "diagnose/4_judge/baseline_gap.hpp"
 #include "diagnose/4_judge/candidate_ranking.hpp"
+#include "diagnose/4_judge/onset.hpp"
 #include "diagnose/5_flow/folds_within_flight.hpp"
 #include "diagnose/5_flow/judge_candidates.hpp"
 #include "diagnose/5_flow/judged_flights.hpp"
@@ -14,48 +15,6 @@ namespace aloft::host::diagnose {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-
-// The onset detector: a one-sided CUSUM of the per-sample chi-square excess
-// (|residual/sigma|^2/3 - 1, mean 0 under noise) with drift 0.5 and alarm at 15; the
-// onset is the last time the sum was at zero before the alarm. Under noise alone its
-// average run length is far beyond any flight.
-std::optional<double> cusum_onset(const Flight& flight, const std::vector<Vec3>& readings,
-                                  const Vec3& inverse_sigma) {
-  constexpr double kDrift = 0.5, kAlarm = 15.0;
-  double sum = 0.0;
-  std::size_t start = 0;
-  for (std::size_t k = 0; k < flight.size(); ++k) {
-    if (!flight.usable[k]) continue;
-    const double excess =
-        (readings[k] - flight.omega[k]).cwiseProduct(inverse_sigma).squaredNorm() / 3.0 - 1.0;
-    sum = std::max(0.0, sum + excess - kDrift);
-    if (sum == 0.0) start = k + 1;
-    if (sum > kAlarm) return flight.time_s[std::min(start, flight.size() - 1)];
-  }
-  return std::nullopt;
-}
-
-// The baseline gap in ten slices of the flight's time: where along the flight it grows.
-void describe_slices(const Flight& flight, const std::vector<Vec3>& readings, const Vec3& inverse_sigma,
-                     Where& where) {
-  constexpr int kSlices = 10;
-  std::vector<GapSums> slices(kSlices);
-  const double t0 = flight.start_s();
-  const double span = std::max(flight.end_s() - t0, 1e-12);
-  for (std::size_t k = 0; k < flight.size(); ++k) {
-    if (!flight.usable[k]) continue;
-    const int s = std::min(kSlices - 1, static_cast<int>((flight.time_s[k] - t0) / span * kSlices));
-    slices[static_cast<std::size_t>(s)].add(readings[k], flight.omega[k], inverse_sigma);
-  }
-  for (int s = 0; s < kSlices; ++s) {
-    TimeSlice slice;
-    slice.from_s = t0 + span * s / kSlices;
-    slice.to_s = t0 + span * (s + 1) / kSlices;
-    slice.rms_da_deg = slices[static_cast<std::size_t>(s)].rms_da_deg();
-    slice.rms_rel_err = slices[static_cast<std::size_t>(s)].rms_rel_err();
-    where.slices.push_back(slice);
-  }
-}
 
 // The flight's identity and sampling, before any judging.
 FlightDiagnosis describe_flight(const Flight& flight) {

@@ -3,12 +3,14 @@
 // leave-one-flight-out rule (flights_left_out.hpp). Only flights that could be judged on
 // their own take part; with one of them the session is that flight's own analysis.
 #include <algorithm>
-#include <cctype>
-#include <cmath>
 #include <optional>
+#include <string>
 
 #include "common/parallel_for.hpp"
 #include "diagnose/4_judge/baseline_gap.hpp"
+#include "diagnose/4_judge/flight_agreement.hpp"
+#include "diagnose/4_judge/flip_period_summary.hpp"
+#include "diagnose/4_judge/onset.hpp"
 #include "diagnose/5_flow/diagnosis.hpp"
 #include "diagnose/5_flow/flights_left_out.hpp"
 #include "diagnose/5_flow/judge_candidates.hpp"
@@ -38,45 +40,6 @@ EffectFit per_flight_nominal_fit(const PooledData& pool) {
   return fit;
 }
 
-// Where most flights agree on an effect and the pool does not, which flights disagree
-// (and where the pool agrees, which flights name something else).
-void note_disagreeing_flights(Analysis& pooled, const PooledData& pool) {
-  std::vector<Effect> named;
-  for (const Analysis* a : pool.own) named.push_back(a->verdict.effect);
-  Effect majority = Effect::none;
-  std::size_t most = 0;
-  for (Effect e : named) {
-    const std::size_t votes = static_cast<std::size_t>(std::count(named.begin(), named.end(), e));
-    if (votes > most) {
-      most = votes;
-      majority = e;
-    }
-  }
-  const std::vector<Effect>& same = pooled.verdict.equivalent;
-  const bool pool_agrees = std::find(same.begin(), same.end(), majority) != same.end();
-  std::string names;
-  for (std::size_t j = 0; j < pool.judged.flights.size(); ++j) {
-    const Effect own = pool.own[j]->verdict.effect;
-    if (std::find(same.begin(), same.end(), own) != same.end()) continue;
-    names += (names.empty() ? "" : ", ") + pool.judged.flights[j]->name + " (" + effect_name(own) + ")";
-  }
-  if (names.empty()) return;
-  if (!pool_agrees && 2 * most > named.size()) {
-    pooled.notes.push_back(std::to_string(most) + " of " + std::to_string(named.size()) + " flights name " +
-                           effect_name(majority) +
-                           " but the pool does not; flights that disagree with the pool: " + names);
-  } else {
-    pooled.notes.push_back("flights whose own verdict differs from the pool's: " + names);
-  }
-}
-
-bool mentions_intermediate(const std::string& comment) {
-  std::string lower = comment;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return lower.find("intermediate") != std::string::npos;
-}
-
 // Flip periods per flight, nominal and with the pooled final model (its parameters
 // fitted without that flight), from the first sample and from the flight's fitted
 // initial state under each model (flip_period.hpp).
@@ -84,8 +47,9 @@ void add_flip_periods(SessionDiagnosis& session, const PooledData& pool, const E
                       const std::vector<Flight>& flights, const NominalInertia& nominal) {
   const Analysis& a = session.pooled;
   const Candidate* final_model =
-      a.verdict.effect != Effect::none && a.model.heldout_theta.size() == pool.judged.flights.size() ? &a.model
-                                                                                              : nullptr;
+      a.verdict.effect != Effect::none && a.model.heldout_theta.size() == pool.judged.flights.size()
+          ? &a.model
+          : nullptr;
   const EffectModel model = final_model != nullptr ? model_of(final_model->fit, nominal, 0) : EffectModel();
   for (std::size_t i = 0; i < flights.size(); ++i) {
     const auto it = std::find(pool.judged.flights.begin(), pool.judged.flights.end(), &flights[i]);
@@ -105,32 +69,13 @@ void add_flip_periods(SessionDiagnosis& session, const PooledData& pool, const E
     session.flights[i].flip_period =
         flip_period(flights[i], nominal, &model, held.theta, &nominal_start, &start.flights.front());
   }
-  bool any_intermediate = false;
-  for (const Flight& f : flights) any_intermediate = any_intermediate || mentions_intermediate(f.comment);
-  FlipPeriodSummary summary;
+  std::vector<std::string> comments;
+  std::vector<std::optional<FlipPeriod>> periods;
   for (std::size_t i = 0; i < flights.size(); ++i) {
-    const auto& fp = session.flights[i].flip_period;
-    if (!fp || (any_intermediate && !mentions_intermediate(flights[i].comment))) continue;
-    ++summary.flights;
-    summary.mean_error_nominal += fp->nominal_error();
-    if (fp->diagnosed_s) {
-      ++summary.diagnosed_flights;
-      summary.mean_error_diagnosed += fp->error(*fp->diagnosed_s);
-    }
-    if (fp->nominal_fitted_s && fp->diagnosed_fitted_s) {
-      ++summary.fitted_flights;
-      summary.mean_error_nominal_fitted += fp->error(*fp->nominal_fitted_s);
-      summary.mean_error_diagnosed_fitted += fp->error(*fp->diagnosed_fitted_s);
-    }
+    comments.push_back(flights[i].comment);
+    periods.push_back(session.flights[i].flip_period);
   }
-  if (summary.flights == 0) return;
-  summary.mean_error_nominal /= summary.flights;
-  if (summary.diagnosed_flights > 0) summary.mean_error_diagnosed /= summary.diagnosed_flights;
-  if (summary.fitted_flights > 0) {
-    summary.mean_error_nominal_fitted /= summary.fitted_flights;
-    summary.mean_error_diagnosed_fitted /= summary.fitted_flights;
-  }
-  session.flip_period = summary;
+  session.flip_period = summarize_flip_periods(comments, periods);
 }
 
 // Only flights that could be judged on their own take part in the pooled analysis; the
@@ -176,22 +121,6 @@ void describe_pooled_baseline(Analysis& analysis, const PooledData& pool, const 
   baseline.describe(analysis);
 }
 
-// Onset of a session: the median of the flights' onsets, relative to each flight's start.
-void set_pooled_onset(SessionDiagnosis& session) {
-  Analysis& analysis = session.pooled;
-  std::vector<double> onsets;
-  for (const FlightDiagnosis& d : session.flights) {
-    if (d.analysis.where.onset_s) onsets.push_back(*d.analysis.where.onset_s - d.start_s);
-  }
-  if (analysis.verdict.effect != Effect::none && !onsets.empty()) {
-    std::nth_element(onsets.begin(), onsets.begin() + static_cast<std::ptrdiff_t>(onsets.size() / 2),
-                     onsets.end());
-    analysis.where.onset_s = onsets[onsets.size() / 2];
-    analysis.notes.push_back(
-        "pooled where.onset_s is the median over flights, seconds after each flight's start");
-  }
-}
-
 }  // namespace
 
 SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const NominalInertia& nominal,
@@ -225,9 +154,14 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
   for (const FlightDiagnosis& d : session.flights) resolution = std::max(resolution, d.noise.resolution);
   judge_candidates(analysis, pool.judged.ranking_context(nominal, resolution),
                    FlightsLeftOut(pool.judged, pool.own, nominal, none_all, workers));
-  note_disagreeing_flights(analysis, pool);
+  note_disagreeing_flights(analysis, pool.judged.flights, pool.own);
   add_flip_periods(session, pool, none_all, flights, nominal);
-  set_pooled_onset(session);
+  // Onsets relative to each flight's start: the flights' clocks need not be one.
+  std::vector<double> onsets;
+  for (const FlightDiagnosis& d : session.flights) {
+    if (d.analysis.where.onset_s) onsets.push_back(*d.analysis.where.onset_s - d.start_s);
+  }
+  set_median_onset(analysis, std::move(onsets));
   return session;
 }
 
