@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "common/parallel_for.hpp"
+#include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/4_judge/tensor_intervals.hpp"
 
 namespace aloft::host::diagnose {
@@ -111,7 +112,7 @@ Candidate FlightsLeftOut::evaluate(const Candidate& base, Effect added) const {
   Candidate c;
   c.effect = added;
   c.base = model_effects(model_of(base.fit, nominal_, 0));
-  if (added == Effect::impulse) {
+  if (!describe(added).shared_by_flights) {
     c.evaluated = false;
     c.note = "per flight only: an impulse is not shared by the flights of a session";
     return c;
