@@ -23,6 +23,7 @@
 #include "diagnose/6_report/corrected_body.hpp"
 #include "diagnose/6_report/gap_plot.hpp"
 #include "diagnose/6_report/report_json.hpp"
+#include "diagnose/6_report/report_text.hpp"
 #include "diagnose/terminal_progress.hpp"
 #include "readers/accel_at_rest.hpp"
 #include "readers/imu_csv_reader.hpp"

@@ -112,6 +112,32 @@ TEST_CASE("each effect's JSON has its SPEC §4 keys, and none has none", "[effec
   }
 }
 
+TEST_CASE("a start grid is complete: starts and a joining start of the effect's size, minima told apart",
+          "[effect_descriptor]") {
+  int grids = 0;
+  for (Effect e : registered_effects()) {
+    const EffectDescriptor& d = describe(e);
+    CAPTURE(d.name);
+    if (d.start_grid == nullptr) continue;
+    ++grids;
+    // A grid stands in for a zero start that is no model: only where theta = 0 is not nominal.
+    CHECK_FALSE(d.neutral_at_zero);
+    REQUIRE(d.start_grid->starts != nullptr);
+    REQUIRE(d.start_grid->joining != nullptr);
+    CHECK(d.start_grid->distinct > 0.0);
+    const std::vector<Eigen::VectorXd> starts = d.start_grid->starts();
+    CHECK(starts.size() >= 2);
+    for (const Eigen::VectorXd& s : starts) {
+      CHECK(s.size() == d.parameter_count);
+      CHECK(s.allFinite());
+    }
+    CHECK(d.start_grid->joining().size() == d.parameter_count);
+    CHECK(d.start_grid->joining().allFinite());
+  }
+  CHECK(grids >= 1);                                         // the damping rotor's
+  CHECK_FALSE(describe(Effect::impulse).shared_by_flights);  // a knock belongs to one flight
+}
+
 TEST_CASE("SPEC §4's classes a gyro cannot split, and no sensor effect for motion capture",
           "[effect_descriptor]") {
   using V = std::vector<Effect>;

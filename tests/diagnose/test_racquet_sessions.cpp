@@ -14,7 +14,7 @@
 #include "common/body_file.hpp"
 #include "diagnose/5_flow/diagnosis.hpp"
 #include "diagnose/1_input/flight_input.hpp"
-#include "diagnose/6_report/report_json.hpp"
+#include "diagnose/6_report/report_text.hpp"
 #include "readers/imu_csv_reader.hpp"
 #include "readers/segments.hpp"
 

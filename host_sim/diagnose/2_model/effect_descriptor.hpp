@@ -65,6 +65,18 @@ struct EffectHooks {
 // (4_judge/plausibility.hpp).
 constexpr double kLargestSensibleScaleError = 0.30;
 
+// Where the fitter starts an effect whose parameters enter non-linearly and whose
+// neutral model is a limit rather than a point (neutral_at_zero false): each start of a
+// grid gets a few iterations, the best is refined, and the best start that reached
+// another minimum is refined too and reported (3_fit/effect_fit.hpp, OtherMinimum).
+struct StartGrid {
+  std::vector<Eigen::VectorXd> (*starts)() = nullptr;  // in the order that breaks a tie
+  // Two minima are distinct when a parameter differs by more than this (theta units).
+  double distinct = 0.0;
+  // The effect's parameters when it joins a compound model (one fit from there, no grid).
+  Eigen::VectorXd (*joining)() = nullptr;
+};
+
 struct EffectDescriptor {
   const char* name = nullptr;  // the SPEC §4 name, also the report's
   // Parameters in theta (flight_model.hpp), scaled so that a unit change moves the
@@ -78,6 +90,11 @@ struct EffectDescriptor {
   bool starts_at_release = false;  // the fitted initial rate is the first sample's
   bool neutral_at_zero = true;     // theta = 0 is the nominal model
   bool rotation_gauge = false;     // a rotation: turns that change nothing are no parameter
+  // Shared by the flights of a session (false: it belongs to one flight, as a knock does,
+  // and is fitted per flight only).
+  bool shared_by_flights = true;
+  // Not started at zero but from a grid (nullptr: zero, or the caller's start).
+  const StartGrid* start_grid = nullptr;
   // Effects a gyro alone cannot tell from this one whatever the flight (SPEC §4), padded
   // with `none`.
   std::array<Effect, 2> gyro_equivalents{};

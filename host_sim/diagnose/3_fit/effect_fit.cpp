@@ -313,26 +313,24 @@ std::optional<Refined> other_impulse_time(Setup& setup, int p, const std::vector
   return Refined{minimise(problem_of(setup, p), other->theta, other->rates), setup.impulse_time_s};
 }
 
-// Two rotors are other minima when their log-size or log-rate differ by more than this
-// (a factor of two).
-constexpr double kDistinctRotor = 0.7;
-
-bool distinct_rotor(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-  return a.size() == b.size() && (a - b).cwiseAbs().maxCoeff() > kDistinctRotor;
+// Two minima of a start grid differ by more than the grid's `distinct` in a parameter.
+bool distinct_minima(const Eigen::VectorXd& a, const Eigen::VectorXd& b, const StartGrid& grid) {
+  return a.size() == b.size() && (a - b).cwiseAbs().maxCoeff() > grid.distinct;
 }
 
-// The best start of the damping grid that had reached another rotor than the chosen one,
+// The best start of the grid that had reached another minimum than the chosen one,
 // refined, when it came within the window and stayed distinct.
-std::optional<Refined> other_rotor(const ArrowProblem& problem, const std::vector<Trial>& trials,
-                                   const Trial& best, const Eigen::VectorXd& chosen) {
+std::optional<Refined> other_grid_minimum(const ArrowProblem& problem, const std::vector<Trial>& trials,
+                                          const Trial& best, const Eigen::VectorXd& chosen,
+                                          const StartGrid& grid) {
   const Trial* other = nullptr;
   for (const Trial& t : trials) {
-    if (&t == &best || !distinct_rotor(t.theta, best.theta)) continue;
+    if (&t == &best || !distinct_minima(t.theta, best.theta, grid)) continue;
     if (other == nullptr || t.cost < other->cost) other = &t;
   }
   if (other == nullptr || !within_window(other->cost, best.cost)) return std::nullopt;
   LeastSquaresResult r = minimise(problem, other->theta, other->rates);
-  if (!distinct_rotor(r.shared, chosen)) return std::nullopt;
+  if (!distinct_minima(r.shared, chosen, grid)) return std::nullopt;
   return Refined{std::move(r), 0.0};
 }
 
@@ -423,28 +421,23 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::ve
   const bool seeded = theta_start != nullptr && theta_start->size() == p;
   Eigen::VectorXd theta = seeded ? *theta_start : Eigen::VectorXd::Zero(p);
   const std::vector<Eigen::VectorXd> rates = starting_rates(setup, nominal_fit, theta);
-  if (!seeded && effect == Effect::internal_damping) {
-    // The rotor's size and coupling enter non-linearly, and "no rotor" is a limit, not a
-    // point: start from the best of a small grid of plausible rotors, each given a few
-    // iterations with the initial rate free (a tumbling flight's nominal fit can be far
-    // from the rate that suits a damped one).
+  const StartGrid* grid = describe(effect).start_grid;
+  if (!seeded && grid != nullptr) {
+    // The best of the descriptor's starts, each given a few iterations with the initial
+    // rate free.
     LeastSquaresOptions quick;
     quick.max_iterations = 4;
     quick.normal_at_solution = false;  // only the costs are compared
     std::vector<Trial> trials;
-    for (double fraction : {0.03, 0.1, 0.3}) {
-      for (double rate : {3.0, 10.0, 30.0, 100.0}) {
-        Eigen::VectorXd trial(2);
-        trial << std::log(fraction / 0.9 / (1.0 - fraction / 0.9)), std::log(rate);
-        const LeastSquaresResult r = minimise(problem, trial, rates, quick);
-        trials.push_back({trials.size(), r.cost, r.shared, r.local});
-      }
+    for (const Eigen::VectorXd& trial : grid->starts()) {
+      const LeastSquaresResult r = minimise(problem, trial, rates, quick);
+      trials.push_back({trials.size(), r.cost, r.shared, r.local});
     }
     // The first of equal costs: the grid's order, not the last bits, breaks a tie.
     const Trial& best = *std::min_element(trials.begin(), trials.end(),
                                           [](const Trial& a, const Trial& b) { return a.cost < b.cost; });
     Refined chosen{minimise(problem, best.theta, best.rates), 0.0};
-    std::optional<Refined> other = other_rotor(problem, trials, best, chosen.result.shared);
+    std::optional<Refined> other = other_grid_minimum(problem, trials, best, chosen.result.shared, *grid);
     return keep_lower(setup, p, std::move(chosen), std::move(other));
   }
   return result_of(setup, minimise(problem, theta, rates), p);
@@ -480,8 +473,9 @@ EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalIne
   theta.head(base.theta.size()) = base.theta;
   if (theta_start != nullptr && theta_start->size() == p) {
     theta = *theta_start;
-  } else if (added == Effect::internal_damping) {
-    theta.tail<2>() << std::log(0.1 / 0.9 / (1.0 - 0.1 / 0.9)), std::log(10.0);
+  } else if (const StartGrid* grid = describe(added).start_grid) {
+    const Eigen::VectorXd joining = grid->joining();
+    theta.tail(joining.size()) = joining;
   }
   return result_of(setup, minimise(problem, theta, rates), p);
 }

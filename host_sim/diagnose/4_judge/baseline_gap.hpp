@@ -27,4 +27,9 @@ class BaselineGap {
   int body_samples_ = 0;
 };
 
+// The nominal model's gap (`readings`) in ten slices of the flight's time: where along the
+// flight it grows (where.slices).
+void describe_slices(const Flight& flight, const std::vector<Eigen::Vector3d>& readings,
+                     const Eigen::Vector3d& inverse_sigma, Where& where);
+
 }  // namespace aloft::host::diagnose

@@ -9,8 +9,9 @@
 // found within each step.
 //
 // The selection does not know how candidates are fitted or held out: the caller passes
-// an evaluator (per flight: interleaved folds, diagnosis.cpp; a session: leave one flight
-// out), so both analyses share one implementation of the rule.
+// an evaluator (the held-out rule of 5_flow/judge_candidates.hpp: interleaved folds for
+// one flight, leave one flight out for a session), so both share one implementation of
+// the rule.
 #pragma once
 
 #include <functional>

@@ -1,7 +1,5 @@
 #include "diagnose/4_judge/tensor_intervals.hpp"
 
-#include "diagnose/4_judge/confidence.hpp"
-
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -192,12 +190,6 @@ bool pooled_tensor_report(const Analysis& pooled, const std::vector<const Flight
   r.method = "jackknife over flights (Student t, n-1 dof), never narrower than the pooled fit's covariance";
   report = r;
   return true;
-}
-
-void attach_flight_tensor_report(Analysis& analysis, const Flight& flight, const NominalInertia& nominal) {
-  TensorReport report;
-  if (flight_tensor_report(analysis, {&flight}, nominal, report)) analysis.tensor = report;
-  temper_confidence(analysis);
 }
 
 }  // namespace aloft::host::diagnose

@@ -27,10 +27,6 @@ namespace aloft::host::diagnose {
 bool flight_tensor_report(const Analysis& analysis, const std::vector<const Flight*>& flights,
                           const NominalInertia& nominal, TensorReport& report);
 
-// Sets analysis.tensor from the flight's report (when there is one) and tempers the
-// verdict's confidence with it (temper_confidence, confidence.hpp).
-void attach_flight_tensor_report(Analysis& analysis, const Flight& flight, const NominalInertia& nominal);
-
 // The pooled report of a session: jackknife over the flights' leave-one-out fits.
 bool pooled_tensor_report(const Analysis& pooled, const std::vector<const Flight*>& flights,
                           const NominalInertia& nominal, TensorReport& report);

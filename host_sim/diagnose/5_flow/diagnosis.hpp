@@ -16,6 +16,7 @@
 #include "diagnose/4_judge/analysis.hpp"
 #include "diagnose/4_judge/confidence.hpp"
 #include "diagnose/4_judge/flip_period.hpp"
+#include "diagnose/4_judge/flip_period_summary.hpp"
 #include "diagnose/4_judge/noise_floor.hpp"
 
 namespace aloft::host::diagnose {
@@ -34,21 +35,6 @@ struct FlightDiagnosis {
   // Session only: the flip period measured and predicted (flip_period.hpp), nominal and
   // with the pooled final model fitted without this flight.
   std::optional<FlipPeriod> flip_period;
-};
-
-// Mean relative flip-period error over the flights of a session that flip about the
-// intermediate axis (segment comment says "intermediate"; all flights with a period if
-// none says so).
-struct FlipPeriodSummary {
-  int flights = 0;
-  // From the first sample (flip_period.hpp).
-  double mean_error_nominal = 0.0;
-  double mean_error_diagnosed = 0.0;  // over the same flights
-  int diagnosed_flights = 0;
-  // From each flight's fitted initial state, over the flights with both predictions.
-  double mean_error_nominal_fitted = 0.0;
-  double mean_error_diagnosed_fitted = 0.0;
-  int fitted_flights = 0;
 };
 
 struct SessionDiagnosis {

@@ -47,6 +47,7 @@ constexpr EffectDescriptor impulse_effect = [] {
   d.name = "impulse";
   d.parameter_count = 3;
   d.searched_parameters = 1;
+  d.shared_by_flights = false;
   d.hooks = {tolerance, apply, parameters, text, json, too_small, no_objection, no_physics_objection};
   return d;
 }();

@@ -50,6 +50,32 @@ nlohmann::json json(const EffectParameters& p) {
 // No bar of its own: the shrink of the held-out gap decides.
 std::string too_small(const EffectParameters&, const SignificanceScale&) { return {}; }
 
+// theta of a rotor of `fraction` of 0.9 I_min (the logistic's inverse) coupled at `rate`.
+Eigen::VectorXd rotor_theta(double fraction, double rate) {
+  Eigen::VectorXd theta(2);
+  theta << std::log(fraction / 0.9 / (1.0 - fraction / 0.9)), std::log(rate);
+  return theta;
+}
+
+// The rotor's size and coupling enter non-linearly, and "no rotor" is a limit, not a
+// point: a small grid of plausible rotors, each given a few iterations with the initial
+// rate free (a tumbling flight's nominal fit can be far from the rate that suits a damped
+// one).
+std::vector<Eigen::VectorXd> plausible_rotors() {
+  std::vector<Eigen::VectorXd> starts;
+  for (double fraction : {0.03, 0.1, 0.3}) {
+    for (double rate : {3.0, 10.0, 30.0, 100.0}) starts.push_back(rotor_theta(fraction, rate));
+  }
+  return starts;
+}
+
+// Joining a model: the grid's middle rotor.
+Eigen::VectorXd middle_rotor() { return rotor_theta(0.1, 10.0); }
+
+// Two rotors are other minima when their log-size or log-rate differ by more than this
+// (a factor of two).
+constexpr StartGrid kRotorGrid{plausible_rotors, 0.7, middle_rotor};
+
 }  // namespace
 
 constexpr EffectDescriptor internal_damping_effect = [] {
@@ -58,6 +84,7 @@ constexpr EffectDescriptor internal_damping_effect = [] {
   d.parameter_count = 2;
   d.starts_at_release = true;
   d.neutral_at_zero = false;
+  d.start_grid = &kRotorGrid;
   d.hooks = {tolerance, apply, parameters, text, json, too_small, no_objection, no_physics_objection};
   return d;
 }();

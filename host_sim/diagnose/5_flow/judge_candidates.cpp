@@ -1,0 +1,25 @@
+#include "diagnose/5_flow/judge_candidates.hpp"
+
+#include "diagnose/4_judge/confidence.hpp"
+#include "diagnose/4_judge/plausibility.hpp"
+#include "diagnose/4_judge/stepwise_selection.hpp"
+
+namespace aloft::host::diagnose {
+
+void judge_candidates(Analysis& analysis, const RankingContext& context, const HeldOutRule& rule) {
+  const CandidateEvaluator evaluate = [&](const Candidate& base, Effect added) {
+    return rule.evaluate(base, added);
+  };
+  const Candidate nominal_model = rule.nominal_model();
+  for (Effect effect : candidate_effects(context.gyro_input)) {
+    analysis.candidates.push_back(effect == Effect::none ? nominal_model : evaluate(nominal_model, effect));
+  }
+  rule_out_senseless(analysis.candidates);
+  rank_candidates(analysis, context);
+  select_stepwise(analysis, context, evaluate);
+  TensorReport tensor;
+  if (rule.tensor_report(analysis, tensor)) analysis.tensor = tensor;
+  temper_confidence(analysis);
+}
+
+}  // namespace aloft::host::diagnose
