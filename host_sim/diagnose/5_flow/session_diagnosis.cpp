@@ -8,6 +8,7 @@
 
 #include "common/parallel_for.hpp"
 #include "diagnose/4_judge/baseline_gap.hpp"
+#include "diagnose/4_judge/between_flight_scatter.hpp"
 #include "diagnose/4_judge/flight_agreement.hpp"
 #include "diagnose/4_judge/flip_period_summary.hpp"
 #include "diagnose/4_judge/onset.hpp"
@@ -155,6 +156,7 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
   judge_candidates(analysis, pool.judged.ranking_context(nominal, resolution),
                    FlightsLeftOut(pool.judged, pool.own, nominal, none_all, workers));
   note_disagreeing_flights(analysis, pool.judged.flights, pool.own);
+  note_between_flight_scatter(analysis, pool.own);
   add_flip_periods(session, pool, none_all, flights, nominal);
   // Onsets relative to each flight's start: the flights' clocks need not be one.
   std::vector<double> onsets;

@@ -1,0 +1,78 @@
+#include "diagnose/4_judge/between_flight_scatter.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+
+#include "diagnose/2_model/printf_text.hpp"
+
+namespace aloft::host::diagnose {
+namespace {
+
+const Candidate* own_candidate(const Analysis& a, Effect effect) {
+  for (const Candidate& c : a.candidates) {
+    if (c.effect == effect && c.base.empty() && c.evaluated) return &c;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+std::optional<BetweenFlightScatter> between_flight_scatter(Effect effect,
+                                                           const std::vector<const Analysis*>& flights) {
+  std::vector<Eigen::VectorXd> theta;
+  std::vector<Eigen::MatrixXd> precision;
+  std::vector<double> shrinks;
+  for (const Analysis* a : flights) {
+    const Candidate* c = a ? own_candidate(*a, effect) : nullptr;
+    if (!c || c->fit.theta_covariance.rows() != c->fit.theta.size() || c->fit.theta.size() == 0) continue;
+    theta.push_back(c->fit.theta);
+    precision.push_back(c->fit.theta_covariance.completeOrthogonalDecomposition().pseudoInverse());
+    shrinks.push_back(c->shrink);
+  }
+  const int n = static_cast<int>(theta.size());
+  if (n < 3) return std::nullopt;
+  const Eigen::Index p = theta.front().size();
+  Eigen::MatrixXd weight = Eigen::MatrixXd::Zero(p, p);
+  Eigen::VectorXd weighted = Eigen::VectorXd::Zero(p);
+  for (int j = 0; j < n; ++j) {
+    weight += precision[j];
+    weighted += precision[j] * theta[j];
+  }
+  const Eigen::VectorXd mean = weight.completeOrthogonalDecomposition().solve(weighted);
+  double chi_square = 0.0;
+  for (int j = 0; j < n; ++j) chi_square += (theta[j] - mean).dot(precision[j] * (theta[j] - mean));
+  BetweenFlightScatter out;
+  out.effect = effect;
+  out.flights = n;
+  out.chi_square_per_dof = chi_square / (static_cast<double>(n - 1) * static_cast<double>(p));
+  std::nth_element(shrinks.begin(), shrinks.begin() + n / 2, shrinks.end());
+  out.median_own_shrink = shrinks[static_cast<std::size_t>(n / 2)];
+  return out;
+}
+
+std::string between_flight_scatter_note(const BetweenFlightScatter& s, double pooled_shrink) {
+  return printf_text("the pooled model shrinks the held-out gap by %.0f %%, its flights' own fits of ",
+                     100.0 * pooled_shrink) +
+         effect_name(s.effect) +
+         printf_text(" by %.0f %% (median of %.0f): their parameters scatter %.3g x beyond their own "
+                     "uncertainty",
+                     100.0 * s.median_own_shrink, static_cast<double>(s.flights), s.chi_square_per_dof) +
+         " (chi-square per degree of freedom between flights; 1 if they shared one value), and a model shared "
+         "by every flight, judged on the flight it left out, cannot follow each";
+}
+
+void note_between_flight_scatter(Analysis& pooled, const std::vector<const Analysis*>& own) {
+  const Verdict& v = pooled.verdict;
+  if (v.effect == Effect::none || !(v.heldout_rms_rel_err_before > 0.0)) return;
+  const std::optional<BetweenFlightScatter> scatter = between_flight_scatter(v.effect, own);
+  if (!scatter) return;
+  const double pooled_shrink = 1.0 - v.heldout_rms_rel_err_after / v.heldout_rms_rel_err_before;
+  if (pooled_shrink >= kPooledFallsShort * scatter->median_own_shrink ||
+      scatter->chi_square_per_dof <= kFlightsDisagree) {
+    return;
+  }
+  pooled.notes.push_back(between_flight_scatter_note(*scatter, pooled_shrink));
+}
+
+}  // namespace aloft::host::diagnose
