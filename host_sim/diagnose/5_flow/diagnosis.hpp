@@ -1,7 +1,9 @@
 // The diagnosis of the sim-to-real gap (SPEC §4): where the measured motion leaves the
 // nominal torque-free model, which candidate effect explains the gap on data the fit did
 // not see, and how far the gap shrinks with it.
-// The judged analysis each holds is 4_judge/analysis.hpp.
+// The judged analysis each holds is 4_judge/analysis.hpp; both are made by one candidate
+// loop (judge_candidates.hpp), a flight's held out within it, a session's by leaving one
+// flight out.
 #pragma once
 
 #include <cstddef>

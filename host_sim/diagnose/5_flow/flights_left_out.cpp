@@ -13,21 +13,6 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-void fill_heldout_figures(Candidate& c, const std::vector<GapSums>& sums) {
-  GapSums total;
-  for (const GapSums& s : sums) {
-    total.chi_square += s.chi_square;
-    total.residuals += s.residuals;
-    total.da_sq += s.da_sq;
-    total.rel_sq += s.rel_sq;
-    total.samples += s.samples;
-  }
-  c.heldout_chi_square = total.chi_square;
-  c.heldout_residuals = total.residuals;
-  c.heldout_rms_da_deg = total.rms_da_deg();
-  c.heldout_rms_rel_err = total.rms_rel_err();
-}
-
 // The median over flights of each parameter of the flights' own fits of `effect`.
 std::optional<Eigen::VectorXd> median_of_flights(Effect effect, const std::vector<const Analysis*>& own) {
   std::vector<Eigen::VectorXd> thetas;
@@ -70,7 +55,7 @@ Candidate FlightsLeftOut::nominal_model() const {
     c.heldout_readings.push_back(heldout);
     c.heldout_theta.push_back(Eigen::VectorXd());
   }
-  fill_heldout_figures(c, sums);
+  set_heldout_gap(c, sums);
   return c;
 }
 
@@ -105,7 +90,7 @@ void FlightsLeftOut::judge_leaving_flights_out(Candidate& c) const {
         [&](std::size_t f) { return fit_initial_rates(others, nominal_, {flights_.train[j][f]}, &none_j); },
         sums[j]);
   });
-  fill_heldout_figures(c, sums);
+  set_heldout_gap(c, sums);
 }
 
 Candidate FlightsLeftOut::evaluate(const Candidate& base, Effect added) const {

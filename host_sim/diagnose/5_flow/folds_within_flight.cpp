@@ -22,10 +22,7 @@ void FoldsWithinFlight::judge_held_out(Candidate& c, const JudgedFlights::FoldFi
         return c.fold_fits.back();
       },
       sums));
-  c.heldout_chi_square = sums.chi_square;
-  c.heldout_residuals = sums.residuals;
-  c.heldout_rms_da_deg = sums.rms_da_deg();
-  c.heldout_rms_rel_err = sums.rms_rel_err();
+  set_heldout_gap(c, {sums});
 }
 
 Candidate FoldsWithinFlight::nominal_model() const {

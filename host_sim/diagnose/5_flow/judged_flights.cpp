@@ -26,6 +26,21 @@ std::vector<Eigen::Vector3d> JudgedFlights::judge_folds(std::size_t j, const Nom
   return heldout;
 }
 
+void set_heldout_gap(Candidate& c, const std::vector<GapSums>& per_flight) {
+  GapSums total;
+  for (const GapSums& s : per_flight) {
+    total.chi_square += s.chi_square;
+    total.residuals += s.residuals;
+    total.da_sq += s.da_sq;
+    total.rel_sq += s.rel_sq;
+    total.samples += s.samples;
+  }
+  c.heldout_chi_square = total.chi_square;
+  c.heldout_residuals = total.residuals;
+  c.heldout_rms_da_deg = total.rms_da_deg();
+  c.heldout_rms_rel_err = total.rms_rel_err();
+}
+
 RankingContext JudgedFlights::ranking_context(const NominalInertia& nominal, double resolution) const {
   double speed_sum = 0.0, duration_sum = 0.0;
   for (const Flight* f : flights) {

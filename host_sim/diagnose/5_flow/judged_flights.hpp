@@ -42,4 +42,7 @@ struct JudgedFlights {
   RankingContext ranking_context(const NominalInertia& nominal, double resolution) const;
 };
 
+// Sets c.heldout_* from the held-out gaps of every flight, summed in flight order.
+void set_heldout_gap(Candidate& c, const std::vector<GapSums>& per_flight);
+
 }  // namespace aloft::host::diagnose

@@ -1,0 +1,125 @@
+// diagnose/4_judge: what a session's verdict says of its flights, moved out of the flow
+// (issue 30): the mean flip-period errors (flip_period_summary), the note on flights that
+// disagree with the pool (flight_agreement), and the onsets (onset).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diagnose/4_judge/flight_agreement.hpp"
+#include "diagnose/4_judge/flip_period_summary.hpp"
+#include "diagnose/4_judge/onset.hpp"
+
+using namespace aloft::host::diagnose;
+
+namespace {
+
+FlipPeriod period(double measured, double nominal, std::optional<double> diagnosed = std::nullopt) {
+  FlipPeriod p;
+  p.measured_s = measured;
+  p.nominal_s = nominal;
+  p.diagnosed_s = diagnosed;
+  return p;
+}
+
+Flight named(const std::string& name) {
+  Flight f;
+  f.name = name;
+  return f;
+}
+
+Analysis saying(Effect effect) {
+  Analysis a;
+  a.verdict.effect = effect;
+  a.verdict.equivalent = {effect};
+  return a;
+}
+
+// A flight of `n` samples at 100 Hz whose readings sit at sigma = 1 from the model's
+// until `jump`, and `step` sigma away after it.
+Flight stepping_flight(std::size_t n, std::size_t jump, double step, std::vector<Eigen::Vector3d>& model) {
+  Flight f;
+  model.clear();
+  for (std::size_t k = 0; k < n; ++k) {
+    f.time_s.push_back(0.01 * static_cast<double>(k));
+    model.push_back(Eigen::Vector3d(1.0, 2.0, 3.0));
+    // |residual|^2 / 3 = 1 exactly before the jump: the chi-square excess is 0.
+    const double off = k < jump ? 1.0 : step;
+    f.omega.push_back(model.back() + Eigen::Vector3d(off, -off, off));
+    f.usable.push_back(1);
+  }
+  return f;
+}
+
+}  // namespace
+
+TEST_CASE("flip-period summary: the means over the flights that flip about the intermediate axis",
+          "[session_judging]") {
+  const std::vector<std::string> comments = {"intermediate, fast", "major axis", "Intermediate",
+                                             "intermediate"};
+  const std::vector<std::optional<FlipPeriod>> periods = {period(1.0, 1.2, 1.05), period(1.0, 3.0, 1.0),
+                                                          period(2.0, 2.2), std::nullopt};
+  const std::optional<FlipPeriodSummary> s = summarize_flip_periods(comments, periods);
+  REQUIRE(s);
+  CHECK(s->flights == 2);  // the major-axis flight and the one without a period left out
+  CHECK(s->mean_error_nominal == Approx((0.2 + 0.1) / 2));
+  CHECK(s->diagnosed_flights == 1);
+  CHECK(s->mean_error_diagnosed == Approx(0.05));
+  CHECK(s->fitted_flights == 0);
+
+  // No comment names the axis: every flight with a period counts.
+  const std::optional<FlipPeriodSummary> all = summarize_flip_periods({"", "", "", ""}, periods);
+  REQUIRE(all);
+  CHECK(all->flights == 3);
+  CHECK(all->mean_error_nominal == Approx((0.2 + 2.0 + 0.1) / 3));
+  CHECK_FALSE(summarize_flip_periods({"a"}, {std::nullopt}));
+}
+
+TEST_CASE("flights that disagree with the pool are named; a majority the pool overrules is said so",
+          "[session_judging]") {
+  const Flight a = named("a"), b = named("b"), c = named("c");
+  const std::vector<const Flight*> flights = {&a, &b, &c};
+  const Analysis bias = saying(Effect::gyro_bias), drag = saying(Effect::aero_torque);
+
+  Analysis pool = saying(Effect::gyro_bias);
+  note_disagreeing_flights(pool, flights, {&bias, &bias, &bias});
+  CHECK(pool.notes.empty());  // all agree
+
+  pool = saying(Effect::gyro_bias);
+  note_disagreeing_flights(pool, flights, {&bias, &drag, &bias});
+  REQUIRE(pool.notes.size() == 1);
+  CHECK(pool.notes[0] == "flights whose own verdict differs from the pool's: b (aero_torque)");
+
+  pool = saying(Effect::gyro_bias);
+  note_disagreeing_flights(pool, flights, {&drag, &drag, &bias});
+  REQUIRE(pool.notes.size() == 1);
+  CHECK(pool.notes[0] ==
+        "2 of 3 flights name aero_torque but the pool does not; flights that disagree with the pool: a "
+        "(aero_torque), b (aero_torque)");
+}
+
+TEST_CASE("onsets: the CUSUM alarms at a step and never on noise; a session takes the median",
+          "[session_judging]") {
+  std::vector<Eigen::Vector3d> model;
+  const Eigen::Vector3d unit_sigma(1.0, 1.0, 1.0);
+  const Flight quiet = stepping_flight(500, 500, 1.0, model);
+  CHECK_FALSE(cusum_onset(quiet, model, unit_sigma));
+  // After sample 200 the excess is 3^2 - 1 = 8 per sample: the sum passes 15 at the third
+  // sample, and the onset is where it last stood at zero, the jump itself.
+  const Flight stepping = stepping_flight(500, 200, 3.0, model);
+  const std::optional<double> onset = cusum_onset(stepping, model, unit_sigma);
+  REQUIRE(onset);
+  CHECK(*onset == Approx(2.0));
+
+  Analysis pool = saying(Effect::gyro_bias);
+  set_median_onset(pool, {0.4, 0.1, 0.3});
+  REQUIRE(pool.where.onset_s);
+  CHECK(*pool.where.onset_s == Approx(0.3));
+  CHECK(pool.notes.size() == 1);
+  pool = saying(Effect::none);  // no effect: no onset to give
+  set_median_onset(pool, {0.4, 0.1, 0.3});
+  CHECK_FALSE(pool.where.onset_s);
+  CHECK(pool.notes.empty());
+}
