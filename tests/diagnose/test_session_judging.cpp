@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "diagnose/4_judge/between_flight_scatter.hpp"
 #include "diagnose/4_judge/flight_agreement.hpp"
 #include "diagnose/4_judge/flip_period_summary.hpp"
 #include "diagnose/4_judge/onset.hpp"
@@ -122,4 +123,53 @@ TEST_CASE("onsets: the CUSUM alarms at a step and never on noise; a session take
   set_median_onset(pool, {0.4, 0.1, 0.3});
   CHECK_FALSE(pool.where.onset_s);
   CHECK(pool.notes.empty());
+}
+
+namespace {
+
+// A flight's own analysis with a candidate for `effect`: theta, covariance s^2 I, shrink.
+Analysis own_fit(Effect effect, const Eigen::Vector2d& theta, double s, double shrink) {
+  Analysis a;
+  Candidate c;
+  c.effect = effect;
+  c.fit.theta = theta;
+  c.fit.theta_covariance = Eigen::Matrix2d::Identity() * s * s;
+  c.shrink = shrink;
+  a.candidates.push_back(c);
+  return a;
+}
+
+Analysis pooled_verdict(Effect effect, double shrink) {
+  Analysis a = saying(effect);
+  a.verdict.heldout_rms_rel_err_before = 1.0;
+  a.verdict.heldout_rms_rel_err_after = 1.0 - shrink;
+  return a;
+}
+
+}  // namespace
+
+TEST_CASE("between-flight scatter: flights that share one value read about 1, flights that differ far more",
+          "[session]") {
+  // Five flights, each theta known to 0.01: offsets of about one standard error (a shared
+  // value), then of ten.
+  const double offsets[5][2] = {{0.8, -1.1}, {-0.6, 0.4}, {1.2, 0.9}, {-1.0, -0.3}, {-0.4, 0.1}};
+  for (double scale : {1.0, 10.0}) {
+    std::vector<Analysis> own;
+    for (const auto& o : offsets) {
+      own.push_back(own_fit(Effect::gyro_scale, Eigen::Vector2d(0.1 + 0.01 * scale * o[0], 0.2 + 0.01 * scale * o[1]),
+                            0.01, 0.44));
+    }
+    std::vector<const Analysis*> pointers;
+    for (const Analysis& a : own) pointers.push_back(&a);
+    const auto scatter = between_flight_scatter(Effect::gyro_scale, pointers);
+    REQUIRE(scatter);
+    CHECK(scatter->flights == 5);
+    CHECK(scatter->median_own_shrink == Approx(0.44));
+    // The offsets have mean 0 and squares summing to 5.88 over (5 - 1) x 2 degrees of
+    // freedom: 0.735, times the scale squared.
+    CHECK(scatter->chi_square_per_dof == Approx(0.735 * scale * scale));
+    Analysis pooled = pooled_verdict(Effect::gyro_scale, 0.35);
+    note_between_flight_scatter(pooled, pointers);
+    CHECK(pooled.notes.size() == (scale > 1.0 ? 1u : 0u));
+  }
 }
