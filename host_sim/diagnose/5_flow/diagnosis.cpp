@@ -197,7 +197,7 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
   }
   d.noise = estimate_noise_floor(flight);
   analysis.where.noise_floor = d.noise.sigma;
-  const Vec3 inverse_sigma = d.noise.sigma.cwiseInverse();
+  const Vec3 inverse_sigma = d.noise.weighting_sigma().cwiseInverse();
   const FlightJudge judge(flight, nominal, inverse_sigma);
   const EffectFit none_full = fit_effect(Effect::none, nominal, {judge.all()}, nullptr);
   describe_baseline(analysis, flight, nominal, d.noise, none_full);

@@ -264,7 +264,7 @@ PooledData pool_judged_flights(SessionDiagnosis& session, const std::vector<Flig
                                           : d.analysis.verdict.could_not_judge.front()));
       continue;
     }
-    const Vec3 inv = d.noise.sigma.cwiseInverse();
+    const Vec3 inv = d.noise.weighting_sigma().cwiseInverse();
     pool.flights.push_back(&flights[i]);
     pool.own.push_back(&d.analysis);
     pool.inverse_sigma.push_back(inv);
