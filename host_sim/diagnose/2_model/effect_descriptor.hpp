@@ -78,6 +78,10 @@ struct EffectDescriptor {
   bool starts_at_release = false;  // the fitted initial rate is the first sample's
   bool neutral_at_zero = true;     // theta = 0 is the nominal model
   bool rotation_gauge = false;     // a rotation: turns that change nothing are no parameter
+  // Tried as a candidate (single flights, the stepwise search, sessions). false: the effect
+  // is described (model, parameters, report) but not yet tried, because trying it took
+  // verdicts from other effects (docs/diagnose.md, "A rotor inside").
+  bool candidate = true;
   // Effects a gyro alone cannot tell from this one whatever the flight (SPEC §4), padded
   // with `none`.
   std::array<Effect, 2> gyro_equivalents{};
