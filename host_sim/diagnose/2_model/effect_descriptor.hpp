@@ -95,6 +95,10 @@ struct EffectDescriptor {
   bool shared_by_flights = true;
   // Not started at zero but from a grid (nullptr: zero, or the caller's start).
   const StartGrid* start_grid = nullptr;
+  // Tried as a candidate (single flights, the stepwise search, sessions). false: the effect
+  // is described (model, parameters, report) but not yet tried, because trying it took
+  // verdicts from other effects (docs/diagnose.md, "A rotor inside").
+  bool candidate = true;
   // Effects a gyro alone cannot tell from this one whatever the flight (SPEC §4), padded
   // with `none`.
   std::array<Effect, 2> gyro_equivalents{};

@@ -34,6 +34,8 @@ class FlightDynamics {
         has_jump_(terms.has_jump),
         time_factor_(terms.time_factor),
         jump_(terms.jump),
+        momentum_(terms.momentum),
+        has_momentum_(terms.momentum != Vec3::Zero()),
         bias_(terms.bias),
         scale_(terms.scale) {
     const Mat3 sensor_to_body = flight.sensor_to_body.toRotationMatrix();
@@ -48,12 +50,14 @@ class FlightDynamics {
 
   bool has_rotor() const { return rotor_ > 0.0; }
   bool has_jump() const { return has_jump_; }
+  bool has_momentum() const { return has_momentum_; }
   double time_factor() const { return time_factor_; }
 
   State rate(const State& x) const {
     const Vec3 w = x.head<3>();
     Vec3 torque = (shell_ * w).cross(w);
     if (drag_ != 0.0) torque -= drag_ * w.norm() * w;
+    if (has_momentum()) torque += momentum_.cross(w);
     State dx;
     if (has_rotor()) {
       const Vec3 wr = x.tail<3>();
@@ -71,6 +75,7 @@ class FlightDynamics {
   Vec3 rigid_rate(const Vec3& w) const {
     Vec3 torque = (shell_ * w).cross(w);
     if (drag_ != 0.0) torque -= drag_ * w.norm() * w;
+    if (has_momentum()) torque += momentum_.cross(w);
     return shell_inverse_ * torque;
   }
 
@@ -142,6 +147,12 @@ class FlightDynamics {
       const Eigen::Array2d speed = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
       for (std::size_t i = 0; i < 3; ++i) torque[i] -= drag_ * speed * x[i];
     }
+    if (has_momentum()) {  // momentum × w, a constant vector's cross with both lanes
+      const Eigen::Array2d h[3] = {Eigen::Array2d::Constant(momentum_(0)), Eigen::Array2d::Constant(momentum_(1)),
+                                   Eigen::Array2d::Constant(momentum_(2))};
+      const Lanes<3> gyroscopic = cross(h, x.data());
+      for (std::size_t i = 0; i < 3; ++i) torque[i] += gyroscopic[i];
+    }
     Lanes<N> dx;
     if constexpr (N == 3) {
       dx = times(shell_inverse_, torque[0], torque[1], torque[2]);
@@ -212,6 +223,8 @@ class FlightDynamics {
   bool has_jump_ = false;
   double time_factor_ = 1.0;
   Vec3 jump_ = Vec3::Zero();
+  Vec3 momentum_ = Vec3::Zero();
+  bool has_momentum_ = false;
   Vec3 bias_ = Vec3::Zero();
   Vec3 scale_ = Vec3::Ones();
 };

@@ -20,6 +20,9 @@ struct ModelTerms {
   double drag = 0.0;                               // tau = -drag |w| w, N·m·s²
   double rotor = 0.0;                              // rotor J, kg·m² (0: rigid body)
   double rotor_rate = 0.0;                         // coupling c / J, 1/s
+  // An internal rotor's angular momentum (a gyrostat), fixed in body axes, N·m·s:
+  // I·dw/dt + w × (I·w + momentum) = 0.
+  Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
   bool has_jump = false;                           // an impulse at the model's impulse_time_s
   Eigen::Vector3d jump = Eigen::Vector3d::Zero();  // rad/s; angular impulse I_nom * jump
   bool misaligned = false;                         // sensor->body becomes q_imu * misalignment

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "diagnose/1_input/time_gaps.hpp"
+#include "diagnose/4_judge/noise_spectrum.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -59,6 +62,146 @@ NoiseFloor floor_from_rest(const Flight& flight) {
   return floor;
 }
 
+// The spectrum's motion band ends at the first bin whose level is no more than
+// kSteepHalfOctave times that at 1.5 times its frequency: a tumble's harmonics fall faster
+// than that (12 dB over half an octave), a noise's spectrum slower (flat; 7 dB over half
+// an octave past a 2nd-order low-pass's cutoff).
+// Bins below kFirstNoiseBin hold the window's main lobe round the motion's lines.
+constexpr double kSteepHalfOctave = 15.0;
+constexpr std::size_t kFirstNoiseBin = 4;
+constexpr std::size_t kPlateauBins = 5;  // the level below the band is the mean of these
+// The differences understate a noise behind a low-pass (they see only the top of its
+// band): where the spectrum's floor is more than kUnderstated times theirs, it is taken.
+// White noise: the two agree within 15 % (the unfiltered flights of
+// tests/diagnose/test_filtered_noise_floor.cpp); behind a low-pass at 0.4 of the rate
+// (200 Hz at 1 kHz) the differences fall 5 times short.
+constexpr double kUnderstated = 1.5;
+
+struct SpectralFloor {
+  Eigen::Vector3d sigma = Eigen::Vector3d::Zero();
+  double correlation = 1.0;
+  double cutoff_hz = 0.0;  // the low-pass fitted (0: none)
+};
+
+// The longest run of usable samples with no time gap inside.
+std::vector<Eigen::Vector3d> longest_clean_run(const Flight& flight, const std::vector<char>& gap_after,
+                                               double& rate_hz) {
+  std::size_t best_first = 0, best_count = 0, first = 0;
+  for (std::size_t k = 0; k <= flight.size(); ++k) {
+    const bool ends = k == flight.size() || !flight.usable[k];
+    if (!ends && !(k + 1 < flight.size() && gap_after[k])) continue;
+    const std::size_t count = ends ? k - first : k + 1 - first;
+    if (count > best_count) {
+      best_first = first;
+      best_count = count;
+    }
+    first = k + 1;
+  }
+  rate_hz = 0.0;
+  if (best_count < 2) return {};
+  rate_hz = static_cast<double>(best_count - 1) /
+            (flight.time_s[best_first + best_count - 1] - flight.time_s[best_first]);
+  return std::vector<Eigen::Vector3d>(flight.omega.begin() + static_cast<std::ptrdiff_t>(best_first),
+                                      flight.omega.begin() + static_cast<std::ptrdiff_t>(best_first + best_count));
+}
+
+// The first bin above the motion's band (kSteepOctave), found on the three axes' sum
+// smoothed over kPlateauBins; 0 when the spectrum has none.
+std::size_t end_of_motion_band(const NoiseSpectrum& s) {
+  const std::size_t bins = s.density.size();
+  std::vector<double> smooth(bins, 0.0);
+  for (std::size_t j = 0; j < bins; ++j) {
+    const std::size_t from = j >= kPlateauBins / 2 ? j - kPlateauBins / 2 : 0;
+    const std::size_t to = std::min(bins, j + kPlateauBins / 2 + 1);
+    for (std::size_t i = from; i < to; ++i) smooth[j] += s.density[i].sum() / static_cast<double>(to - from);
+  }
+  for (std::size_t j = kFirstNoiseBin; j + j / 2 < bins; ++j) {
+    if (smooth[j + j / 2] * kSteepHalfOctave >= smooth[j]) return j;
+  }
+  return 0;
+}
+
+// A digital 2nd-order Butterworth low-pass's power gain (bilinear transform, as a MEMS
+// gyro's and the generator's): 1 / (1 + (tan(pi f / fs) / tan(pi fc / fs))^4); 1 for no
+// filter (cutoff_hz <= 0).
+double low_pass_gain(double f_hz, double cutoff_hz, double sample_hz) {
+  if (cutoff_hz <= 0.0) return 1.0;
+  const double pi = 3.14159265358979323846;
+  const double r = std::tan(pi * std::min(f_hz, 0.4999 * sample_hz) / sample_hz) / std::tan(pi * cutoff_hz / sample_hz);
+  return 1.0 / (1.0 + r * r * r * r);
+}
+
+// The bins the noise's shape is fitted on: from the motion band's end down to
+// kFitDepth below the highest (beyond that lie rounding and the filter's zero at the
+// Nyquist rate).
+constexpr double kFitDepth = 1e-4;
+
+// The low-pass whose shape fits the three axes' spectrum above the motion band best (in
+// log power, the level for each cutoff its best): cutoffs on a log grid of 64 from two
+// bins to the Nyquist rate, and none. Returns the cutoff (0: none).
+double fitted_cutoff(const NoiseSpectrum& s, std::size_t edge) {
+  std::vector<std::size_t> bins;
+  double highest = 0.0;
+  for (std::size_t j = edge; j + 1 < s.density.size(); ++j) highest = std::max(highest, s.density[j].sum());
+  for (std::size_t j = edge; j + 1 < s.density.size(); ++j) {
+    if (s.density[j].sum() >= kFitDepth * highest && s.density[j].sum() > 0.0) bins.push_back(j);
+  }
+  double best_cutoff = 0.0, best_misfit = -1.0;
+  const double low = 2.0 * s.bin_hz, high = 0.5 * s.sample_hz;
+  for (int i = 0; i <= 64; ++i) {
+    const double cutoff = i == 64 ? 0.0 : low * std::pow(high / low, i / 63.0);
+    double mean = 0.0, squares = 0.0;
+    for (std::size_t j : bins) {
+      const double r = std::log(s.density[j].sum() / low_pass_gain(j * s.bin_hz, cutoff, s.sample_hz));
+      mean += r;
+      squares += r * r;
+    }
+    const double n = static_cast<double>(bins.size());
+    const double misfit = squares - mean * mean / n;
+    if (best_misfit < 0.0 || misfit < best_misfit) {
+      best_misfit = misfit;
+      best_cutoff = cutoff;
+    }
+  }
+  return best_cutoff;
+}
+
+// The noise's variance per axis: its power above the motion's band, and below it the
+// fitted low-pass's shape at the level the bins above the band give it; and its
+// correlation, that level (the density at low frequencies) over a white noise's of the
+// same variance.
+std::optional<SpectralFloor> floor_from_spectrum(const Flight& flight, const std::vector<char>& gap_after) {
+  double rate_hz = 0.0;
+  const std::vector<Eigen::Vector3d> run = longest_clean_run(flight, gap_after, rate_hz);
+  const NoiseSpectrum s = welch_spectrum(run, rate_hz);
+  const std::size_t edge = s.density.empty() ? 0 : end_of_motion_band(s);
+  if (edge == 0 || edge + kPlateauBins > s.density.size()) return std::nullopt;
+  const double cutoff = fitted_cutoff(s, edge);
+  // The level: the bins' power over the shape's, summed over the band above the motion
+  // to kFitDepth (each bin weighed by the shape, so the flat part counts most).
+  Eigen::Vector3d power = Eigen::Vector3d::Zero(), variance = Eigen::Vector3d::Zero();
+  double shape = 0.0, below = 0.0;
+  for (std::size_t j = edge; j + 1 < s.density.size(); ++j) {
+    const double gain = low_pass_gain(j * s.bin_hz, cutoff, s.sample_hz);
+    if (gain < kFitDepth) break;
+    power += s.density[j];
+    shape += gain;
+  }
+  const Eigen::Vector3d level = power / shape;
+  // The variance from the fitted shape over the whole band (the bins themselves hold the
+  // motion's harmonics too, which outweigh a quiet gyro's noise behind a 20 Hz low-pass).
+  for (std::size_t j = 0; j < s.density.size(); ++j) {
+    const double width = (j == 0 || j + 1 == s.density.size()) ? 0.5 : 1.0;
+    below += width * low_pass_gain(j * s.bin_hz, cutoff, s.sample_hz) * s.bin_hz;
+  }
+  variance = level * below;
+  SpectralFloor out;
+  out.sigma = variance.cwiseSqrt();
+  out.correlation = std::max(1.0, level.sum() * 0.5 * s.sample_hz / variance.sum());
+  out.cutoff_hz = cutoff;
+  return out;
+}
+
 }  // namespace
 
 NoiseFloor estimate_noise_floor(const Flight& flight) {
@@ -96,6 +239,16 @@ NoiseFloor estimate_noise_floor(const Flight& flight) {
       best.sigma = sigma;
       best.difference_order = d.order;
       best.reliable = squares[0].size() >= 20;
+    }
+  }
+  if (flight.gyro_input && !flight.rates_from_differences) {
+    const std::optional<SpectralFloor> spectral = floor_from_spectrum(flight, gap_after);
+    if (spectral && spectral->sigma.norm() > kUnderstated * best.sigma.norm()) {
+      best.sigma = spectral->sigma.cwiseMax(1e-6);
+      best.correlation = spectral->correlation;
+      best.reliable = true;
+      best.method = "spectrum";
+      best.low_pass_hz = spectral->cutoff_hz;
     }
   }
   hold_at_resolution(best, flight);

@@ -3,9 +3,20 @@
 // the flight alone: the spread of high-order differences of consecutive samples, where a
 // smooth motion contributes almost nothing and white noise a known multiple of its
 // variance. Either way never below the rounding noise of the data's resolution.
+//
+// A gyro's low-pass (a fast gyro behind a 20-400 Hz filter) makes its noise correlated:
+// the differences of neighbouring samples see only the top of its band and understate it
+// many times over, and neighbouring samples are not independent. There the spectrum of
+// the readings (noise_spectrum.hpp) gives both: the noise's variance (its band's power,
+// flat below the band where the motion hides it) and how many samples make one
+// independent one (`correlation`: the spectrum's level at low frequencies over the level
+// of a white noise of that variance). Fits weigh the readings by `weighting_sigma`, so that
+// a correlated noise's chi-square counts its independent samples, not its readings.
 #pragma once
 
 #include <Eigen/Core>
+
+#include <cmath>
 
 #include "diagnose/1_input/flight.hpp"
 
@@ -19,10 +30,19 @@ struct NoiseFloor {
   // median over axes): a quantised gyro's step, or the last digit a log was written with.
   double resolution = 0.0;
   // "rest" (the spread of the readings where the sensor lay still), "differences" (the
-  // spread of high-order differences) or "resolution" (the floor is held at
+  // spread of high-order differences), "spectrum" (a gyro's noise behind a low-pass,
+  // from the readings' spectrum) or "resolution" (the floor is held at
   // resolution/sqrt(12), the rounding noise, because the estimate of smooth, filtered or
   // quantised data fell below it).
   const char* method = "differences";
+  // Readings per independent sample (>= 1): 1 for white noise; for noise behind a
+  // low-pass, about the rate over 2.2 times the cutoff (method "spectrum").
+  double correlation = 1.0;
+  double low_pass_hz = 0.0;  // method "spectrum": the gyro's low-pass as fitted (0: none)
+  // What fits weigh the readings by: sigma * sqrt(correlation), the white noise whose
+  // chi-square over the readings is that of the correlated noise over its independent
+  // samples (the same low-frequency density).
+  Eigen::Vector3d weighting_sigma() const { return sigma * std::sqrt(correlation); }
 };
 
 // Differences spanning a time gap or an unusable sample are skipped; the median of the

@@ -78,7 +78,7 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
   }
   d.noise = estimate_noise_floor(flight);
   analysis.where.noise_floor = d.noise.sigma;
-  const Vec3 inverse_sigma = d.noise.sigma.cwiseInverse();
+  const Vec3 inverse_sigma = d.noise.weighting_sigma().cwiseInverse();
   JudgedFlights judged;
   judged.add(flight, inverse_sigma);
   const EffectFit none_full = fit_effect(Effect::none, nominal, judged.all, nullptr);

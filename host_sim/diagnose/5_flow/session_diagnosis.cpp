@@ -92,7 +92,7 @@ PooledData pool_judged_flights(SessionDiagnosis& session, const std::vector<Flig
                                           : d.analysis.verdict.could_not_judge.front()));
       continue;
     }
-    pool.judged.add(flights[i], d.noise.sigma.cwiseInverse());
+    pool.judged.add(flights[i], d.noise.weighting_sigma().cwiseInverse());
     pool.own.push_back(&d.analysis);
   }
   return pool;

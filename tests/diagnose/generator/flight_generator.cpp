@@ -8,6 +8,7 @@
 
 #include "aloft/inertia_tensor.hpp"
 #include "body_catalogue.hpp"
+#include "low_pass.hpp"
 #include "perturbed_rigid_body.hpp"
 #include "seeded_random.hpp"
 
@@ -229,6 +230,11 @@ InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, con
     e.params = {{"time_s", e.physics.impulse_time_s},
                 {"angular_impulse_N_m_s", to_json(e.physics.angular_impulse_N_m_s)},
                 {"duration_s", e.physics.impulse_duration_s}};
+  } else if (effect == "internal_momentum") {
+    const double typical_l = p.moments.mean() * 10.0;
+    e.physics.internal_momentum_N_m_s = rng.uniform(0.005, 0.10) * typical_l * rng.unit_vector();
+    e.params = {{"h_N_m_s", to_json(e.physics.internal_momentum_N_m_s)},
+                {"h_fraction_of_L", e.physics.internal_momentum_N_m_s.norm() / l0.norm()}};
   } else if (effect == "gyro_bias") {
     e.bias = rng.uniform(0.05, 0.3) * rng.unit_vector();
     e.params = {{"bias_rad_s", to_json(e.bias)}};
@@ -265,6 +271,40 @@ std::vector<std::string> equivalent_class(const std::string& effect, DataKind ki
   return out;
 }
 
+// Runs a gyro's low-pass over the motion before release, so that at release it is in the
+// steady state of a gyro that has been running (not settled on one rate, whose transient
+// would look like an impulse at the start): the flight's own dynamics backwards in time,
+// 10 / cutoff seconds of it. Backwards, w(-t) = -u(t) where u obeys the same equations with
+// -h; only the torque-free body and the rotor are reversed (drag, damping and an impulse
+// act later in the flight, or change so little over the pre-roll that the filter does not
+// see it).
+template <typename Reading>
+void settle_on_motion_before(LowPass& filter, const FlightPhysics& physics, const Eigen::Vector3d& omega0,
+                             double cutoff_hz, double rate_hz, const Reading& reading) {
+  FlightPhysics backwards;
+  backwards.inertia_kg_m2 = physics.inertia_kg_m2;
+  backwards.internal_momentum_N_m_s = -physics.internal_momentum_N_m_s;
+  const int samples = static_cast<int>(std::ceil(10.0 / cutoff_hz * rate_hz));
+  std::vector<double> times;
+  for (int k = samples; k >= 1; --k) times.push_back(k / rate_hz);
+  std::reverse(times.begin(), times.end());
+  FlightState start;
+  start.omega_body = -omega0;
+  const std::vector<FlightState> before = PerturbedRigidBody(backwards).sample(start, times);
+  filter.settle(reading(-before.back().omega_body));
+  for (std::size_t k = before.size(); k-- > 0;) filter(reading(-before[k].omega_body));
+}
+
+// A rotor along a body of revolution's axis is, within one flight, an axial moment
+// changed by h / w_axis (docs/diagnose.md, "A rotor inside"); within 15° of the axis its
+// transverse part stays below a quarter of |h|.
+bool rotor_along_symmetry_axis(const Principal& p, const FlightPhysics& physics) {
+  const int symmetry = symmetry_axis_index(p.moments);
+  const Eigen::Vector3d& h = physics.internal_momentum_N_m_s;
+  if (symmetry < 0 || h.norm() == 0.0) return false;
+  return std::abs(h.normalized().dot(p.axes.col(symmetry))) >= std::cos(15.0 * kDegree);
+}
+
 std::string nominal_body_json(const BodyModel& body, const Throw& thrown, DataKind kind) {
   json j = {
       {"name", body.name}, {"mass", body.mass_kg}, {"inertia", {{"tensor", to_json(body.inertia_kg_m2)}}}};
@@ -294,6 +334,7 @@ InjectedEffect combine(InjectedEffect first, const InjectedEffect& second, const
     first.physics.inertia_kg_m2 = second.physics.inertia_kg_m2;
   }
   first.physics.aero_k_N_m_s2 += second.physics.aero_k_N_m_s2;
+  first.physics.internal_momentum_N_m_s += second.physics.internal_momentum_N_m_s;
   if (second.physics.rotor_inertia_kg_m2 > 0.0) {
     first.physics.rotor_inertia_kg_m2 = second.physics.rotor_inertia_kg_m2;
     first.physics.rotor_damping_N_m_s = second.physics.rotor_damping_N_m_s;
@@ -344,6 +385,11 @@ const std::vector<std::string>& effect_names() {
   return names;
 }
 
+bool known_effect(const std::string& effect) {
+  const auto& names = effect_names();
+  return effect == "internal_momentum" || std::find(names.begin(), names.end(), effect) != names.end();
+}
+
 bool is_sensor_effect(const std::string& effect) {
   return effect == "gyro_bias" || effect == "gyro_scale" || effect == "sensor_misalignment" ||
          effect == "clock_drift";
@@ -352,12 +398,8 @@ bool is_sensor_effect(const std::string& effect) {
 const char* to_string(DataKind kind) { return kind == DataKind::imu ? "imu" : "mocap"; }
 
 GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
-  const auto& names = effect_names();
-  if (std::find(names.begin(), names.end(), spec.effect) == names.end()) {
-    throw std::invalid_argument("unknown effect '" + spec.effect + "'");
-  }
-  if (!spec.second_effect.empty() &&
-      std::find(names.begin(), names.end(), spec.second_effect) == names.end()) {
+  if (!known_effect(spec.effect)) throw std::invalid_argument("unknown effect '" + spec.effect + "'");
+  if (!spec.second_effect.empty() && !known_effect(spec.second_effect)) {
     throw std::invalid_argument("unknown effect '" + spec.second_effect + "'");
   }
   if (spec.data == DataKind::markers &&
@@ -446,11 +488,27 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
     log.time_s = recorded;
     const Eigen::Matrix3d body_to_sensor = effect.imu_to_body.conjugate().toRotationMatrix();
     const Eigen::Vector3d gain = Eigen::Vector3d::Ones() + effect.scale_error;
+    // The filter is linear: the readings' noise is the filtered noise sequence, kept
+    // apart to measure its spread; filtering reading and noise separately adds up to
+    // filtering their sum.
+    LowPass signal_filter(spec.gyro_cutoff_hz, 1.0 / rate), noise_filter(spec.gyro_cutoff_hz, 1.0 / rate);
+    if (spec.gyro_cutoff_hz > 0.0) {
+      settle_on_motion_before(signal_filter, effect.physics, thrown.omega0_body, spec.gyro_cutoff_hz, rate,
+                              [&](const Eigen::Vector3d& w) { return gain.cwiseProduct(body_to_sensor * w) + effect.bias; });
+    }
+    Eigen::Vector3d noise_squares = Eigen::Vector3d::Zero();
     for (std::size_t k = 0; k < states.size(); ++k) {
       const Eigen::Vector3d w_sensor = body_to_sensor * states[k].omega_body;
-      log.gyro_rad_s.push_back(gain.cwiseProduct(w_sensor) + effect.bias +
-                               noise_rng.normal_vector(spec.gyro_noise_rad_s));
+      Eigen::Vector3d reading = gain.cwiseProduct(w_sensor) + effect.bias;
+      Eigen::Vector3d noise = noise_rng.normal_vector(spec.gyro_noise_rad_s);
+      if (spec.gyro_cutoff_hz > 0.0) {
+        reading = signal_filter(reading);
+        noise = noise_filter(noise);
+      }
+      noise_squares += noise.cwiseAbs2();
+      log.gyro_rad_s.push_back(reading + noise);
     }
+    f.gyro_noise_in_readings_rad_s = (noise_squares / static_cast<double>(states.size())).cwiseSqrt();
     if (spec.accelerometer) {
       // Free fall: the specific force at the sensor is only its acceleration relative
       // to the centre of mass, w' × r + w × (w × r) (aerodynamic force neglected), and
@@ -514,6 +572,10 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
   const bool mimics =
       aligned && distinct && effect.imu_to_body.angularDistance(Eigen::Quaterniond::Identity()) < 1e-12;
   t.equivalent = equivalent_class(spec.effect, spec.data, mimics);
+  if (spec.effect == "internal_momentum" && rotor_along_symmetry_axis(principal, effect.physics)) {
+    t.equivalent.push_back("inertia_moments");
+    std::sort(t.equivalent.begin(), t.equivalent.end());
+  }
   t.effects = {spec.effect};
   t.equivalents = {t.equivalent};
   if (compound) {

@@ -53,7 +53,7 @@ PerturbedRigidBody::Derivative PerturbedRigidBody::derivative(double t, const Ei
                                                               const Eigen::Vector3d& wr) const {
   Derivative d;
   d.q_dot = quaternion_rate(q, w);
-  Eigen::Vector3d torque = external_torque(t, w) - w.cross(shell_inertia_ * w);
+  Eigen::Vector3d torque = external_torque(t, w) - w.cross(shell_inertia_ * w + physics_.internal_momentum_N_m_s);
   if (has_rotor_) {
     const Eigen::Vector3d viscous = physics_.rotor_damping_N_m_s * (wr - w);
     torque += viscous;
@@ -127,7 +127,7 @@ std::vector<FlightState> PerturbedRigidBody::sample(const FlightState& initial,
 }
 
 Eigen::Vector3d PerturbedRigidBody::angular_momentum(const FlightState& s) const {
-  Eigen::Vector3d l = shell_inertia_ * s.omega_body;
+  Eigen::Vector3d l = shell_inertia_ * s.omega_body + physics_.internal_momentum_N_m_s;
   if (has_rotor_) l += physics_.rotor_inertia_kg_m2 * s.rotor_omega_body;
   return l;
 }

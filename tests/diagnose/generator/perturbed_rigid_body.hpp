@@ -7,14 +7,15 @@
 // velocity w (body axes) and, for internal damping, the absolute angular velocity of a
 // spherical rotor w_r (body axes). Equations, body axes, I_s = I - J·1 the shell's
 // inertia (the nominal tensor I is what the body weighs when it moves rigidly):
-//   I_s dw/dt   = tau_ext(t, w) - w × (I_s w) + c (w_r - w)
+//   I_s dw/dt   = tau_ext(t, w) - w × (I_s w + h) + c (w_r - w)
 //   J dw_r/dt   = -J w × w_r - c (w_r - w)
 //   dq/dt       = ½ q ⊗ (0, w)
 // with tau_ext = -k |w| w (aerodynamic damping) plus an impulse: a half-sine torque
 // pulse fixed in body axes, starting at `impulse_time_s`, lasting
 // `impulse_duration_s`, of integral `angular_impulse` (duration 0: an instantaneous
-// jump of I_s w by the impulse). The rotor exchanges momentum with the shell only, so
-// the total momentum L = I_s w + J w_r is fixed in space without external torque while
+// jump of I_s w by the impulse), and h a steadily spinning internal rotor's angular
+// momentum, fixed in body axes (a gyrostat; zero but for internal_momentum). The damping
+// rotor exchanges momentum with the shell only, so the total momentum L = I_s w + J w_r is fixed in space without external torque while
 // kinetic energy falls at rate c |w_r - w|²: the "spherical rotor in a viscous cavity"
 // model of internal damping.
 //
@@ -38,6 +39,9 @@ struct FlightPhysics {
   double impulse_time_s = 0.0;
   double impulse_duration_s = 0.0;
   Eigen::Vector3d angular_impulse_N_m_s = Eigen::Vector3d::Zero();  // body axes
+  // A rotor spinning at a steady rate inside (a gyrostat): its angular momentum h, fixed
+  // in body axes, adds -w × h to the torque and h to the body's angular momentum.
+  Eigen::Vector3d internal_momentum_N_m_s = Eigen::Vector3d::Zero();
 };
 
 struct FlightState {

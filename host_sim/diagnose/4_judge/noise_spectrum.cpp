@@ -1,0 +1,124 @@
+#include "diagnose/4_judge/noise_spectrum.hpp"
+
+#include <Eigen/QR>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+
+namespace aloft::host::diagnose {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// In-place radix-2 FFT (size a power of two).
+void fft(std::vector<std::complex<double>>& x) {
+  const std::size_t n = x.size();
+  for (std::size_t i = 1, j = 0; i < n; ++i) {
+    std::size_t bit = n >> 1;
+    for (; j & bit; bit >>= 1) j ^= bit;
+    j ^= bit;
+    if (i < j) std::swap(x[i], x[j]);
+  }
+  for (std::size_t len = 2; len <= n; len <<= 1) {
+    const double angle = -2.0 * kPi / static_cast<double>(len);
+    const std::complex<double> step(std::cos(angle), std::sin(angle));
+    for (std::size_t i = 0; i < n; i += len) {
+      std::complex<double> w(1.0, 0.0);
+      for (std::size_t k = 0; k < len / 2; ++k) {
+        const std::complex<double> u = x[i + k], v = x[i + k + len / 2] * w;
+        x[i + k] = u + v;
+        x[i + k + len / 2] = u - v;
+        w *= step;
+      }
+    }
+  }
+}
+
+std::vector<double> blackman_harris(std::size_t n) {
+  std::vector<double> w(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double x = 2.0 * kPi * static_cast<double>(k) / static_cast<double>(n);
+    w[k] = 0.35875 - 0.48829 * std::cos(x) + 0.14128 * std::cos(2 * x) - 0.01168 * std::cos(3 * x);
+  }
+  return w;
+}
+
+// The segment less its least-squares quadratic in k (centred, so the normal equations
+// stay well conditioned).
+std::vector<double> without_quadratic(const std::vector<double>& y) {
+  const std::size_t n = y.size();
+  Eigen::MatrixXd a(static_cast<Eigen::Index>(n), 3);
+  Eigen::VectorXd b(static_cast<Eigen::Index>(n));
+  const double mid = 0.5 * static_cast<double>(n - 1);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double u = (static_cast<double>(k) - mid) / mid;
+    a.row(static_cast<Eigen::Index>(k)) << 1.0, u, u * u;
+    b(static_cast<Eigen::Index>(k)) = y[k];
+  }
+  const Eigen::VectorXd c = a.colPivHouseholderQr().solve(b);
+  const Eigen::VectorXd r = b - a * c;
+  return std::vector<double>(r.data(), r.data() + r.size());
+}
+
+// The longest power of two that gives at least six half-overlapping segments (n >= 3.5
+// lengths), so that the median over segments passes over the one or two an impulse's
+// step lies in; kShortestSegment for short data (five segments at kShortestSpectrum).
+std::size_t segment_length(std::size_t n) {
+  std::size_t length = static_cast<std::size_t>(kShortestSegment);
+  while (7 * length <= n) length *= 2;
+  return length;
+}
+
+double median_of(std::vector<double> v) {
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  if (v.size() % 2 == 1) return *mid;
+  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
+}
+
+}  // namespace
+
+NoiseSpectrum welch_spectrum(const std::vector<Eigen::Vector3d>& readings, double sample_hz) {
+  NoiseSpectrum s;
+  const std::size_t n = readings.size();
+  if (n < static_cast<std::size_t>(kShortestSpectrum) || !(sample_hz > 0.0)) return s;
+  const std::size_t length = segment_length(n);
+  const std::vector<double> window = blackman_harris(length);
+  double window_power = 0.0;
+  for (double w : window) window_power += w * w;
+  s.sample_hz = sample_hz;
+  s.bin_hz = sample_hz / static_cast<double>(length);
+  const std::size_t bins = length / 2 + 1;
+  // Each bin's power in each segment, per axis: [axis][bin][segment].
+  std::array<std::vector<std::vector<double>>, 3> power;
+  for (auto& axis : power) axis.assign(bins, {});
+  std::vector<std::complex<double>> x(length);
+  for (std::size_t start = 0; start + length <= n; start += length / 2) {
+    for (std::size_t a = 0; a < 3; ++a) {
+      std::vector<double> y(length);
+      for (std::size_t k = 0; k < length; ++k) y[k] = readings[start + k](static_cast<Eigen::Index>(a));
+      y = without_quadratic(y);
+      for (std::size_t k = 0; k < length; ++k) x[k] = y[k] * window[k];
+      fft(x);
+      for (std::size_t j = 0; j < bins; ++j) {
+        const double one_sided = (j == 0 || j == length / 2) ? 1.0 : 2.0;
+        power[a][j].push_back(one_sided * std::norm(x[j]) / (sample_hz * window_power));
+      }
+    }
+    ++s.segments;
+  }
+  // The median over segments, over ln 2: a bin's power in one segment is exponentially
+  // distributed about its mean (two Gaussian parts), and the median of that is ln 2 of
+  // the mean.
+  s.density.assign(bins, Eigen::Vector3d::Zero());
+  for (std::size_t a = 0; a < 3; ++a) {
+    for (std::size_t j = 0; j < bins; ++j)
+      s.density[j](static_cast<Eigen::Index>(a)) = median_of(power[a][j]) / std::log(2.0);
+  }
+  return s;
+}
+
+}  // namespace aloft::host::diagnose

@@ -1,0 +1,38 @@
+#include "rotor_cases.hpp"
+
+#include "body_catalogue.hpp"
+
+namespace aloft::generator {
+
+std::vector<SessionCase> rotor_session_cases(RotorSeeds seeds, int per_kind, int flights) {
+  // Ranges far from every other list's (withheld effects 20240515 on, phone lists, the
+  // noise grid 31000 on), spaced by a large odd constant.
+  std::uint64_t seed = seeds == RotorSeeds::tuning ? 31310000ull : 31390000ull;
+  const auto next = [&] { return seed += 0x9E3779B1ull; };
+  const auto& bodies = body_names();
+  std::vector<SessionCase> out;
+  const auto add = [&](const std::string& kind, const std::string& effect, const std::string& body,
+                       double cutoff_hz, int index) {
+    SessionCase c;
+    c.name = kind + "_" + std::to_string(index);
+    c.seed = next();
+    for (int f = 0; f < flights; ++f) {
+      FlightSpec spec;
+      spec.effect = effect;
+      spec.body = body;
+      spec.gyro_cutoff_hz = cutoff_hz;
+      spec.throw_seed = next();
+      c.flights.push_back(spec);
+    }
+    out.push_back(c);
+  };
+  for (int i = 0; i < per_kind; ++i) {
+    add("rotor", "internal_momentum", bodies[static_cast<std::size_t>(i) % bodies.size()], 0.0, i);
+    add("impulse", "impulse", bodies[static_cast<std::size_t>(i + 2) % bodies.size()], 0.0, i);
+    add("moments", "inertia_moments", i % 2 == 0 ? "cylinder" : "disc", 0.0, i);
+    add("noise", "none", bodies[static_cast<std::size_t>(i + 1) % bodies.size()], 20.0, i);
+  }
+  return out;
+}
+
+}  // namespace aloft::generator

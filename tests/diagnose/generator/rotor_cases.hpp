@@ -1,0 +1,37 @@
+// Sessions for `internal_momentum` (issue 31): rotor sessions and sessions where a rotor
+// is absent but looks close, on two seed ranges: one to tune on, one withheld (never
+// tuned on; the figures in docs/diagnose.md are measured there).
+//
+// A session is several flights of one body and one sensor sharing one effect (the effect
+// drawn once from the session's seed, each throw and its noise from its own seed:
+// FlightSpec::throw_seed), gyro at 1 kHz:
+//   rotor        internal_momentum, every body in turn (flight_generator.hpp: |h| 0.5-10 %
+//                of |L| at 10 rad/s, any direction);
+//   impulse      an impulse in each flight (its size and time drawn once, relative to
+//                each throw);
+//   moments      wrong moments on the two bodies of revolution (cylinder, disc), where an
+//                axial moment change is, flight by flight, a rotor along the axis;
+//   noise        noise alone behind a 1 kHz gyro's 20 Hz low-pass (the flight the
+//                previous rotor named `impulse`).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "flight_generator.hpp"
+
+namespace aloft::generator {
+
+struct SessionCase {
+  std::string name;                // e.g. "rotor_3": unique
+  std::vector<FlightSpec> flights;  // one spec per flight (throw_seed set)
+  std::uint64_t seed = 0;          // the effect's seed, shared by the flights
+};
+
+enum class RotorSeeds { tuning, withheld };
+
+// `per_kind` sessions of each kind, of `flights` flights each.
+std::vector<SessionCase> rotor_session_cases(RotorSeeds seeds, int per_kind, int flights);
+
+}  // namespace aloft::generator
