@@ -44,11 +44,14 @@ Vec3 starting_rate(const FlightData& data, std::size_t ref, const EffectFit* nom
 
 void residuals_of(const FlightData& data, const std::vector<Vec3>& readings, Eigen::VectorXd& r) {
   const Flight& flight = *data.flight;
-  r.setZero(static_cast<Eigen::Index>(3 * flight.size()));
+  r.resize(static_cast<Eigen::Index>(3 * flight.size()));  // each sample written once, no clearing first
   for (std::size_t k = 0; k < flight.size(); ++k) {
-    if (!data.mask[k] || !flight.usable[k]) continue;
-    r.segment<3>(static_cast<Eigen::Index>(3 * k)) =
-        (readings[k] - flight.omega[k]).cwiseProduct(data.inverse_sigma);
+    auto out = r.segment<3>(static_cast<Eigen::Index>(3 * k));
+    if (!data.mask[k] || !flight.usable[k]) {
+      out.setZero();
+    } else {
+      out = (readings[k] - flight.omega[k]).cwiseProduct(data.inverse_sigma);
+    }
   }
 }
 
