@@ -237,8 +237,8 @@ class FlightDynamics {
 class ReadingWalks {
  public:
   ReadingWalks(const FlightDynamics& dynamics, const EffectModel& model, const Flight& flight, std::size_t ref,
-               std::vector<Vec3>& readings)
-      : d_(dynamics), flight_(flight), readings_(readings), t_ref_(flight.time_s[ref]) {
+               std::vector<Vec3>& readings, double max_segment)
+      : d_(dynamics), flight_(flight), readings_(readings), t_ref_(flight.time_s[ref]), max_segment_(max_segment) {
     has_jump_ = dynamics.has_jump();
     t_jump_ = has_jump_ ? true_time_of(model.impulse_time_s) : 0.0;
   }
@@ -264,14 +264,25 @@ class ReadingWalks {
     while (forwards ? end + 1 < n : end > 0) {
       const std::size_t further = next(end);
       const double span = std::abs(flight_.time_s[further] - flight_.time_s[at]);
-      if (span > kMaxSegment * (1.0 + 1e-9) || crosses(end, further)) break;
+      if (span > max_segment_ * (1.0 + 1e-9) || crosses(end, further)) break;
       end = further;
     }
     return end;
   }
 
-  // One segment of one walk, from sample `from` (state x) to `to`.
-  void step(State& x, std::size_t from, std::size_t to) const {
+  // A walk at its latest sample: the state there and, when the segment that ended there
+  // interpolated, the readings' rate of change there (the next segment starts with it).
+  struct Walk {
+    State x;
+    std::size_t at = 0;
+    bool slope_known = false;
+    Vec3 slope = Vec3::Zero();  // d reading / dt, without the segment's length
+  };
+
+  // One segment of a walk, to sample `to`.
+  void step(Walk& walk, std::size_t to) const {
+    State& x = walk.x;
+    const std::size_t from = walk.at;
     const double a = true_time(from), b = true_time(to);
     if (crosses(from, to)) {
       const bool forwards = to > from;
@@ -287,11 +298,13 @@ class ReadingWalks {
         d_.advance(x, t_jump_, b);
       }
       readings_[to] = d_.reading(x);
+      walk.at = to;
+      walk.slope_known = false;
       return;
     }
     const State start = x;
     d_.advance(x, a, b);
-    read_segment(start, x, from, to);
+    read_segment(start, walk, to);
   }
 
   // The readings of a segment integrated from `x_from` at sample `from` to `x_to` at
@@ -300,13 +313,21 @@ class ReadingWalks {
   // made on the readings: they are affine in the rate, and the basis weights of the two
   // ends sum to one, so interpolating the readings with the rate's derivatives mapped
   // as the rate is (sensor_map) is interpolating the rate.
-  void read_segment(const State& x_from, const State& x_to, std::size_t from, std::size_t to) const {
-    readings_[to] = d_.reading(x_to);
-    if (to == from + 1 || from == to + 1) return;
+  // `walk` has been integrated to `to` from `x_from`, its state at walk.at.
+  void read_segment(const State& x_from, Walk& walk, std::size_t to) const {
+    const std::size_t from = walk.at;
+    walk.at = to;
+    readings_[to] = d_.reading(walk.x);
+    if (to == from + 1 || from == to + 1) {
+      walk.slope_known = false;
+      return;
+    }
+    const Vec3 slope_from = walk.slope_known ? walk.slope : d_.sensor_map(d_.body_rate_derivative(x_from));
+    walk.slope = d_.sensor_map(d_.body_rate_derivative(walk.x));
+    walk.slope_known = true;
     const double t0 = true_time(from), h = true_time(to) - t0;
-    const Vec3 r0 = d_.reading(x_from), r1 = readings_[to];
-    const Vec3 g0 = d_.sensor_map(d_.body_rate_derivative(x_from)) * h;
-    const Vec3 g1 = d_.sensor_map(d_.body_rate_derivative(x_to)) * h;
+    const Vec3 r0 = readings_[from], r1 = readings_[to];
+    const Vec3 g0 = slope_from * h, g1 = walk.slope * h;
     const std::size_t lo = std::min(from, to), hi = std::max(from, to);
     for (std::size_t k = lo + 1; k < hi; ++k) {
       const double s = (true_time(k) - t0) / h, s2 = s * s, s3 = s2 * s;
@@ -322,6 +343,7 @@ class ReadingWalks {
   const Flight& flight_;
   std::vector<Vec3>& readings_;
   double t_ref_ = 0.0;
+  double max_segment_ = kMaxSegment;
   bool has_jump_ = false;
   double t_jump_ = 0.0;
 };
@@ -392,13 +414,14 @@ Eigen::Vector3d body_rate_for_reading(const EffectModel& model, const Flight& fl
 
 void predict_readings(const EffectModel& model, const Flight& flight, std::size_t ref,
                       const Eigen::Vector3d& omega_ref, const Eigen::VectorXd& theta,
-                      std::vector<Eigen::Vector3d>& readings) {
+                      std::vector<Eigen::Vector3d>& readings, SampleStepping stepping) {
   const std::size_t n = flight.size();
   readings.resize(n);
   if (n == 0) return;
   FlightDynamics dynamics(model_terms(model, theta), flight);
   dynamics.set_impulse_scale(model.nominal.tensor);
-  const ReadingWalks walks(dynamics, model, flight, ref, readings);
+  const ReadingWalks walks(dynamics, model, flight, ref, readings,
+                           stepping == SampleStepping::shared_steps ? kMaxSegment : 0.0);
   State start;
   start.head<3>() = omega_ref;
   start.tail<3>() = omega_ref;  // rotor co-rotating at the reference (damping only)
@@ -406,33 +429,22 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   // Forwards from the reference and backwards from it. The two walks are independent:
   // while both have samples to go, they step together (advance_pair) where neither
   // crosses the impulse.
-  State up = start, down = start;
-  std::size_t up_at = ref, down_at = ref;
-  while (up_at + 1 < n && down_at > 0) {
-    const std::size_t up_end = walks.segment_end(up_at, true), down_end = walks.segment_end(down_at, false);
-    if (!walks.crosses(up_at, up_at + 1) && !walks.crosses(down_at, down_at - 1)) {
-      const State up_from = up, down_from = down;
-      dynamics.advance_pair(up, walks.true_time(up_at), walks.true_time(up_end), down, walks.true_time(down_at),
-                            walks.true_time(down_end));
-      walks.read_segment(up_from, up, up_at, up_end);
-      walks.read_segment(down_from, down, down_at, down_end);
+  ReadingWalks::Walk up{start, ref}, down{start, ref};
+  while (up.at + 1 < n && down.at > 0) {
+    const std::size_t up_end = walks.segment_end(up.at, true), down_end = walks.segment_end(down.at, false);
+    if (!walks.crosses(up.at, up.at + 1) && !walks.crosses(down.at, down.at - 1)) {
+      const State up_from = up.x, down_from = down.x;
+      dynamics.advance_pair(up.x, walks.true_time(up.at), walks.true_time(up_end), down.x,
+                            walks.true_time(down.at), walks.true_time(down_end));
+      walks.read_segment(up_from, up, up_end);
+      walks.read_segment(down_from, down, down_end);
     } else {
-      walks.step(up, up_at, up_end);
-      walks.step(down, down_at, down_end);
+      walks.step(up, up_end);
+      walks.step(down, down_end);
     }
-    up_at = up_end;
-    down_at = down_end;
   }
-  while (up_at + 1 < n) {
-    const std::size_t end = walks.segment_end(up_at, true);
-    walks.step(up, up_at, end);
-    up_at = end;
-  }
-  while (down_at > 0) {
-    const std::size_t end = walks.segment_end(down_at, false);
-    walks.step(down, down_at, end);
-    down_at = end;
-  }
+  while (up.at + 1 < n) walks.step(up, walks.segment_end(up.at, true));
+  while (down.at > 0) walks.step(down, walks.segment_end(down.at, false));
 }
 
 EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta) {
