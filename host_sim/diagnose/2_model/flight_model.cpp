@@ -204,6 +204,13 @@ class FlightDynamics {
   void set_impulse_scale(const Mat3& nominal_tensor) { nominal_impulse_scale_ = nominal_tensor; }
 
   Vec3 reading(const State& x) const { return scale_.cwiseProduct(body_to_sensor_ * x.head<3>()) + bias_; }
+  // The body rate that reads as `reading` (the sensor model backwards).
+  Vec3 rate_of_reading(const Vec3& reading) const {
+    return body_to_sensor_.transpose() * (reading - bias_).cwiseQuotient(scale_);
+  }
+  const Mat3& body_to_sensor() const { return body_to_sensor_; }
+  const Vec3& scale() const { return scale_; }
+  const Vec3& bias() const { return bias_; }
   // The reading's change for a change dw of the body rate (the sensor without its bias).
   Vec3 sensor_map(const Vec3& dw) const { return scale_.cwiseProduct(body_to_sensor_ * dw); }
 
@@ -445,6 +452,64 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   }
   while (up.at + 1 < n) walks.step(up, walks.segment_end(up.at, true));
   while (down.at > 0) walks.step(down, walks.segment_end(down.at, false));
+}
+
+namespace {
+
+// Step of the central differences of the terms along theta: the sensor terms are linear
+// in theta or a quaternion exponential, whose O(h^2) error at 1e-5 is ~1e-10 relative, as
+// is the rounding (eps / h); the columns they replace were forward differences of whole
+// simulations, good to ~1e-7.
+constexpr double kTermStep = 1e-5;
+
+// Whether moving theta along direction i changes the sensor's terms and nothing else.
+bool moves_sensor_only(const ModelTerms& up, const ModelTerms& down) {
+  const bool dynamics_same = up.inertia == down.inertia && up.drag == down.drag && up.rotor == down.rotor &&
+                             up.rotor_rate == down.rotor_rate && up.has_jump == down.has_jump &&
+                             up.jump == down.jump && up.time_factor == down.time_factor;
+  const bool sensor_moves = up.scale != down.scale || up.bias != down.bias ||
+                            up.misalignment.coeffs() != down.misalignment.coeffs();
+  return dynamics_same && up.misaligned == down.misaligned && sensor_moves;
+}
+
+}  // namespace
+
+std::vector<char> sensor_directions(const EffectModel& model, const Eigen::VectorXd& theta) {
+  std::vector<char> out(static_cast<std::size_t>(theta.size()), 0);
+  for (Eigen::Index i = 0; i < theta.size(); ++i) {
+    const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
+    Eigen::VectorXd up = theta, down = theta;
+    up(i) += h;
+    down(i) -= h;
+    out[static_cast<std::size_t>(i)] = moves_sensor_only(model_terms(model, up), model_terms(model, down));
+  }
+  return out;
+}
+
+void sensor_reading_derivatives(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta,
+                                const std::vector<Eigen::Vector3d>& readings, const std::vector<char>& directions,
+                                Eigen::MatrixXd& columns) {
+  const std::size_t n = flight.size();
+  columns.setZero(static_cast<Eigen::Index>(3 * n), theta.size());
+  const FlightDynamics at(model_terms(model, theta), flight);
+  std::vector<Vec3> rates(n);
+  for (std::size_t k = 0; k < n; ++k) rates[k] = at.rate_of_reading(readings[k]);
+  for (Eigen::Index i = 0; i < theta.size(); ++i) {
+    if (!directions[static_cast<std::size_t>(i)]) continue;
+    const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
+    Eigen::VectorXd up = theta, down = theta;
+    up(i) += h;
+    down(i) -= h;
+    const FlightDynamics a(model_terms(model, up), flight), b(model_terms(model, down), flight);
+    // reading = scale (B w) + bias, differentiated with w held.
+    const Mat3 d_sensor = (a.body_to_sensor() - b.body_to_sensor()) / (2.0 * h);
+    const Vec3 d_scale = (a.scale() - b.scale()) / (2.0 * h), d_bias = (a.bias() - b.bias()) / (2.0 * h);
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec3& w = rates[k];
+      columns.block<3, 1>(static_cast<Eigen::Index>(3 * k), i) =
+          d_scale.cwiseProduct(at.body_to_sensor() * w) + at.scale().cwiseProduct(d_sensor * w) + d_bias;
+    }
+  }
 }
 
 EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta) {

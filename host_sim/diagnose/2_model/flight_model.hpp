@@ -73,6 +73,19 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
                       std::vector<Eigen::Vector3d>& readings,
                       SampleStepping stepping = SampleStepping::shared_steps);
 
+// The theta directions (1: yes) along which only the sensor's terms move (bias, scale,
+// rotation): the readings' derivatives along them need no simulation.
+std::vector<char> sensor_directions(const EffectModel& model, const Eigen::VectorXd& theta);
+
+// d readings / d theta_i for each direction i that `directions` marks (from
+// sensor_directions), from `readings`, the prediction at theta: the reading is
+// scale (R w) + bias, so the rate w behind each reading is differentiated through the
+// sensor alone. `columns`: 3n rows (sample k at 3k), one column per theta entry, zero
+// where not marked.
+void sensor_reading_derivatives(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta,
+                                const std::vector<Eigen::Vector3d>& readings, const std::vector<char>& directions,
+                                Eigen::MatrixXd& columns);
+
 // The body rate (body axes) that the nominal sensor would read as `reading`; the
 // starting guess of the initial state.
 Eigen::Vector3d body_rate_of_reading(const Flight& flight, const Eigen::Vector3d& reading);

@@ -107,6 +107,48 @@ struct Setup {
   EffectModel model() const { return EffectModel{effect, *nominal, impulse_time_s, base}; }
 };
 
+// The residuals of one flight and their Jacobian [theta | omega_ref] when some theta
+// directions move the sensor alone: those columns from the prediction itself
+// (sensor_reading_derivatives: no simulation each), the others by forward differences
+// exactly as the fitter takes them. False when no direction is the sensor's alone: the
+// fitter then differences every column itself.
+bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta, const Eigen::VectorXd& local,
+                     Eigen::VectorXd& r, Eigen::MatrixXd& jacobian) {
+  const EffectModel model = setup.model();
+  const std::vector<char> sensor = sensor_directions(model, theta);
+  if (std::find(sensor.begin(), sensor.end(), 1) == sensor.end()) return false;
+  const FlightData& d = (*setup.data)[static_cast<std::size_t>(block)];
+  const Flight& flight = *d.flight;
+  const std::size_t ref = setup.refs[static_cast<std::size_t>(block)];
+  std::vector<Vec3> readings;
+  predict_readings(model, flight, ref, Vec3(local), theta, readings);
+  residuals_of(d, readings, r);
+  Eigen::MatrixXd sensor_columns;
+  sensor_reading_derivatives(model, flight, theta, readings, sensor, sensor_columns);
+  const Eigen::Index p = theta.size();
+  jacobian.resize(r.size(), p + local.size());
+  Eigen::VectorXd moved;
+  for (Eigen::Index i = 0; i < jacobian.cols(); ++i) {
+    if (i < p && sensor[static_cast<std::size_t>(i)]) {
+      for (std::size_t k = 0; k < flight.size(); ++k) {
+        const Eigen::Index row = static_cast<Eigen::Index>(3 * k);
+        jacobian.block<3, 1>(row, i) = d.mask[k] && flight.usable[k]
+                                           ? Vec3(sensor_columns.block<3, 1>(row, i).cwiseProduct(d.inverse_sigma))
+                                           : Vec3::Zero();
+      }
+      continue;
+    }
+    Eigen::VectorXd shifted_theta = theta, shifted_local = local;
+    double& value = i < p ? shifted_theta(i) : shifted_local(i - p);
+    const double h = forward_difference_step(value);
+    value += h;
+    predict_readings(model, flight, ref, Vec3(shifted_local), shifted_theta, readings);
+    residuals_of(d, readings, moved);
+    jacobian.col(i) = (moved - r) / h;
+  }
+  return true;
+}
+
 ArrowProblem problem_of(const Setup& setup, int shared_count) {
   ArrowProblem problem;
   problem.shared_count = shared_count;
@@ -121,6 +163,10 @@ ArrowProblem problem_of(const Setup& setup, int shared_count) {
     predict_readings(model, *d.flight, setup.refs[static_cast<std::size_t>(block)], Vec3(local), shared,
                      readings);
     residuals_of(d, readings, r);
+  };
+  problem.jacobian = [&setup](int block, const Eigen::VectorXd& shared, const Eigen::VectorXd& local,
+                              Eigen::VectorXd& r, Eigen::MatrixXd& jacobian) {
+    return flight_jacobian(setup, block, shared, local, r, jacobian);
   };
   return problem;
 }
@@ -510,6 +556,7 @@ EffectFit fit_initial_rates(const EffectFit& fixed, const NominalInertia& nomina
   ArrowProblem held = problem;
   held.residuals = [&problem, theta](int block, const Eigen::VectorXd&, const Eigen::VectorXd& local,
                                      Eigen::VectorXd& r) { problem.residuals(block, theta, local, r); };
+  held.jacobian = nullptr;  // only the rates are fitted: no sensor column to read off
   LeastSquaresOptions rates_only;
   rates_only.normal_at_solution = false;  // no effect parameter to give an error for
   const LeastSquaresResult solution =
