@@ -153,3 +153,53 @@ TEST_CASE("the sensor's columns of the readings' Jacobian agree with central dif
     }
   }
 }
+
+TEST_CASE("the impulse's Jacobian columns, carried by the flow map, agree with central differences",
+          "[flight_model]") {
+  const NominalInertia body = NominalInertia::of_tensor(Eigen::Vector3d(0.0017, 0.0042, 0.0054).asDiagonal());
+  const Flight flight = turned_gyro_flight();
+  const std::size_t ref = flight.size() / 2;
+  const Eigen::Vector3d w0(0.3, 14.0, 0.5);
+  Eigen::VectorXd jump(3);
+  jump << 0.5, -0.3, 0.8;
+  for (const double impulse_time : {0.25, 0.9005}) {  // before and after the reference
+    const EffectModel model(Effect::impulse, body, impulse_time);
+    REQUIRE(impulse_directions(model, jump) == std::vector<char>{1, 1, 1});
+    REQUIRE(sensor_directions(model, jump) == std::vector<char>{0, 0, 0});
+    const double h = 1e-5;
+    // d readings / d omega_ref and d rate_at_impulse / d omega_ref, by central differences.
+    Eigen::MatrixXd rate_columns(3 * flight.size(), 3);
+    Eigen::Matrix3d at_impulse_derivative;
+    std::vector<Eigen::Vector3d> up, down;
+    for (int i = 0; i < 3; ++i) {
+      Eigen::Vector3d rate_up, rate_down;
+      predict_readings(model, flight, ref, w0 + h * Eigen::Vector3d::Unit(i), jump, up,
+                       SampleStepping::shared_steps, &rate_up);
+      predict_readings(model, flight, ref, w0 - h * Eigen::Vector3d::Unit(i), jump, down,
+                       SampleStepping::shared_steps, &rate_down);
+      for (std::size_t k = 0; k < flight.size(); ++k) {
+        rate_columns.block<3, 1>(static_cast<Eigen::Index>(3 * k), i) = (up[k] - down[k]) / (2.0 * h);
+      }
+      at_impulse_derivative.col(i) = (rate_up - rate_down) / (2.0 * h);
+    }
+    Eigen::MatrixXd columns;
+    impulse_reading_derivatives(model, flight, ref, jump, rate_columns, at_impulse_derivative, {1, 1, 1}, columns);
+    for (Eigen::Index i = 0; i < 3; ++i) {
+      Eigen::VectorXd plus = jump, minus = jump;
+      plus(i) += h;
+      minus(i) -= h;
+      predict_readings(model, flight, ref, w0, plus, up);
+      predict_readings(model, flight, ref, w0, minus, down);
+      double largest = 0.0, size = 0.0;
+      for (std::size_t k = 0; k < flight.size(); ++k) {
+        const Eigen::Vector3d central = (up[k] - down[k]) / (2.0 * h);
+        largest = std::max(largest, (columns.block<3, 1>(static_cast<Eigen::Index>(3 * k), i) - central).norm());
+        size = std::max(size, central.norm());
+      }
+      INFO("impulse at " << impulse_time << " s, column " << i << ": largest difference " << largest << " of "
+                         << size);
+      CHECK(size > 0.1);
+      CHECK(largest < 1e-6 * size);  // measured <= 1.5e-8 of the column
+    }
+  }
+}

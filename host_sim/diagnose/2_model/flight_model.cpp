@@ -211,6 +211,7 @@ class FlightDynamics {
   const Mat3& body_to_sensor() const { return body_to_sensor_; }
   const Vec3& scale() const { return scale_; }
   const Vec3& bias() const { return bias_; }
+  const Mat3& shell_inverse() const { return shell_inverse_; }
   // The reading's change for a change dw of the body rate (the sensor without its bias).
   Vec3 sensor_map(const Vec3& dw) const { return scale_.cwiseProduct(body_to_sensor_ * dw); }
 
@@ -244,8 +245,13 @@ class FlightDynamics {
 class ReadingWalks {
  public:
   ReadingWalks(const FlightDynamics& dynamics, const EffectModel& model, const Flight& flight, std::size_t ref,
-               std::vector<Vec3>& readings, double max_segment)
-      : d_(dynamics), flight_(flight), readings_(readings), t_ref_(flight.time_s[ref]), max_segment_(max_segment) {
+               std::vector<Vec3>& readings, double max_segment, Vec3* rate_at_impulse)
+      : d_(dynamics),
+        flight_(flight),
+        readings_(readings),
+        t_ref_(flight.time_s[ref]),
+        max_segment_(max_segment),
+        rate_at_impulse_(rate_at_impulse) {
     has_jump_ = dynamics.has_jump();
     t_jump_ = has_jump_ ? true_time_of(model.impulse_time_s) : 0.0;
   }
@@ -297,10 +303,12 @@ class ReadingWalks {
       // if it is before a, take it away, on.
       if (forwards) {
         d_.advance(x, a, t_jump_);
+        if (rate_at_impulse_ != nullptr) *rate_at_impulse_ = x.head<3>();
         d_.apply_jump(x, 1.0);
         if (b > t_jump_) d_.advance(x, t_jump_, b);
       } else {
         if (a > t_jump_) d_.advance(x, a, t_jump_);
+        if (rate_at_impulse_ != nullptr) *rate_at_impulse_ = x.head<3>();
         d_.apply_jump(x, -1.0);
         d_.advance(x, t_jump_, b);
       }
@@ -351,6 +359,7 @@ class ReadingWalks {
   std::vector<Vec3>& readings_;
   double t_ref_ = 0.0;
   double max_segment_ = kMaxSegment;
+  Vec3* rate_at_impulse_ = nullptr;  // where the walk that meets the impulse reaches it
   bool has_jump_ = false;
   double t_jump_ = 0.0;
 };
@@ -421,14 +430,15 @@ Eigen::Vector3d body_rate_for_reading(const EffectModel& model, const Flight& fl
 
 void predict_readings(const EffectModel& model, const Flight& flight, std::size_t ref,
                       const Eigen::Vector3d& omega_ref, const Eigen::VectorXd& theta,
-                      std::vector<Eigen::Vector3d>& readings, SampleStepping stepping) {
+                      std::vector<Eigen::Vector3d>& readings, SampleStepping stepping,
+                      Eigen::Vector3d* rate_at_impulse) {
   const std::size_t n = flight.size();
   readings.resize(n);
   if (n == 0) return;
   FlightDynamics dynamics(model_terms(model, theta), flight);
   dynamics.set_impulse_scale(model.nominal.tensor);
   const ReadingWalks walks(dynamics, model, flight, ref, readings,
-                           stepping == SampleStepping::shared_steps ? kMaxSegment : 0.0);
+                           stepping == SampleStepping::shared_steps ? kMaxSegment : 0.0, rate_at_impulse);
   State start;
   start.head<3>() = omega_ref;
   start.tail<3>() = omega_ref;  // rotor co-rotating at the reference (damping only)
@@ -508,6 +518,56 @@ void sensor_reading_derivatives(const EffectModel& model, const Flight& flight, 
       const Vec3& w = rates[k];
       columns.block<3, 1>(static_cast<Eigen::Index>(3 * k), i) =
           d_scale.cwiseProduct(at.body_to_sensor() * w) + at.scale().cwiseProduct(d_sensor * w) + d_bias;
+    }
+  }
+}
+
+std::vector<char> impulse_directions(const EffectModel& model, const Eigen::VectorXd& theta) {
+  std::vector<char> out(static_cast<std::size_t>(theta.size()), 0);
+  for (Eigen::Index i = 0; i < theta.size(); ++i) {
+    const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
+    Eigen::VectorXd up = theta, down = theta;
+    up(i) += h;
+    down(i) -= h;
+    const ModelTerms a = model_terms(model, up), b = model_terms(model, down);
+    const bool rest_same = a.inertia == b.inertia && a.drag == b.drag && a.rotor == b.rotor &&
+                           a.rotor_rate == b.rotor_rate && a.has_jump && b.has_jump &&
+                           a.time_factor == b.time_factor && a.scale == b.scale && a.bias == b.bias &&
+                           a.misaligned == b.misaligned && a.misalignment.coeffs() == b.misalignment.coeffs();
+    out[static_cast<std::size_t>(i)] = rest_same && a.jump != b.jump;
+  }
+  return out;
+}
+
+void impulse_reading_derivatives(const EffectModel& model, const Flight& flight, std::size_t ref,
+                                 const Eigen::VectorXd& theta, const Eigen::MatrixXd& rate_columns,
+                                 const Eigen::Matrix3d& impulse_rate_derivative, const std::vector<char>& directions,
+                                 Eigen::MatrixXd& columns) {
+  const std::size_t n = flight.size();
+  columns.setZero(rate_columns.rows(), theta.size());
+  const FlightDynamics at(model_terms(model, theta), flight);
+  const double t_ref = flight.time_s[ref];
+  const auto true_time = [&](double t) { return t_ref + (t - t_ref) * at.time_factor(); };
+  const double t_jump = true_time(model.impulse_time_s);
+  // The walk that meets the impulse adds it going forwards and takes it away going
+  // backwards; past it, a change of the rate there is carried as a change of omega_ref
+  // would be, by the flow map: d reading_k / d rate_at_impulse = G_k Phi_j^-1.
+  const double sign = t_jump > t_ref ? 1.0 : -1.0;
+  const Mat3 carried = impulse_rate_derivative.inverse() * at.shell_inverse() * model.nominal.tensor;
+  for (Eigen::Index i = 0; i < theta.size(); ++i) {
+    if (!directions[static_cast<std::size_t>(i)]) continue;
+    const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
+    Eigen::VectorXd up = theta, down = theta;
+    up(i) += h;
+    down(i) -= h;
+    const Vec3 d_jump = (model_terms(model, up).jump - model_terms(model, down).jump) / (2.0 * h);
+    const Vec3 c = sign * (carried * d_jump);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double t = true_time(flight.time_s[k]);
+      const bool past = sign > 0.0 ? t >= t_jump : t < t_jump;
+      if (!past) continue;
+      const Eigen::Index row = static_cast<Eigen::Index>(3 * k);
+      columns.block<3, 1>(row, i) = rate_columns.block<3, 3>(row, 0) * c;
     }
   }
 }
