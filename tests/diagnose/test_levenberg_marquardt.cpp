@@ -1,6 +1,7 @@
 // diagnose/levenberg_marquardt: problems whose minimum is known.
 #include <catch2/catch.hpp>
 
+#include <atomic>
 #include <cmath>
 #include <random>
 
@@ -120,4 +121,45 @@ TEST_CASE("leave_one_block_out equals refitting without the block on a linear pr
   }
   // And leaving out the steepest block lowers the slope.
   CHECK(left_out[3](1) < all.shared(1));
+}
+
+TEST_CASE("a problem's own Jacobian is used where it gives one, differences where it declines",
+          "[levenberg_marquardt]") {
+  const double a = 2.0, b = -1.3;
+  const std::vector<double> offsets = {0.5, -0.25};
+  std::vector<double> t;
+  for (int i = 0; i < 40; ++i) t.push_back(0.05 * i);
+  std::vector<std::vector<double>> data;
+  for (double c : offsets) {
+    std::vector<double> y;
+    for (double ti : t) y.push_back(a * std::exp(b * ti) + c);
+    data.push_back(y);
+  }
+  ArrowProblem p = exponential_blocks(data, t);
+  std::atomic<int> given{0}, declined{0};
+  // The exact Jacobian for block 0; block 1 declines, so its columns are differenced.
+  p.jacobian = [&, residuals = p.residuals](int block, const Eigen::VectorXd& s, const Eigen::VectorXd& l,
+                                           Eigen::VectorXd& r, Eigen::MatrixXd& j) {
+    if (block == 1) {
+      ++declined;
+      return false;
+    }
+    ++given;
+    residuals(block, s, l, r);
+    j.resize(static_cast<Eigen::Index>(t.size()), 3);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const Eigen::Index row = static_cast<Eigen::Index>(i);
+      j(row, 0) = std::exp(s(1) * t[i]);
+      j(row, 1) = s(0) * t[i] * std::exp(s(1) * t[i]);
+      j(row, 2) = 1.0;
+    }
+    return true;
+  };
+  const std::vector<Eigen::VectorXd> local_start(2, Eigen::VectorXd::Zero(1));
+  const LeastSquaresResult result = minimise(p, Eigen::Vector2d(1.0, -0.5), local_start, tight());
+  CHECK(given > 0);
+  CHECK(declined == given);  // asked for every block at every linearisation
+  CHECK(result.shared(0) == Approx(a).margin(1e-6));
+  CHECK(result.shared(1) == Approx(b).margin(1e-6));
+  for (std::size_t j = 0; j < 2; ++j) CHECK(result.local[j](0) == Approx(offsets[j]).margin(1e-6));
 }

@@ -13,8 +13,14 @@ using Mat3 = Eigen::Matrix3d;
 using State = Eigen::Matrix<double, 6, 1>;  // body rate, then the rotor's rate (damping only)
 
 // Longest integration step: RK4 at 5 ms keeps the relative error of a 15 rad/s motion
-// near 1e-6 over a second, far below any gyro's noise; 1 kHz data takes one step a sample.
+// near 1e-6 over a second, far below any gyro's noise.
 constexpr double kMaxStep = 0.005;
+// Samples this close share one step, the readings between interpolated (ReadingWalks):
+// 1 kHz data takes one step every 5 samples instead of one a sample (case00: 2.10 G
+// instructions -> 1.33 G). Not for a model with a rotor: the internal damping fits reach
+// coupling rates of ~200 /s, where a 5 ms step misjudges the rotor and the fitted rotor
+// moved (practice2/A02 then named internal_damping instead of inertia_axes).
+constexpr double kMaxSegment = kMaxStep;
 
 // The slice of theta that belongs to `effect` (empty when it is not in the model).
 Eigen::VectorXd slice_of(const EffectModel& model, const Eigen::VectorXd& theta, Effect effect) {
@@ -209,6 +215,21 @@ class FlightDynamics {
   void set_impulse_scale(const Mat3& nominal_tensor) { nominal_impulse_scale_ = nominal_tensor; }
 
   Vec3 reading(const State& x) const { return scale_.cwiseProduct(body_to_sensor_ * x.head<3>()) + bias_; }
+  // The body rate that reads as `reading` (the sensor model backwards).
+  Vec3 rate_of_reading(const Vec3& reading) const {
+    return body_to_sensor_.transpose() * (reading - bias_).cwiseQuotient(scale_);
+  }
+  const Mat3& body_to_sensor() const { return body_to_sensor_; }
+  const Vec3& scale() const { return scale_; }
+  const Vec3& bias() const { return bias_; }
+  const Mat3& shell_inverse() const { return shell_inverse_; }
+  // The reading's change for a change dw of the body rate (the sensor without its bias).
+  Vec3 sensor_map(const Vec3& dw) const { return scale_.cwiseProduct(body_to_sensor_ * dw); }
+
+  // d w / dt, the body rate's part of rate() (rigid_rate() without a rotor).
+  Vec3 body_rate_derivative(const State& x) const {
+    return has_rotor() ? Vec3(rate(x).head<3>()) : rigid_rate(x.head<3>());
+  }
 
  private:
   Mat3 inertia_;
@@ -227,6 +248,133 @@ class FlightDynamics {
   bool has_momentum_ = false;
   Vec3 bias_ = Vec3::Zero();
   Vec3 scale_ = Vec3::Ones();
+};
+
+// The walks of predict_readings from the reference sample outwards, one segment at a
+// time: a segment is one integration over several samples no further apart than
+// kMaxSegment (the readings between its ends interpolated), or one interval longer than
+// that (integrated in steps of at most kMaxStep), or the one interval the impulse falls in
+// (integrated to the impulse, then on).
+class ReadingWalks {
+ public:
+  ReadingWalks(const FlightDynamics& dynamics, const EffectModel& model, const Flight& flight, std::size_t ref,
+               std::vector<Vec3>& readings, double max_segment, Vec3* rate_at_impulse)
+      : d_(dynamics),
+        flight_(flight),
+        readings_(readings),
+        t_ref_(flight.time_s[ref]),
+        max_segment_(max_segment),
+        rate_at_impulse_(rate_at_impulse) {
+    has_jump_ = dynamics.has_jump();
+    t_jump_ = has_jump_ ? true_time_of(model.impulse_time_s) : 0.0;
+  }
+
+  // True (simulation) time of sample k; differs from its time stamp only under clock drift.
+  double true_time(std::size_t k) const { return true_time_of(flight_.time_s[k]); }
+
+  // Whether the impulse falls between samples a and b (strictly after the earlier, on or
+  // before the later one).
+  bool crosses(std::size_t a, std::size_t b) const {
+    const double early = true_time(std::min(a, b)), late = true_time(std::max(a, b));
+    return has_jump_ && t_jump_ > early && t_jump_ <= late;
+  }
+
+  // The last sample of the segment that starts at `at`, forwards or backwards. Decided on
+  // the time stamps, not the true times, so that a clock-drift parameter never moves a
+  // segment's end (the readings stay smooth in it).
+  std::size_t segment_end(std::size_t at, bool forwards) const {
+    const std::size_t n = flight_.size();
+    const auto next = [&](std::size_t k) { return forwards ? k + 1 : k - 1; };
+    std::size_t end = next(at);
+    if (crosses(at, end) || d_.has_rotor()) return end;
+    while (forwards ? end + 1 < n : end > 0) {
+      const std::size_t further = next(end);
+      const double span = std::abs(flight_.time_s[further] - flight_.time_s[at]);
+      if (span > max_segment_ * (1.0 + 1e-9) || crosses(end, further)) break;
+      end = further;
+    }
+    return end;
+  }
+
+  // A walk at its latest sample: the state there and, when the segment that ended there
+  // interpolated, the readings' rate of change there (the next segment starts with it).
+  struct Walk {
+    State x;
+    std::size_t at = 0;
+    bool slope_known = false;
+    Vec3 slope = Vec3::Zero();  // d reading / dt, without the segment's length
+  };
+
+  // One segment of a walk, to sample `to`.
+  void step(Walk& walk, std::size_t to) const {
+    State& x = walk.x;
+    const std::size_t from = walk.at;
+    const double a = true_time(from), b = true_time(to);
+    if (crosses(from, to)) {
+      const bool forwards = to > from;
+      // Forwards: to the impulse, add it, on if it is before b. Backwards: to the impulse
+      // if it is before a, take it away, on.
+      if (forwards) {
+        d_.advance(x, a, t_jump_);
+        if (rate_at_impulse_ != nullptr) *rate_at_impulse_ = x.head<3>();
+        d_.apply_jump(x, 1.0);
+        if (b > t_jump_) d_.advance(x, t_jump_, b);
+      } else {
+        if (a > t_jump_) d_.advance(x, a, t_jump_);
+        if (rate_at_impulse_ != nullptr) *rate_at_impulse_ = x.head<3>();
+        d_.apply_jump(x, -1.0);
+        d_.advance(x, t_jump_, b);
+      }
+      readings_[to] = d_.reading(x);
+      walk.at = to;
+      walk.slope_known = false;
+      return;
+    }
+    const State start = x;
+    d_.advance(x, a, b);
+    read_segment(start, walk, to);
+  }
+
+  // The readings of a segment integrated from `x_from` at sample `from` to `x_to` at
+  // `to`: the end's own, and those between by cubic Hermite interpolation of the rate
+  // (its error, h^4 |d4w/dt4| / 384, is 1e-6 rad/s for a 15 rad/s tumble over 5 ms),
+  // made on the readings: they are affine in the rate, and the basis weights of the two
+  // ends sum to one, so interpolating the readings with the rate's derivatives mapped
+  // as the rate is (sensor_map) is interpolating the rate.
+  // `walk` has been integrated to `to` from `x_from`, its state at walk.at.
+  void read_segment(const State& x_from, Walk& walk, std::size_t to) const {
+    const std::size_t from = walk.at;
+    walk.at = to;
+    readings_[to] = d_.reading(walk.x);
+    if (to == from + 1 || from == to + 1) {
+      walk.slope_known = false;
+      return;
+    }
+    const Vec3 slope_from = walk.slope_known ? walk.slope : d_.sensor_map(d_.body_rate_derivative(x_from));
+    walk.slope = d_.sensor_map(d_.body_rate_derivative(walk.x));
+    walk.slope_known = true;
+    const double t0 = true_time(from), h = true_time(to) - t0;
+    const Vec3 r0 = readings_[from], r1 = readings_[to];
+    const Vec3 g0 = slope_from * h, g1 = walk.slope * h;
+    const std::size_t lo = std::min(from, to), hi = std::max(from, to);
+    for (std::size_t k = lo + 1; k < hi; ++k) {
+      const double s = (true_time(k) - t0) / h, s2 = s * s, s3 = s2 * s;
+      readings_[k] = (2.0 * s3 - 3.0 * s2 + 1.0) * r0 + (3.0 * s2 - 2.0 * s3) * r1 + (s3 - 2.0 * s2 + s) * g0 +
+                     (s3 - s2) * g1;
+    }
+  }
+
+ private:
+  double true_time_of(double t) const { return t_ref_ + (t - t_ref_) * d_.time_factor(); }
+
+  const FlightDynamics& d_;
+  const Flight& flight_;
+  std::vector<Vec3>& readings_;
+  double t_ref_ = 0.0;
+  double max_segment_ = kMaxSegment;
+  Vec3* rate_at_impulse_ = nullptr;  // where the walk that meets the impulse reaches it
+  bool has_jump_ = false;
+  double t_jump_ = 0.0;
 };
 
 }  // namespace
@@ -295,72 +443,146 @@ Eigen::Vector3d body_rate_for_reading(const EffectModel& model, const Flight& fl
 
 void predict_readings(const EffectModel& model, const Flight& flight, std::size_t ref,
                       const Eigen::Vector3d& omega_ref, const Eigen::VectorXd& theta,
-                      std::vector<Eigen::Vector3d>& readings) {
+                      std::vector<Eigen::Vector3d>& readings, SampleStepping stepping,
+                      Eigen::Vector3d* rate_at_impulse) {
   const std::size_t n = flight.size();
   readings.resize(n);
   if (n == 0) return;
   FlightDynamics dynamics(model_terms(model, theta), flight);
   dynamics.set_impulse_scale(model.nominal.tensor);
-  const bool has_jump = dynamics.has_jump();
-  const double t_ref = flight.time_s[ref];
-  // True (simulation) time of a recorded time stamp; differs only under clock drift.
-  auto true_time = [&](double t) { return t_ref + (t - t_ref) * dynamics.time_factor(); };
-  const double t_jump = has_jump ? true_time(model.impulse_time_s) : 0.0;
-
+  const ReadingWalks walks(dynamics, model, flight, ref, readings,
+                           stepping == SampleStepping::shared_steps ? kMaxSegment : 0.0, rate_at_impulse);
   State start;
   start.head<3>() = omega_ref;
   start.tail<3>() = omega_ref;  // rotor co-rotating at the reference (damping only)
   readings[ref] = dynamics.reading(start);
-
-  // Forwards from the reference and backwards from it; an impulse strictly between two
-  // samples (or on the later one) is applied where it falls.
-  const auto jump_within = [&](double early, double late) {
-    return has_jump && t_jump > early && t_jump <= late;
-  };
-  // The forward walk's step to sample k, and the backward walk's to sample k.
-  const auto step_up = [&](State& x, std::size_t k) {
-    const double a = true_time(flight.time_s[k - 1]);
-    const double b = true_time(flight.time_s[k]);
-    if (jump_within(a, b)) {
-      dynamics.advance(x, a, t_jump);
-      dynamics.apply_jump(x, 1.0);
-      if (b > t_jump) dynamics.advance(x, t_jump, b);
+  // Forwards from the reference and backwards from it. The two walks are independent:
+  // while both have samples to go, they step together (advance_pair) where neither
+  // crosses the impulse.
+  ReadingWalks::Walk up{start, ref}, down{start, ref};
+  while (up.at + 1 < n && down.at > 0) {
+    const std::size_t up_end = walks.segment_end(up.at, true), down_end = walks.segment_end(down.at, false);
+    if (!walks.crosses(up.at, up.at + 1) && !walks.crosses(down.at, down.at - 1)) {
+      const State up_from = up.x, down_from = down.x;
+      dynamics.advance_pair(up.x, walks.true_time(up.at), walks.true_time(up_end), down.x,
+                            walks.true_time(down.at), walks.true_time(down_end));
+      walks.read_segment(up_from, up, up_end);
+      walks.read_segment(down_from, down, down_end);
     } else {
-      dynamics.advance(x, a, b);
-    }
-    readings[k] = dynamics.reading(x);
-  };
-  const auto step_down = [&](State& x, std::size_t k) {
-    const double a = true_time(flight.time_s[k + 1]);
-    const double b = true_time(flight.time_s[k]);
-    if (jump_within(b, a)) {
-      if (a > t_jump) dynamics.advance(x, a, t_jump);
-      dynamics.apply_jump(x, -1.0);
-      dynamics.advance(x, t_jump, b);
-    } else {
-      dynamics.advance(x, a, b);
-    }
-    readings[k] = dynamics.reading(x);
-  };
-  // The two walks are independent: while both have samples to go, they step together
-  // (advance_pair) where neither crosses the impulse.
-  State up = start, down = start;
-  std::size_t next_up = ref + 1, next_down = ref;  // the backward walk's next sample is next_down - 1
-  for (; next_up < n && next_down > 0; ++next_up, --next_down) {
-    const double a_up = true_time(flight.time_s[next_up - 1]), b_up = true_time(flight.time_s[next_up]);
-    const double a_down = true_time(flight.time_s[next_down]),
-                 b_down = true_time(flight.time_s[next_down - 1]);
-    if (!jump_within(a_up, b_up) && !jump_within(b_down, a_down)) {
-      dynamics.advance_pair(up, a_up, b_up, down, a_down, b_down);
-      readings[next_up] = dynamics.reading(up);
-      readings[next_down - 1] = dynamics.reading(down);
-    } else {
-      step_up(up, next_up);
-      step_down(down, next_down - 1);
+      walks.step(up, up_end);
+      walks.step(down, down_end);
     }
   }
-  for (; next_up < n; ++next_up) step_up(up, next_up);
-  for (; next_down > 0; --next_down) step_down(down, next_down - 1);
+  while (up.at + 1 < n) walks.step(up, walks.segment_end(up.at, true));
+  while (down.at > 0) walks.step(down, walks.segment_end(down.at, false));
+}
+
+namespace {
+
+// Step of the central differences of the terms along theta: the sensor terms are linear
+// in theta or a quaternion exponential, whose O(h^2) error at 1e-5 is ~1e-10 relative, as
+// is the rounding (eps / h); the columns they replace were forward differences of whole
+// simulations, good to ~1e-7.
+constexpr double kTermStep = 1e-5;
+
+// Whether moving theta along direction i changes the sensor's terms and nothing else.
+bool moves_sensor_only(const ModelTerms& up, const ModelTerms& down) {
+  const bool dynamics_same = up.inertia == down.inertia && up.drag == down.drag && up.rotor == down.rotor &&
+                             up.rotor_rate == down.rotor_rate && up.has_jump == down.has_jump &&
+                             up.jump == down.jump && up.time_factor == down.time_factor;
+  const bool sensor_moves = up.scale != down.scale || up.bias != down.bias ||
+                            up.misalignment.coeffs() != down.misalignment.coeffs();
+  return dynamics_same && up.misaligned == down.misaligned && sensor_moves;
+}
+
+}  // namespace
+
+std::vector<char> sensor_directions(const EffectModel& model, const Eigen::VectorXd& theta) {
+  std::vector<char> out(static_cast<std::size_t>(theta.size()), 0);
+  for (Eigen::Index i = 0; i < theta.size(); ++i) {
+    const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
+    Eigen::VectorXd up = theta, down = theta;
+    up(i) += h;
+    down(i) -= h;
+    out[static_cast<std::size_t>(i)] = moves_sensor_only(model_terms(model, up), model_terms(model, down));
+  }
+  return out;
+}
+
+void sensor_reading_derivatives(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta,
+                                const std::vector<Eigen::Vector3d>& readings, const std::vector<char>& directions,
+                                Eigen::MatrixXd& columns) {
+  const std::size_t n = flight.size();
+  columns.setZero(static_cast<Eigen::Index>(3 * n), theta.size());
+  const FlightDynamics at(model_terms(model, theta), flight);
+  std::vector<Vec3> rates(n);
+  for (std::size_t k = 0; k < n; ++k) rates[k] = at.rate_of_reading(readings[k]);
+  for (Eigen::Index i = 0; i < theta.size(); ++i) {
+    if (!directions[static_cast<std::size_t>(i)]) continue;
+    const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
+    Eigen::VectorXd up = theta, down = theta;
+    up(i) += h;
+    down(i) -= h;
+    const FlightDynamics a(model_terms(model, up), flight), b(model_terms(model, down), flight);
+    // reading = scale (B w) + bias, differentiated with w held.
+    const Mat3 d_sensor = (a.body_to_sensor() - b.body_to_sensor()) / (2.0 * h);
+    const Vec3 d_scale = (a.scale() - b.scale()) / (2.0 * h), d_bias = (a.bias() - b.bias()) / (2.0 * h);
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec3& w = rates[k];
+      columns.block<3, 1>(static_cast<Eigen::Index>(3 * k), i) =
+          d_scale.cwiseProduct(at.body_to_sensor() * w) + at.scale().cwiseProduct(d_sensor * w) + d_bias;
+    }
+  }
+}
+
+std::vector<char> impulse_directions(const EffectModel& model, const Eigen::VectorXd& theta) {
+  std::vector<char> out(static_cast<std::size_t>(theta.size()), 0);
+  for (Eigen::Index i = 0; i < theta.size(); ++i) {
+    const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
+    Eigen::VectorXd up = theta, down = theta;
+    up(i) += h;
+    down(i) -= h;
+    const ModelTerms a = model_terms(model, up), b = model_terms(model, down);
+    const bool rest_same = a.inertia == b.inertia && a.drag == b.drag && a.rotor == b.rotor &&
+                           a.rotor_rate == b.rotor_rate && a.has_jump && b.has_jump &&
+                           a.time_factor == b.time_factor && a.scale == b.scale && a.bias == b.bias &&
+                           a.misaligned == b.misaligned && a.misalignment.coeffs() == b.misalignment.coeffs();
+    out[static_cast<std::size_t>(i)] = rest_same && a.jump != b.jump;
+  }
+  return out;
+}
+
+void impulse_reading_derivatives(const EffectModel& model, const Flight& flight, std::size_t ref,
+                                 const Eigen::VectorXd& theta, const Eigen::MatrixXd& rate_columns,
+                                 const Eigen::Matrix3d& impulse_rate_derivative, const std::vector<char>& directions,
+                                 Eigen::MatrixXd& columns) {
+  const std::size_t n = flight.size();
+  columns.setZero(rate_columns.rows(), theta.size());
+  const FlightDynamics at(model_terms(model, theta), flight);
+  const double t_ref = flight.time_s[ref];
+  const auto true_time = [&](double t) { return t_ref + (t - t_ref) * at.time_factor(); };
+  const double t_jump = true_time(model.impulse_time_s);
+  // The walk that meets the impulse adds it going forwards and takes it away going
+  // backwards; past it, a change of the rate there is carried as a change of omega_ref
+  // would be, by the flow map: d reading_k / d rate_at_impulse = G_k Phi_j^-1.
+  const double sign = t_jump > t_ref ? 1.0 : -1.0;
+  const Mat3 carried = impulse_rate_derivative.inverse() * at.shell_inverse() * model.nominal.tensor;
+  for (Eigen::Index i = 0; i < theta.size(); ++i) {
+    if (!directions[static_cast<std::size_t>(i)]) continue;
+    const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
+    Eigen::VectorXd up = theta, down = theta;
+    up(i) += h;
+    down(i) -= h;
+    const Vec3 d_jump = (model_terms(model, up).jump - model_terms(model, down).jump) / (2.0 * h);
+    const Vec3 c = sign * (carried * d_jump);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double t = true_time(flight.time_s[k]);
+      const bool past = sign > 0.0 ? t >= t_jump : t < t_jump;
+      if (!past) continue;
+      const Eigen::Index row = static_cast<Eigen::Index>(3 * k);
+      columns.block<3, 1>(row, i) = rate_columns.block<3, 3>(row, 0) * c;
+    }
+  }
 }
 
 EffectParameters effect_parameters(const EffectModel& model, const Eigen::VectorXd& theta) {

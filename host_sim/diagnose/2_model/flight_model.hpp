@@ -60,11 +60,49 @@ std::size_t reference_index(Effect effect, const Flight& flight);
 // The same for a compound model (the first sample when any of its effects starts there).
 std::size_t compound_reference_index(const EffectModel& model, const Flight& flight);
 
+// How a prediction steps through samples closer together than its longest step (5 ms):
+// one integration step over several, the readings between interpolated (the model every
+// fit uses), or one step a sample (how it was until issue 30, 1.6x the work at 1 kHz;
+// kept as the benchmark's peer and the tests' reference).
+enum class SampleStepping { shared_steps, step_per_sample };
+
 // Readings predicted at every sample of `flight`, in the frame of flight.omega, for the
 // body rate `omega_ref` (body axes) at sample `ref` and effect parameters `theta`.
+// `rate_at_impulse` (optional): set to the body rate where the walk from the reference
+// meets the impulse, before it is applied (left alone when no walk meets it).
 void predict_readings(const EffectModel& model, const Flight& flight, std::size_t ref,
                       const Eigen::Vector3d& omega_ref, const Eigen::VectorXd& theta,
-                      std::vector<Eigen::Vector3d>& readings);
+                      std::vector<Eigen::Vector3d>& readings,
+                      SampleStepping stepping = SampleStepping::shared_steps,
+                      Eigen::Vector3d* rate_at_impulse = nullptr);
+
+// The theta directions (1: yes) along which only the sensor's terms move (bias, scale,
+// rotation): the readings' derivatives along them need no simulation.
+std::vector<char> sensor_directions(const EffectModel& model, const Eigen::VectorXd& theta);
+
+// d readings / d theta_i for each direction i that `directions` marks (from
+// sensor_directions), from `readings`, the prediction at theta: the reading is
+// scale (R w) + bias, so the rate w behind each reading is differentiated through the
+// sensor alone. `columns`: 3n rows (sample k at 3k), one column per theta entry, zero
+// where not marked.
+void sensor_reading_derivatives(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta,
+                                const std::vector<Eigen::Vector3d>& readings, const std::vector<char>& directions,
+                                Eigen::MatrixXd& columns);
+
+// The theta directions (1: yes) along which only the impulse's jump moves.
+std::vector<char> impulse_directions(const EffectModel& model, const Eigen::VectorXd& theta);
+
+// d readings / d theta_i for each impulse direction i that `directions` marks, without
+// simulating: beyond the impulse (on the far side from `ref`), a change of the jump is a
+// change of the rate where the walk met it, carried on by the same flow map as a change
+// of omega_ref. `rate_columns`: d readings / d omega_ref (3n x 3, rows in any weighting:
+// the result has the same); `impulse_rate_derivative`: d rate_at_impulse / d omega_ref
+// (predict_readings). `columns`: 3n rows, one column per theta entry, zero where not
+// marked and on the near side.
+void impulse_reading_derivatives(const EffectModel& model, const Flight& flight, std::size_t ref,
+                                 const Eigen::VectorXd& theta, const Eigen::MatrixXd& rate_columns,
+                                 const Eigen::Matrix3d& impulse_rate_derivative, const std::vector<char>& directions,
+                                 Eigen::MatrixXd& columns);
 
 // The body rate (body axes) that the nominal sensor would read as `reading`; the
 // starting guess of the initial state.

@@ -44,11 +44,14 @@ Vec3 starting_rate(const FlightData& data, std::size_t ref, const EffectFit* nom
 
 void residuals_of(const FlightData& data, const std::vector<Vec3>& readings, Eigen::VectorXd& r) {
   const Flight& flight = *data.flight;
-  r.setZero(static_cast<Eigen::Index>(3 * flight.size()));
+  r.resize(static_cast<Eigen::Index>(3 * flight.size()));  // each sample written once, no clearing first
   for (std::size_t k = 0; k < flight.size(); ++k) {
-    if (!data.mask[k] || !flight.usable[k]) continue;
-    r.segment<3>(static_cast<Eigen::Index>(3 * k)) =
-        (readings[k] - flight.omega[k]).cwiseProduct(data.inverse_sigma);
+    auto out = r.segment<3>(static_cast<Eigen::Index>(3 * k));
+    if (!data.mask[k] || !flight.usable[k]) {
+      out.setZero();
+    } else {
+      out = (readings[k] - flight.omega[k]).cwiseProduct(data.inverse_sigma);
+    }
   }
 }
 
@@ -104,6 +107,66 @@ struct Setup {
   EffectModel model() const { return EffectModel{effect, *nominal, impulse_time_s, base}; }
 };
 
+// Rows of a Jacobian column for the samples the fit uses, weighted as the residuals are.
+void weighted_column(const FlightData& d, const Eigen::MatrixXd& readings_column, Eigen::Index source,
+                     Eigen::MatrixXd& jacobian, Eigen::Index column) {
+  for (std::size_t k = 0; k < d.flight->size(); ++k) {
+    const Eigen::Index row = static_cast<Eigen::Index>(3 * k);
+    jacobian.block<3, 1>(row, column) =
+        d.mask[k] && d.flight->usable[k]
+            ? Vec3(readings_column.block<3, 1>(row, source).cwiseProduct(d.inverse_sigma))
+            : Vec3::Zero();
+  }
+}
+
+// The residuals of one flight and their Jacobian [theta | omega_ref] when some theta
+// directions need no simulation: the sensor's (sensor_reading_derivatives) and the
+// impulse's (impulse_reading_derivatives, from the rate columns). Every other column is
+// differenced exactly as the fitter would (same step, same residuals). False when no
+// direction is either: the fitter then differences every column itself.
+bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta, const Eigen::VectorXd& local,
+                     Eigen::VectorXd& r, Eigen::MatrixXd& jacobian) {
+  const EffectModel model = setup.model();
+  const std::vector<char> sensor = sensor_directions(model, theta), impulse = impulse_directions(model, theta);
+  const auto none = [](const std::vector<char>& v) { return std::find(v.begin(), v.end(), 1) == v.end(); };
+  if (none(sensor) && none(impulse)) return false;
+  const FlightData& d = (*setup.data)[static_cast<std::size_t>(block)];
+  const Flight& flight = *d.flight;
+  const std::size_t ref = setup.refs[static_cast<std::size_t>(block)];
+  std::vector<Vec3> readings;
+  Vec3 at_impulse = Vec3::Zero(), moved_at_impulse = Vec3::Zero();
+  predict_readings(model, flight, ref, Vec3(local), theta, readings, SampleStepping::shared_steps, &at_impulse);
+  residuals_of(d, readings, r);
+  Eigen::MatrixXd sensor_columns, impulse_columns;
+  if (!none(sensor)) sensor_reading_derivatives(model, flight, theta, readings, sensor, sensor_columns);
+  const Eigen::Index p = theta.size(), m = local.size();
+  jacobian.resize(r.size(), p + m);
+  Eigen::Matrix3d impulse_rate_derivative = Eigen::Matrix3d::Identity();
+  Eigen::VectorXd moved;
+  // Differenced columns, the rates' first: the impulse's columns are made from them.
+  for (Eigen::Index i = p + m; i-- > 0;) {
+    if (i < p && (sensor[static_cast<std::size_t>(i)] || impulse[static_cast<std::size_t>(i)])) continue;
+    Eigen::VectorXd shifted_theta = theta, shifted_local = local;
+    double& value = i < p ? shifted_theta(i) : shifted_local(i - p);
+    const double h = forward_difference_step(value);
+    value += h;
+    predict_readings(model, flight, ref, Vec3(shifted_local), shifted_theta, readings, SampleStepping::shared_steps,
+                     &moved_at_impulse);
+    residuals_of(d, readings, moved);
+    jacobian.col(i) = (moved - r) / h;
+    if (i >= p) impulse_rate_derivative.col(i - p) = (moved_at_impulse - at_impulse) / h;
+  }
+  if (!none(impulse)) {
+    impulse_reading_derivatives(model, flight, ref, theta, jacobian.rightCols(3), impulse_rate_derivative, impulse,
+                                impulse_columns);
+  }
+  for (Eigen::Index i = 0; i < p; ++i) {
+    if (sensor[static_cast<std::size_t>(i)]) weighted_column(d, sensor_columns, i, jacobian, i);
+    if (impulse[static_cast<std::size_t>(i)]) jacobian.col(i) = impulse_columns.col(i);
+  }
+  return true;
+}
+
 ArrowProblem problem_of(const Setup& setup, int shared_count) {
   ArrowProblem problem;
   problem.shared_count = shared_count;
@@ -118,6 +181,10 @@ ArrowProblem problem_of(const Setup& setup, int shared_count) {
     predict_readings(model, *d.flight, setup.refs[static_cast<std::size_t>(block)], Vec3(local), shared,
                      readings);
     residuals_of(d, readings, r);
+  };
+  problem.jacobian = [&setup](int block, const Eigen::VectorXd& shared, const Eigen::VectorXd& local,
+                              Eigen::VectorXd& r, Eigen::MatrixXd& jacobian) {
+    return flight_jacobian(setup, block, shared, local, r, jacobian);
   };
   return problem;
 }
@@ -501,6 +568,7 @@ EffectFit fit_initial_rates(const EffectFit& fixed, const NominalInertia& nomina
   ArrowProblem held = problem;
   held.residuals = [&problem, theta](int block, const Eigen::VectorXd&, const Eigen::VectorXd& local,
                                      Eigen::VectorXd& r) { problem.residuals(block, theta, local, r); };
+  held.jacobian = nullptr;  // only the rates are fitted: no sensor column to read off
   LeastSquaresOptions rates_only;
   rates_only.normal_at_solution = false;  // no effect parameter to give an error for
   const LeastSquaresResult solution =

@@ -39,11 +39,14 @@ InitialState fit_on(const EffectModel& model, const Flight& flight, std::size_t 
   problem.residuals = [&](int, const Eigen::VectorXd&, const Eigen::VectorXd& local, Eigen::VectorXd& r) {
     std::vector<Vec3> readings;
     predict_readings(model, flight, ref, Vec3(local), theta, readings);
-    r.setZero(static_cast<Eigen::Index>(3 * flight.size()));
+    r.resize(static_cast<Eigen::Index>(3 * flight.size()));  // each sample written once
     for (std::size_t k = 0; k < flight.size(); ++k) {
-      if (!flight.usable[k]) continue;
-      r.segment<3>(static_cast<Eigen::Index>(3 * k)) =
-          (readings[k] - flight.omega[k]).cwiseProduct(inverse_sigma);
+      auto out = r.segment<3>(static_cast<Eigen::Index>(3 * k));
+      if (!flight.usable[k]) {
+        out.setZero();
+      } else {
+        out = (readings[k] - flight.omega[k]).cwiseProduct(inverse_sigma);
+      }
     }
   };
   LeastSquaresOptions options;

@@ -29,7 +29,20 @@ struct ArrowProblem {
   std::function<void(int block, const Eigen::VectorXd& shared, const Eigen::VectorXd& local,
                      Eigen::VectorXd& residuals)>
       residuals;
+  // Optional: the residuals of `block` and their Jacobian, columns [shared | local], in
+  // one call, for a problem that knows some columns without simulating (the sensor's
+  // parameters). Returns false when it has nothing better for this point; the fitter then
+  // differentiates `residuals` by forward differences, as it does when this is empty. The
+  // residuals must be `residuals`' (same length, same values), the columns it does not
+  // know forward differences with forward_difference_step, and it must be as safe to
+  // call concurrently.
+  std::function<bool(int block, const Eigen::VectorXd& shared, const Eigen::VectorXd& local,
+                     Eigen::VectorXd& residuals, Eigen::MatrixXd& jacobian)>
+      jacobian;
 };
+
+// The forward-difference step the fitter takes for a parameter of this value.
+double forward_difference_step(double value);
 
 struct LeastSquaresOptions {
   int max_iterations = 40;
@@ -47,8 +60,8 @@ struct LeastSquaresResult {
   Eigen::MatrixXd normal_matrix;  // J^T J at the solution, [shared | local_0 | local_1 ...]
 };
 
-// Minimises the sum of squared residuals from the given start. Derivatives are forward
-// differences. Never throws on a bad start: a non-finite cost is treated as a rejected step.
+// Minimises the sum of squared residuals from the given start. Derivatives are the
+// problem's `jacobian` where it gives them, else forward differences. Never throws on a bad start: a non-finite cost is treated as a rejected step.
 LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& shared_start,
                             const std::vector<Eigen::VectorXd>& local_start,
                             const LeastSquaresOptions& options = {});
