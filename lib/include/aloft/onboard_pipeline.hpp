@@ -126,6 +126,7 @@ class OnboardPipeline {
     return true;
   }
 
+  const OnboardPipelineSettings<Scalar>& settings() const { return settings_; }
   const StreamCounts& stream() const { return clock_.counts(); }
   bool airborne() const { return check_.has_value(); }
   // The lever arm the recording's flights have given so far (valid when has_estimate()).
