@@ -79,8 +79,12 @@ class ReleaseDetector {
  public:
   using History = SampleHistory<Scalar, N>;
 
-  explicit ReleaseDetector(const ReleaseDetectorSettings<Scalar>& settings, const Mat3<Scalar>& inertia)
+  // The settings and the tensor are held, not copied (a pipeline's parts share its one
+  // copy): they must outlive the detector.
+  ReleaseDetector(const ReleaseDetectorSettings<Scalar>& settings, const Mat3<Scalar>& inertia)
       : settings_(settings), inertia_(inertia) {}
+  ReleaseDetector(ReleaseDetectorSettings<Scalar>&&, const Mat3<Scalar>&) = delete;
+  ReleaseDetector(const ReleaseDetectorSettings<Scalar>&, Mat3<Scalar>&&) = delete;
 
   void reset() {
     in_run_ = false;
@@ -130,8 +134,10 @@ class ReleaseDetector {
 
   // Evaluates sample c while airborne. Found once landing is confirmed.
   // `not_before`: the first sample that may still be dated the landing (not yet fed).
-  FoundLanding find_landing(const History& history, std::uint32_t c, std::uint32_t h, const Vec3<Scalar>& r,
-                            std::uint32_t not_before) {
+  // Out of line: its floating-point registers are saved on its own frame, not on its
+  // caller's, which the release window's dating and the flight's end run under.
+  ALOFT_OUT_OF_LINE FoundLanding find_landing(const History& history, std::uint32_t c, std::uint32_t h,
+                                              const Vec3<Scalar>& r, std::uint32_t not_before) {
     FoundLanding out;
     BodyKinematics<Scalar> k;
     bool evidence = false;
@@ -390,8 +396,8 @@ class ReleaseDetector {
     return e > level || e > settings_.release_fraction * limit(k, r);
   }
 
-  ReleaseDetectorSettings<Scalar> settings_;
-  Mat3<Scalar> inertia_;
+  const ReleaseDetectorSettings<Scalar>& settings_;
+  const Mat3<Scalar>& inertia_;
   TestedSample newest_;
   std::uint32_t run_start_ = 0;
   std::uint32_t landing_start_ = 0;

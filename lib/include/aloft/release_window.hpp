@@ -80,7 +80,10 @@ class ReleaseWindow {
   // before it: a proposal held back by ringing can be moved up to 25 ms earlier.
   static constexpr int ring_blocks = 12;
 
+  // The settings are held, not copied (a pipeline's parts share its one copy): they must
+  // outlive the window.
   explicit ReleaseWindow(const ReleaseWindowSettings<Scalar>& settings) : settings_(settings) {}
+  explicit ReleaseWindow(ReleaseWindowSettings<Scalar>&&) = delete;
 
   // Sample i (stamp t_us, kinematics k), with the gyro's verdict on torque.
   ALOFT_OUT_OF_LINE void add(std::uint32_t i, std::uint64_t t_us, const BodyKinematics<Scalar>& k,
@@ -193,7 +196,7 @@ class ReleaseWindow {
     return (mean_residual(b, r) - level).squaredNorm() <= limit * limit;
   }
 
-  ReleaseWindowSettings<Scalar> settings_;
+  const ReleaseWindowSettings<Scalar>& settings_;
   Block blocks_[ring_blocks];
   std::uint32_t newest_ = 0;  // the open block: blocks_[newest_ % ring_blocks]
   std::uint32_t count_ = 0;   // blocks held, the open one included
