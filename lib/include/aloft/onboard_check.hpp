@@ -61,12 +61,18 @@ class OnboardCheck {
 
  public:
   ALOFT_COLD OnboardCheck(const InertiaTensor<Scalar>& inertia, const OnboardCheckSettings<Scalar>& settings)
-      : coefficients_(PrincipalFrame<Scalar>(inertia).coefficients()),
+      : OnboardCheck(PrincipalFrame<Scalar>(inertia), settings) {}
+
+ private:
+  // The principal frame formed once (a firmware's stack holds one, not two).
+  OnboardCheck(const PrincipalFrame<Scalar>& frame, const OnboardCheckSettings<Scalar>& settings)
+      : coefficients_(frame.coefficients()),
         seed_every_(settings.seed_every > 0 ? settings.seed_every : std::uint16_t{1}),
-        sensor_to_principal_(PrincipalFrame<Scalar>(inertia).to_body_matrix().transpose() *
+        sensor_to_principal_(frame.to_body_matrix().transpose() *
                              settings.sensor_to_body.normalized().toRotationMatrix()),
         detector_(settings.flight) {}
 
+ public:
   // One gyro sample (rad/s, sensor axes) taken dt seconds after the previous one (dt is
   // ignored for the very first airborne sample). Returns ok, not_airborne (sample not
   // used), or an error status, in which case nothing changes.

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstdint>
+#include <new>
 #include <optional>
 
 #include "aloft/cold_path.hpp"
@@ -120,11 +121,16 @@ class OnboardPipeline {
 
   // Moves out the flight that ended since the last call; false when none has.
   bool take_finished_flight(FlightResult<Scalar>& out) {
-    if (!finished_) return false;
-    out = current_;
-    finished_ = false;
+    const FlightResult<Scalar>* finished = finished_flight();
+    if (finished == nullptr) return false;
+    out = *finished;
+    release_finished_flight();
     return true;
   }
+  // The same without a copy (a firmware's stack): the flight that ended, or null; valid
+  // until the next push, or until release_finished_flight(), which says it was taken.
+  const FlightResult<Scalar>* finished_flight() const { return finished_ ? &current_ : nullptr; }
+  void release_finished_flight() { finished_ = false; }
 
   const OnboardPipelineSettings<Scalar>& settings() const { return settings_; }
   const StreamCounts& stream() const { return clock_.counts(); }
@@ -218,7 +224,9 @@ class OnboardPipeline {
 
   ALOFT_COLD void start_flight(std::uint32_t release, std::uint64_t release_us, bool release_missed_given_r) {
     start_check();
-    current_ = FlightResult<Scalar>();
+    // Made in place: assigning a new FlightResult put a 120 B temporary on this frame,
+    // under the release window's dating (trivially destructible, so nothing is lost).
+    ::new (static_cast<void*>(&current_)) FlightResult<Scalar>();
     current_.release_us = release_us;
     next_feed_ = release;
     release_index_ = release;

@@ -133,14 +133,14 @@ std::optional<Pipeline> pipeline;
 std::uint32_t samples_this_poll = 0;
 
 // Each finished flight, in the lines the host's replay prints too (flight_lines.hpp);
-// times in the driver's base: µs after the first sample. The flight is copied onto the
-// stack, not kept in static RAM: this path is shallower than the per-sample one.
+// times in the driver's base: µs after the first sample. The flight is read where the
+// pipeline holds it, not copied: this path runs under the driver's burst.
 ALOFT_COLD void report_finished_flights() {
   ReportWriter out;
-  aloft::FlightResult<float> flight;
-  while (pipeline->take_finished_flight(flight)) {
-    aloft_flight_lines::write_flight_lines(out, flight, 0);
-    store_record(flight);
+  if (const aloft::FlightResult<float>* flight = pipeline->finished_flight()) {
+    aloft_flight_lines::write_flight_lines(out, *flight, 0);
+    store_record(*flight);
+    pipeline->release_finished_flight();
   }
 }
 
