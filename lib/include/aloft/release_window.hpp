@@ -93,7 +93,7 @@ class ReleaseWindow {
       b->start(i, t_us);
       count_ = 1;
     } else if (static_cast<std::uint32_t>(t_us) - b->start_low_us >= settings_.block_us ||
-               i != b->next_index) {
+               i != next_index_) {
       ++newest_;
       if (count_ < ring_blocks) ++count_;
       b = &blocks_[newest_ % ring_blocks];
@@ -101,7 +101,7 @@ class ReleaseWindow {
     }
     b->k_sum += lever_arm_matrix(k.w, k.w_dot);
     b->a_sum += k.a;
-    b->next_index = i + 1;
+    next_index_ = i + 1;
     ++b->samples;
     if (!torque_free) ++b->torque_samples;
   }
@@ -146,7 +146,6 @@ class ReleaseWindow {
       a_sum.setZero();
       start_low_us = static_cast<std::uint32_t>(t_us);
       first_index = i;
-      next_index = i;
       samples = 0;
       torque_samples = 0;
     }
@@ -154,7 +153,6 @@ class ReleaseWindow {
     Vec3<Scalar> a_sum;
     std::uint32_t start_low_us;  // the first sample's stamp, low 32 bits
     std::uint32_t first_index;
-    std::uint32_t next_index;
     std::uint16_t samples;
     std::uint16_t torque_samples;
   };
@@ -200,6 +198,7 @@ class ReleaseWindow {
   Block blocks_[ring_blocks];
   std::uint32_t newest_ = 0;  // the open block: blocks_[newest_ % ring_blocks]
   std::uint32_t count_ = 0;   // blocks held, the open one included
+  std::uint32_t next_index_ = 0;  // the index the open block takes next (another starts a block)
 };
 
 }  // namespace aloft
