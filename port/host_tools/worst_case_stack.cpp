@@ -8,13 +8,16 @@
 //   - calls: every bl/blx to a symbol and every branch to another function's start (a
 //     tail call) in the disassembly of the linked image, which is the truth after
 //     inlining; indirect calls (blx/bx through a register) are resolved to the --indirect
-//     candidates, the only function pointers the program passes;
+//     candidates, the only function pointers the program passes; a function pointer that
+//     one call site alone takes (a driver's sample sink) is given as --call CALLER=CALLEE,
+//     an edge of its own, since as an --indirect candidate every indirect call would reach
+//     it;
 //   - total: the deepest path from --root, plus for each --interrupt handler its own
 //     deepest path and the 108-byte exception frame of a core with the FPU in use (26
 //     words, aligned to 8). Handlers are summed, as if each could nest on the last.
 // Recursion makes the depth unbounded; the program says so and exits 1.
 //   worst_case_stack DISASSEMBLY.txt [--ci FILE]... --root SYMBOL [--interrupt SYMBOL]...
-//                    [--indirect SYMBOL]... [--report SYMBOL]...
+//                    [--indirect SYMBOL]... [--call CALLER=CALLEE]... [--report SYMBOL]...
 // Writes "key value" lines: stack_bytes, root_bytes, interrupt_bytes, then the deepest
 // path, and the depth below each --report function.
 #include <algorithm>
@@ -25,6 +28,7 @@
 #include <regex>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -151,13 +155,14 @@ Depth deepest(const std::string& name) {
 int main(int argc, char** argv) {
   if (argc < 2) {
     std::cerr << "usage: worst_case_stack DISASSEMBLY.txt [--ci F]... --root S [--interrupt S]... "
-                 "[--indirect S]... [--report S]...\n";
+                 "[--indirect S]... [--call CALLER=CALLEE]... [--report S]...\n";
     return 2;
   }
   try {
     read_disassembly(argv[1]);
     std::string root;
     std::vector<std::string> interrupts, reports, ci_files;
+    std::vector<std::pair<std::string, std::string>> calls;
     for (int i = 2; i + 1 < argc; i += 2) {
       const std::string option = argv[i];
       const std::string value = argv[i + 1];
@@ -171,10 +176,17 @@ int main(int argc, char** argv) {
         indirect_targets.push_back(value);
       else if (option == "--report")
         reports.push_back(value);
+      else if (option == "--call" && value.find('=') != std::string::npos)
+        calls.emplace_back(value.substr(0, value.find('=')), value.substr(value.find('=') + 1));
       else
         throw std::runtime_error("unknown option " + option);
     }
     for (const auto& f : ci_files) read_call_graph_info(f);
+    for (const auto& [caller, callee] : calls) {
+      if (!functions.count(caller) || !functions.count(callee))
+        throw std::runtime_error("--call " + caller + "=" + callee + ": not in the image");
+      functions[caller].callees.insert(callee);
+    }
     for (const auto& s : std::vector<std::string>{root}) {
       if (!functions.count(s)) throw std::runtime_error("root " + s + " is not in the image");
     }

@@ -24,10 +24,13 @@ void fly(Estimator& e, const V3& r, int samples, const V3& push = V3::Zero()) {
   }
 }
 
+// The estimator holds its settings by reference (a pipeline's parts share one copy).
+const aloft::LeverArmEstimatorSettings<double> default_settings;
+
 }  // namespace
 
 ALOFT_TEST_CASE("lever-arm estimator: a trusted flight gives the recording's estimate", "[lever_arm]") {
-  Estimator e{aloft::LeverArmEstimatorSettings<double>(), aloft::LeverArmLimits<double>()};
+  Estimator e{default_settings, aloft::LeverArmLimits<double>()};
   const V3 r(0.03, -0.02, 0.0);
   e.start_flight(false);
   fly(e, r, 400);
@@ -44,7 +47,7 @@ ALOFT_TEST_CASE("lever-arm estimator: a trusted flight gives the recording's est
 ALOFT_TEST_CASE("lever-arm estimator: a flight that hardly turned, or whose halves disagree, is not trusted",
                 "[lever_arm]") {
   const V3 r(0.03, -0.02, 0.0);
-  Estimator short_turn{aloft::LeverArmEstimatorSettings<double>(), aloft::LeverArmLimits<double>()};
+  Estimator short_turn{default_settings, aloft::LeverArmLimits<double>()};
   short_turn.start_flight(false);
   fly(short_turn, r, 400);
   const aloft::LeverArmReport<double> report = short_turn.finish_flight(nullptr, 1.5);  // under 2 rad
@@ -69,7 +72,7 @@ ALOFT_TEST_CASE("lever-arm estimator: a flight that hardly turned, or whose halv
 }
 
 ALOFT_TEST_CASE("lever-arm estimator: a given r is reported as given and never estimated", "[lever_arm]") {
-  Estimator e{aloft::LeverArmEstimatorSettings<double>(), aloft::LeverArmLimits<double>()};
+  Estimator e{default_settings, aloft::LeverArmLimits<double>()};
   const V3 given(0.031, -0.02, 0.0);
   e.start_flight(false);
   fly(e, V3(0.03, -0.02, 0.0), 400);
@@ -83,7 +86,7 @@ ALOFT_TEST_CASE("lever-arm estimator: a given r is reported as given and never e
 ALOFT_TEST_CASE("lever-arm estimator: the flight's own fit takes over after 64 samples, 8 when r missed",
                 "[lever_arm]") {
   for (const bool missed : {false, true}) {
-    Estimator e{aloft::LeverArmEstimatorSettings<double>(), aloft::LeverArmLimits<double>()};
+    Estimator e{default_settings, aloft::LeverArmLimits<double>()};
     e.start_flight(missed);
     aloft::BodyKinematics<double> k;
     k.w = V3(0, 0, 20);

@@ -8,6 +8,9 @@
 
 namespace {
 
+// The window holds its settings by reference (a pipeline's parts share one copy).
+const aloft::ReleaseWindowSettings<float> default_settings;
+
 using V3 = aloft::Vec3<float>;
 using Window = aloft::ReleaseWindow<float>;
 
@@ -51,7 +54,7 @@ aloft::WindowedRelease<float> feed(Window& w, std::uint32_t to, std::uint32_t ha
 
 ALOFT_TEST_CASE("release window: free flight from the proposal keeps the proposed release",
                 "[release_window]") {
-  Window w{aloft::ReleaseWindowSettings<float>()};
+  Window w{default_settings};
   const aloft::WindowedRelease<float> v = feed(w, 600, 200, 15.0f, 0.0f, 205);
   ALOFT_CHECK(v.decided);
   ALOFT_CHECK(v.free);
@@ -63,7 +66,7 @@ ALOFT_TEST_CASE("release window: a hand that still pushes after the proposal mov
                 "[release_window]") {
   // The hand's push fades over 80 samples (20 ms) to sample 300; proposed at 268 (8 ms
   // early, 6 m/s² left): the release moves to the block that starts where the hand let go.
-  Window w{aloft::ReleaseWindowSettings<float>()};
+  Window w{default_settings};
   const aloft::WindowedRelease<float> v = feed(w, 800, 300, 15.0f, 0.0f, 268);
   ALOFT_CHECK(v.decided);
   ALOFT_CHECK(v.free);
@@ -75,7 +78,7 @@ ALOFT_TEST_CASE("release window: proposed while the hand pushes for most of the 
                 "[release_window]") {
   // Proposed at 240 (15 ms early): when the window is full only 10 ms of free flight
   // follow the hand, under min_free_us.
-  Window w{aloft::ReleaseWindowSettings<float>()};
+  Window w{default_settings};
   const aloft::WindowedRelease<float> v = feed(w, 800, 300, 15.0f, 0.0f, 240);
   ALOFT_CHECK(v.decided);
   ALOFT_CHECK(!v.free);
@@ -86,7 +89,7 @@ ALOFT_TEST_CASE("release window: a ringing body is free flight (its mode average
   // 300 Hz at 5 m/s² from the release on, decaying over 10 ms: single samples over the
   // sample-by-sample limit
   // (2 + 0.1 |K r| = 4.2 m/s² here), their block means at most a fifth of it.
-  Window w{aloft::ReleaseWindowSettings<float>()};
+  Window w{default_settings};
   const aloft::WindowedRelease<float> v = feed(w, 800, 200, 15.0f, 5.0f, 200);
   ALOFT_CHECK(v.decided);
   ALOFT_CHECK(v.free);
@@ -94,7 +97,7 @@ ALOFT_TEST_CASE("release window: a ringing body is free flight (its mode average
 }
 
 ALOFT_TEST_CASE("release window: a push that never ends withdraws the proposal", "[release_window]") {
-  Window w{aloft::ReleaseWindowSettings<float>()};
+  Window w{default_settings};
   // The hand pushes to sample 10000 (still 15 m/s² · 90 % over the window): no free run.
   const aloft::WindowedRelease<float> v = feed(w, 400, 10000, 15.0f, 0.0f, 100);
   ALOFT_CHECK(v.decided);

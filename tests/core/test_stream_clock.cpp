@@ -6,6 +6,9 @@
 
 namespace {
 
+// The clock holds its settings by reference (a pipeline's parts share one copy).
+const aloft::StreamClockSettings<float> default_settings;
+
 using Clock = aloft::StreamClock<float>;
 
 aloft::ImuSample<float> sample_at(std::uint64_t t_us, std::uint8_t flags = 0) {
@@ -28,7 +31,7 @@ ALOFT_TEST_CASE("stream clock: the w_dot half span is about 1 ms in samples, 1 t
   const std::uint32_t periods_us[] = {10000, 1000, 500, 333, 250, 125};
   const std::uint32_t expected[] = {1, 1, 2, 3, 4, 4};
   for (int i = 0; i < 6; ++i) {
-    Clock clock{aloft::StreamClockSettings<float>()};
+    Clock clock{default_settings};
     (void)run(clock, 1000000, periods_us[i], 100);
     ALOFT_CHECK(clock.half_span() == expected[i]);
   }
@@ -36,7 +39,7 @@ ALOFT_TEST_CASE("stream clock: the w_dot half span is about 1 ms in samples, 1 t
 
 ALOFT_TEST_CASE("stream clock: stamps more than 3 intervals apart are a gap, counted with its length",
                 "[stream_clock]") {
-  Clock clock{aloft::StreamClockSettings<float>()};
+  Clock clock{default_settings};
   std::uint64_t t = run(clock, 1000000, 1000, 50);
   const aloft::StreamTick near = clock.tick(sample_at(t + 2900));  // 2.9 intervals: no gap
   ALOFT_CHECK(!near.gap);
@@ -54,7 +57,7 @@ ALOFT_TEST_CASE("stream clock: stamps more than 3 intervals apart are a gap, cou
 }
 
 ALOFT_TEST_CASE("stream clock: a stamp not after the last is refused and nothing changes", "[stream_clock]") {
-  Clock clock{aloft::StreamClockSettings<float>()};
+  Clock clock{default_settings};
   const std::uint64_t t = run(clock, 1000000, 1000, 10);
   ALOFT_CHECK(clock.tick(sample_at(t)).status == aloft::Status::time_not_increasing);
   ALOFT_CHECK(clock.tick(sample_at(t - 1)).status == aloft::Status::time_not_increasing);

@@ -40,10 +40,16 @@ class LeverArmFit {
   }
   // n samples summarised by their mean K and mean a (a block mean: what varies within
   // the block, as a structural mode does, is left out).
+  // Written out rather than as Eigen products, whose temporaries made this the deepest
+  // frame of the firmware's stack; the same sums to the bit as w * (K^T K) and w * (K^T a)
+  // are in Eigen (the weight taken into K^T, the sum of three as x0 + (x1 + x2)).
   ALOFT_COLD void add_mean(const Mat3<Scalar>& k_mean, const Vec3<Scalar>& a_mean, std::uint32_t n) {
     const Scalar w = static_cast<Scalar>(n);
-    ktk_ += w * (k_mean.transpose() * k_mean);
-    kta_ += w * (k_mean.transpose() * a_mean);
+    for (int i = 0; i < 3; ++i) {
+      const Scalar w0 = w * k_mean(0, i), w1 = w * k_mean(1, i), w2 = w * k_mean(2, i);
+      for (int j = 0; j < 3; ++j) ktk_(i, j) += w0 * k_mean(0, j) + (w1 * k_mean(1, j) + w2 * k_mean(2, j));
+      kta_(i) += w0 * a_mean(0) + (w1 * a_mean(1) + w2 * a_mean(2));
+    }
     ata_ += w * a_mean.squaredNorm();
     count_ += n;
   }

@@ -51,8 +51,11 @@ struct LeverArmReport {
 template <typename Scalar>
 class LeverArmEstimator {
  public:
+  // The settings are held, not copied (a pipeline's parts share its one copy): they must
+  // outlive the estimator.
   LeverArmEstimator(const LeverArmEstimatorSettings<Scalar>& settings, const LeverArmLimits<Scalar>& limits)
       : settings_(settings), limits_(limits) {}
+  LeverArmEstimator(LeverArmEstimatorSettings<Scalar>&&, const LeverArmLimits<Scalar>&) = delete;
 
   // A flight starts; `release_missed_given_r`: its release was found with a fitted r.
   void start_flight(bool release_missed_given_r) {
@@ -106,7 +109,7 @@ class LeverArmEstimator {
            flight_fit_.rms_residual(r) <= limits_.rms_limit_m_s2 && (ra - rb).norm() <= agree;
   }
 
-  LeverArmEstimatorSettings<Scalar> settings_;
+  const LeverArmEstimatorSettings<Scalar>& settings_;
   LeverArmLimits<Scalar> limits_;
   LeverArmFit<Scalar> flight_fit_;
   LeverArmFit<Scalar> half_fit_[2];

@@ -61,14 +61,18 @@ class OnboardCheck {
 
  public:
   ALOFT_COLD OnboardCheck(const InertiaTensor<Scalar>& inertia, const OnboardCheckSettings<Scalar>& settings)
-      : coefficients_(PrincipalFrame<Scalar>(inertia).coefficients()),
-        settings_(settings),
-        sensor_to_principal_(PrincipalFrame<Scalar>(inertia).to_body_matrix().transpose() *
-                             settings.sensor_to_body.normalized().toRotationMatrix()),
-        detector_(settings.flight) {
-    if (settings_.seed_every == 0) settings_.seed_every = 1;
-  }
+      : OnboardCheck(PrincipalFrame<Scalar>(inertia), settings) {}
 
+ private:
+  // The principal frame formed once (a firmware's stack holds one, not two).
+  OnboardCheck(const PrincipalFrame<Scalar>& frame, const OnboardCheckSettings<Scalar>& settings)
+      : coefficients_(frame.coefficients()),
+        seed_every_(settings.seed_every > 0 ? settings.seed_every : std::uint16_t{1}),
+        sensor_to_principal_(frame.to_body_matrix().transpose() *
+                             settings.sensor_to_body.normalized().toRotationMatrix()),
+        detector_(settings.flight) {}
+
+ public:
   // One gyro sample (rad/s, sensor axes) taken dt seconds after the previous one (dt is
   // ignored for the very first airborne sample). Returns ok, not_airborne (sample not
   // used), or an error status, in which case nothing changes.
@@ -155,7 +159,7 @@ class OnboardCheck {
       overall.add_values(da, rel);
     }
     overall_ = overall;
-    if (samples_ % settings_.seed_every == 0) start_seed(measured);
+    if (samples_ % seed_every_ == 0) start_seed(measured);
     ++samples_;
   }
 
@@ -178,7 +182,7 @@ class OnboardCheck {
   }
 
   EulerCoefficients<Scalar> coefficients_;
-  OnboardCheckSettings<Scalar> settings_;
+  std::uint16_t seed_every_;  // of the settings (0 taken as 1); the rest is used up front
   Mat3<Scalar> sensor_to_principal_;
   FlightDetector<Scalar> detector_;
   Slot slots_[K] = {};

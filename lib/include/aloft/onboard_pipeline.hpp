@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstdint>
+#include <new>
 #include <optional>
 
 #include "aloft/cold_path.hpp"
@@ -84,14 +85,14 @@ class OnboardPipeline {
       : inertia_(inertia),
         settings_(settings),
         sensor_to_body_(settings.check.sensor_to_body.normalized().toRotationMatrix()),
-        clock_(settings.clock),
-        detector_(settings.release, inertia.tensor()),
-        window_(settings.release_window),
-        lever_arm_(settings.lever_arm, {settings.release.ridge_rad_s2, settings.release.max_lever_arm_m,
-                                        settings.release.free_flight.accel_floor_m_s2}) {
-    check_settings_ = settings.check;
-    check_settings_.sensor_to_body = Quat<Scalar>::Identity();  // the history is in body axes
-  }
+        clock_(settings_.clock),
+        detector_(settings_.release, inertia_.tensor()),
+        window_(settings_.release_window),
+        lever_arm_(settings_.lever_arm, {settings.release.ridge_rad_s2, settings.release.max_lever_arm_m,
+                                         settings.release.free_flight.accel_floor_m_s2}) {}
+  // The parts hold references to settings_ and inertia_: a copy would point into this one.
+  OnboardPipeline(const OnboardPipeline&) = delete;
+  OnboardPipeline& operator=(const OnboardPipeline&) = delete;
 
   // One sample. Returns ok, or an error status (non-finite numbers, a time stamp not
   // after the previous one) in which case the sample is not used and nothing changes.
@@ -120,12 +121,18 @@ class OnboardPipeline {
 
   // Moves out the flight that ended since the last call; false when none has.
   bool take_finished_flight(FlightResult<Scalar>& out) {
-    if (!finished_) return false;
-    out = current_;
-    finished_ = false;
+    const FlightResult<Scalar>* finished = finished_flight();
+    if (finished == nullptr) return false;
+    out = *finished;
+    release_finished_flight();
     return true;
   }
+  // The same without a copy (a firmware's stack): the flight that ended, or null; valid
+  // until the next push, or until release_finished_flight(), which says it was taken.
+  const FlightResult<Scalar>* finished_flight() const { return finished_ ? &current_ : nullptr; }
+  void release_finished_flight() { finished_ = false; }
 
+  const OnboardPipelineSettings<Scalar>& settings() const { return settings_; }
   const StreamCounts& stream() const { return clock_.counts(); }
   bool airborne() const { return check_.has_value(); }
   // The lever arm the recording's flights have given so far (valid when has_estimate()).
@@ -141,24 +148,34 @@ class OnboardPipeline {
   }
 
   void detect(std::uint32_t c) {
-    const std::uint32_t h = clock_.half_span();
     if (check_) {
-      const FoundLanding landing = detector_.find_landing(history_, c, h, r_flight_, next_feed_);
-      if (on_probation_) add_to_window(c);
-      if (landing.found) {
-        feed_until(landing.index);
-        end_flight(true, landing.landing_us);
-        return;
-      }
-      if (on_probation_ && !date_release_over_window()) return;
-      // Held back a few samples, so a landing can still be dated back over them.
-      const std::uint32_t lag = settings_.feed_lag_samples;
-      const std::uint32_t held_back = c + 1 > lag ? c + 1 - lag : 0u;
-      const std::uint32_t pending = detector_.pending_from(c);
-      feed_until(pending < held_back ? pending : held_back);
+      detect_airborne(c);
+    } else {
+      detect_on_ground(c);
+    }
+  }
+
+  // Out of line, each with only its own locals: the frame under the release window's
+  // dating and the flight's end is small (footprint.json's worst-case stack).
+  ALOFT_OUT_OF_LINE void detect_airborne(std::uint32_t c) {
+    const FoundLanding landing = detector_.find_landing(history_, c, clock_.half_span(), r_flight_, next_feed_);
+    if (on_probation_) add_to_window(c);
+    if (landing.found) {
+      feed_until(landing.index);
+      end_flight(true, landing.landing_us);
       return;
     }
-    const FoundRelease<Scalar> release = detector_.find_release(history_, c, h, known_r(), rearmed_at_us_);
+    if (on_probation_ && !date_release_over_window()) return;
+    // Held back a few samples, so a landing can still be dated back over them.
+    const std::uint32_t lag = settings_.feed_lag_samples;
+    const std::uint32_t held_back = c + 1 > lag ? c + 1 - lag : 0u;
+    const std::uint32_t pending = detector_.pending_from(c);
+    feed_until(pending < held_back ? pending : held_back);
+  }
+
+  ALOFT_OUT_OF_LINE void detect_on_ground(std::uint32_t c) {
+    const FoundRelease<Scalar> release =
+        detector_.find_release(history_, c, clock_.half_span(), known_r(), rearmed_at_us_);
     add_to_window(c);
     if (!release.found) return;
     r_flight_ = release.r;
@@ -206,8 +223,10 @@ class OnboardPipeline {
   }
 
   ALOFT_COLD void start_flight(std::uint32_t release, std::uint64_t release_us, bool release_missed_given_r) {
-    check_.emplace(inertia_, check_settings_);
-    current_ = FlightResult<Scalar>();
+    start_check();
+    // Made in place: assigning a new FlightResult put a 120 B temporary on this frame,
+    // under the release window's dating (trivially destructible, so nothing is lost).
+    ::new (static_cast<void*>(&current_)) FlightResult<Scalar>();
     current_.release_us = release_us;
     next_feed_ = release;
     release_index_ = release;
@@ -253,7 +272,13 @@ class OnboardPipeline {
   ALOFT_COLD void restart_check() {
     keep_first_seeds();
     current_.overall.merge(check_->overall());
-    check_.emplace(inertia_, check_settings_);
+    start_check();
+  }
+
+  ALOFT_COLD void start_check() {
+    OnboardCheckSettings<Scalar> check = settings_.check;
+    check.sensor_to_body = Quat<Scalar>::Identity();  // the history is in body axes
+    check_.emplace(inertia_, check);
   }
 
   ALOFT_COLD void end_flight(bool landed, std::uint64_t at_us) {
@@ -292,8 +317,7 @@ class OnboardPipeline {
   }
 
   InertiaTensor<Scalar> inertia_;
-  OnboardPipelineSettings<Scalar> settings_;
-  OnboardCheckSettings<Scalar> check_settings_;
+  OnboardPipelineSettings<Scalar> settings_;  // the one copy: the parts below hold references
   Mat3<Scalar> sensor_to_body_;
   StreamClock<Scalar> clock_;
   SampleHistory<Scalar, history_samples> history_;

@@ -79,8 +79,12 @@ class ReleaseDetector {
  public:
   using History = SampleHistory<Scalar, N>;
 
-  explicit ReleaseDetector(const ReleaseDetectorSettings<Scalar>& settings, const Mat3<Scalar>& inertia)
-      : settings_(settings), inertia_(inertia) {}
+  // The settings and the tensor are held, not copied (a pipeline's parts share its one
+  // copy): they must outlive the detector.
+  ReleaseDetector(const ReleaseDetectorSettings<Scalar>& settings, const Mat3<Scalar>& inertia)
+      : settings_(settings), inertia_(inertia), torque_scale_floor_(torque_scale_floor(settings.free_flight, inertia)) {}
+  ReleaseDetector(ReleaseDetectorSettings<Scalar>&&, const Mat3<Scalar>&) = delete;
+  ReleaseDetector(const ReleaseDetectorSettings<Scalar>&, Mat3<Scalar>&&) = delete;
 
   void reset() {
     in_run_ = false;
@@ -99,8 +103,8 @@ class ReleaseDetector {
   ALOFT_COLD FoundRelease<Scalar> find_release(const History& history, std::uint32_t c, std::uint32_t h,
                                                const Vec3<Scalar>* r, std::uint64_t not_before_us) {
     FoundRelease<Scalar> out;
-    BodyKinematics<Scalar> k;
-    if (!tested(history, c, h, k) || !newest_.torque_free) {
+    const BodyKinematics<Scalar>& k = newest_.k;
+    if (!tested(history, c, h) || !newest_.torque_free) {
       in_run_ = false;
       given_missed_ = c;
       return out;
@@ -130,12 +134,14 @@ class ReleaseDetector {
 
   // Evaluates sample c while airborne. Found once landing is confirmed.
   // `not_before`: the first sample that may still be dated the landing (not yet fed).
-  FoundLanding find_landing(const History& history, std::uint32_t c, std::uint32_t h, const Vec3<Scalar>& r,
-                            std::uint32_t not_before) {
+  // Out of line: its floating-point registers are saved on its own frame, not on its
+  // caller's, which the release window's dating and the flight's end run under.
+  ALOFT_OUT_OF_LINE FoundLanding find_landing(const History& history, std::uint32_t c, std::uint32_t h,
+                                              const Vec3<Scalar>& r, std::uint32_t not_before) {
     FoundLanding out;
-    BodyKinematics<Scalar> k;
+    const BodyKinematics<Scalar>& k = newest_.k;
     bool evidence = false;
-    if (tested(history, c, h, k)) {
+    if (tested(history, c, h)) {
       const ResidualAndLimit<Scalar> e = residual_and_limit(settings_.free_flight, k, r);
       evidence = !newest_.torque_free || e.residual > e.limit;
       if (!evidence) {
@@ -194,7 +200,7 @@ class ReleaseDetector {
   std::uint32_t pending_from(std::uint32_t c) const { return landing_run_ > 0 ? landing_start_ : c + 1; }
 
   bool torque_free(const BodyKinematics<Scalar>& k) const {
-    return relative_torque(settings_.free_flight, inertia_, k) <= settings_.free_flight.torque_relative;
+    return relative_torque(inertia_, torque_scale_floor_, k) <= settings_.free_flight.torque_relative;
   }
   // The torque test of sample i (kinematics k over +-h), remembered for the 32 newest
   // samples tested: the pipeline's lever-arm fit takes the same samples a few steps later
@@ -252,10 +258,10 @@ class ReleaseDetector {
   }
 
   // Kinematics and torque verdict of sample c, kept as newest_.
-  bool tested(const History& history, std::uint32_t c, std::uint32_t h, BodyKinematics<Scalar>& k) {
-    newest_.valid = history.kinematics(c, h, k);
-    newest_.torque_free = newest_.valid && torque_free_at(c, h, k);
-    newest_.k = k;
+  // Formed in newest_ itself, not copied there: every sample pays for the copy.
+  bool tested(const History& history, std::uint32_t c, std::uint32_t h) {
+    newest_.valid = history.kinematics(c, h, newest_.k);
+    newest_.torque_free = newest_.valid && torque_free_at(c, h, newest_.k);
     return newest_.valid;
   }
 
@@ -390,8 +396,9 @@ class ReleaseDetector {
     return e > level || e > settings_.release_fraction * limit(k, r);
   }
 
-  ReleaseDetectorSettings<Scalar> settings_;
-  Mat3<Scalar> inertia_;
+  const ReleaseDetectorSettings<Scalar>& settings_;
+  const Mat3<Scalar>& inertia_;
+  Scalar torque_scale_floor_;  // of the tensor and the settings (free_flight_residual.hpp)
   TestedSample newest_;
   std::uint32_t run_start_ = 0;
   std::uint32_t landing_start_ = 0;

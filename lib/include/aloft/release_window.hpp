@@ -80,7 +80,10 @@ class ReleaseWindow {
   // before it: a proposal held back by ringing can be moved up to 25 ms earlier.
   static constexpr int ring_blocks = 12;
 
+  // The settings are held, not copied (a pipeline's parts share its one copy): they must
+  // outlive the window.
   explicit ReleaseWindow(const ReleaseWindowSettings<Scalar>& settings) : settings_(settings) {}
+  explicit ReleaseWindow(ReleaseWindowSettings<Scalar>&&) = delete;
 
   // Sample i (stamp t_us, kinematics k), with the gyro's verdict on torque.
   ALOFT_OUT_OF_LINE void add(std::uint32_t i, std::uint64_t t_us, const BodyKinematics<Scalar>& k,
@@ -90,7 +93,7 @@ class ReleaseWindow {
       b->start(i, t_us);
       count_ = 1;
     } else if (static_cast<std::uint32_t>(t_us) - b->start_low_us >= settings_.block_us ||
-               i != b->next_index) {
+               i != next_index_) {
       ++newest_;
       if (count_ < ring_blocks) ++count_;
       b = &blocks_[newest_ % ring_blocks];
@@ -98,7 +101,7 @@ class ReleaseWindow {
     }
     b->k_sum += lever_arm_matrix(k.w, k.w_dot);
     b->a_sum += k.a;
-    b->next_index = i + 1;
+    next_index_ = i + 1;
     ++b->samples;
     if (!torque_free) ++b->torque_samples;
   }
@@ -143,7 +146,6 @@ class ReleaseWindow {
       a_sum.setZero();
       start_low_us = static_cast<std::uint32_t>(t_us);
       first_index = i;
-      next_index = i;
       samples = 0;
       torque_samples = 0;
     }
@@ -151,7 +153,6 @@ class ReleaseWindow {
     Vec3<Scalar> a_sum;
     std::uint32_t start_low_us;  // the first sample's stamp, low 32 bits
     std::uint32_t first_index;
-    std::uint32_t next_index;
     std::uint16_t samples;
     std::uint16_t torque_samples;
   };
@@ -193,10 +194,11 @@ class ReleaseWindow {
     return (mean_residual(b, r) - level).squaredNorm() <= limit * limit;
   }
 
-  ReleaseWindowSettings<Scalar> settings_;
+  const ReleaseWindowSettings<Scalar>& settings_;
   Block blocks_[ring_blocks];
   std::uint32_t newest_ = 0;  // the open block: blocks_[newest_ % ring_blocks]
   std::uint32_t count_ = 0;   // blocks held, the open one included
+  std::uint32_t next_index_ = 0;  // the index the open block takes next (another starts a block)
 };
 
 }  // namespace aloft

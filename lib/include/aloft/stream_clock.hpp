@@ -50,7 +50,10 @@ struct StreamTick {
 template <typename Scalar>
 class StreamClock {
  public:
+  // The settings are held, not copied (a pipeline's parts share its one copy): they must
+  // outlive the clock.
   explicit StreamClock(const StreamClockSettings<Scalar>& settings) : settings_(settings) {}
+  explicit StreamClock(StreamClockSettings<Scalar>&&) = delete;
 
   StreamTick tick(const ImuSample<Scalar>& sample) {
     StreamTick t;
@@ -95,7 +98,7 @@ class StreamClock {
                                             : static_cast<std::uint32_t>(span + Scalar(0.5));
   }
 
-  StreamClockSettings<Scalar> settings_;
+  const StreamClockSettings<Scalar>& settings_;
   StreamCounts counts_;
   std::uint64_t last_t_us_ = 0;
   Scalar interval_us_ = Scalar(0);

@@ -133,14 +133,14 @@ std::optional<Pipeline> pipeline;
 std::uint32_t samples_this_poll = 0;
 
 // Each finished flight, in the lines the host's replay prints too (flight_lines.hpp);
-// times in the driver's base: µs after the first sample. The flight is copied onto the
-// stack, not kept in static RAM: this path is shallower than the per-sample one.
+// times in the driver's base: µs after the first sample. The flight is read where the
+// pipeline holds it, not copied: this path runs under the driver's burst.
 ALOFT_COLD void report_finished_flights() {
   ReportWriter out;
-  aloft::FlightResult<float> flight;
-  while (pipeline->take_finished_flight(flight)) {
-    aloft_flight_lines::write_flight_lines(out, flight, 0);
-    store_record(flight);
+  if (const aloft::FlightResult<float>* flight = pipeline->finished_flight()) {
+    aloft_flight_lines::write_flight_lines(out, *flight, 0);
+    store_record(*flight);
+    pipeline->release_finished_flight();
   }
 }
 
@@ -180,13 +180,18 @@ int run(const aloft::ImuBus& bus) {
   return exit_stream_ended;
 }
 
-}  // namespace
+// The pipeline, with the settings (240 B) on this frame only: not under the tensor's
+// eigen decomposition or the record ring's mount, the deepest of the set-up's calls.
+ALOFT_COLD void start_pipeline(const aloft::InertiaTensor<float>& inertia) {
+  pipeline.emplace(inertia, pipeline_settings());
+}
 
-// Set-up and the report: optimised for size (the per-sample work is in push_sample).
-ALOFT_COLD int main() {
-  aloft::port::init();
+// Set-up: the sensor, the tensor, the records and the pipeline; 0, or the exit status.
+// Out of line, so that its locals (the tensor, the settings: about 400 B) are off the
+// stack before the per-sample path runs, and the deepest path is the flight's, not this
+// one stacked on it (footprint.json's stack_bytes).
+ALOFT_COLD int set_up(const aloft::ImuBus& bus) {
   ReportWriter out;
-  const aloft::ImuBus bus = board_imu_bus();
   std::uint8_t who_am_i = 0;
   const aloft::Status found = aloft_stm32f405::imu_bring_up(bus, who_am_i);
   if (found == aloft::Status::sensor_not_found) {
@@ -205,10 +210,20 @@ ALOFT_COLD int main() {
     out.text("inertia tensor rejected: ").text(aloft::describe(made)).line();
     return exit_setup_failed;
   }
-  const aloft::OnboardPipelineSettings<float> settings = pipeline_settings();
-  start_records(tensor, settings);
-  pipeline.emplace(inertia, settings);
+  start_pipeline(inertia);
+  start_records(tensor, pipeline->settings());
   out.text("ICM-42688-P found on ").text(bus_name).text("; onboard pipeline running, K = ");
   out.integer(aloft_stm32f405::live_simulations).line();
+  return 0;
+}
+
+}  // namespace
+
+// Set-up, then the samples (the per-sample work is in push_sample).
+ALOFT_COLD int main() {
+  aloft::port::init();
+  const aloft::ImuBus bus = board_imu_bus();
+  const int set_up_status = set_up(bus);
+  if (set_up_status != 0) return set_up_status;
   return run(bus);
 }

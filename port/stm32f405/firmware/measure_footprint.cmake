@@ -36,7 +36,9 @@ run_timed(${BASELINE} without)
 timed_difference(instructions_per_sample)
 
 # Worst-case stack of an image; indirect calls besides the text output: the ImuBus's and
-# the internal flash's (BlockDevice) function pointers.
+# the internal flash's (BlockDevice) function pointers, and the driver's sample sink
+# (main.cpp's push_sample, called from the driver's burst: the per-sample path, which
+# holds the pipeline and a flight's reporting and storing).
 function(image_stack elf ci_dirs out)
   disassemble(${elf} ${elf}.disassembly.txt disassembly)
   string(REGEX MATCHALL "<_ZN5aloft4port9stm32f405[^>]*(read|write|ticks_in_us|program|erase)[^>]*>:"
@@ -46,6 +48,14 @@ function(image_stack elf ci_dirs out)
     string(REGEX REPLACE "^<(.*)>:$" "\\1" f "${f}")
     list(APPEND indirect --indirect ${f})
   endforeach()
+  string(REGEX MATCH "<(_ZN5aloft9icm42688p15Icm42688pDriverIfE10read_burst[^>]*)>:" _ "${disassembly}")
+  set(burst ${CMAKE_MATCH_1})
+  string(REGEX MATCH "<(_ZN12_GLOBAL__N_1[0-9]+push_sample[^>]*)>:" _ "${disassembly}")
+  set(sink ${CMAKE_MATCH_1})
+  if(NOT burst OR NOT sink)
+    message(FATAL_ERROR "${elf}: the driver's read_burst or main.cpp's push_sample is not in the image")
+  endif()
+  list(APPEND indirect --call ${burst}=${sink})
   worst_case_stack(${elf}.disassembly.txt "${ci_dirs}" ${indirect})
   foreach(key stack_bytes root_bytes interrupt_bytes)
     set(${out}_${key} ${${key}} PARENT_SCOPE)
