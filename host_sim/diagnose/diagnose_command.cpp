@@ -134,7 +134,8 @@ Trial read_trial(const DiagnoseOptions& o, const Body& body) {
     } else if (!o.window.empty()) {
       const auto [a, b] = parse_window(o.window);
       diagnose::check_segments(log, {{o.window, a, b, ""}}, "--window");
-      t.flights = diagnose::flights_from_given_segments(log, body, o.body, {{file_name(o.imu) + " " + o.window, a, b, ""}});
+      t.flights = diagnose::flights_from_given_segments(log, body, o.body,
+                                                        {{file_name(o.imu) + " " + o.window, a, b, ""}});
       t.source = o.imu + " (window " + o.window + ")";
     } else if (log_duration(log) > diagnose::kLongLog_s) {
       // A long log holds rest or several throws: never diagnose it as one flight.

@@ -113,7 +113,8 @@ TEST_CASE("given segments: the hand and the catch inside them are cut away and n
       given.push_back({"throw", truth_s(recording, truth.release_s) - 0.080,
                        truth_s(recording, truth.landing_s) + 0.060, ""});
     }
-    const std::vector<Flight> flights = flights_from_given_segments(log, body_of(recording, true), "body.json", given);
+    const std::vector<Flight> flights =
+        flights_from_given_segments(log, body_of(recording, true), "body.json", given);
     REQUIRE(flights.size() == given.size());
     for (std::size_t i = 0; i < flights.size(); ++i) {
       ++segments;

@@ -16,20 +16,22 @@ using aloft::test::run_aloft;
 using aloft::test::ScratchDir;
 using nlohmann::json;
 
-TEST_CASE("diagnose --window: the hand and the impact inside the window are cut away and named", "[contact]") {
+TEST_CASE("diagnose --window: the hand and the impact inside the window are cut away and named",
+          "[contact]") {
   ScratchDir dir;
   aloft::test::ThrowSpec spec;
   spec.imu_position_m = Eigen::Vector3d(0.03, -0.01, 0.04);
   spec.gyro_noise_rad_s = 0.01;
   spec.accel_noise_m_s2 = 0.05;
   const aloft::test::GeneratedThrow g = aloft::test::generate_throw(spec);
-  const std::string body = dir.write("body.json", aloft::test::body_json_text(spec.tensor_kg_m2, spec.imu_position_m));
+  const std::string body =
+      dir.write("body.json", aloft::test::body_json_text(spec.tensor_kg_m2, spec.imu_position_m));
   const std::string csv = dir.write("imu.csv", aloft::test::imu_csv_text(g));
   char window[64];
   std::snprintf(window, sizeof window, "%.3f:%.3f", g.release_s - 0.060, g.landing_s + 0.008);
   const std::string report = dir.path("report.json");
-  const aloft::test::RunResult run = run_aloft(
-      dir, "diagnose --body '" + body + "' --imu '" + csv + "' --window " + window + " --json '" + report + "'");
+  const aloft::test::RunResult run = run_aloft(dir, "diagnose --body '" + body + "' --imu '" + csv +
+                                                        "' --window " + window + " --json '" + report + "'");
   INFO("stdout: " << run.out << "\nstderr: " << run.err);
   REQUIRE(run.exit_code == 0);
   const json r = json::parse(aloft::test::read_file(report));

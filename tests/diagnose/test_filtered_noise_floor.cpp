@@ -50,8 +50,8 @@ std::uint64_t seed_base() {
 aloft::generator::GeneratedFlight filtered_flight(const GridPoint& p, const std::string& effect, int index) {
   aloft::generator::FlightSpec spec;
   spec.effect = effect;
-  spec.body = aloft::generator::body_names()[static_cast<std::size_t>(index) %
-                                             aloft::generator::body_names().size()];
+  spec.body =
+      aloft::generator::body_names()[static_cast<std::size_t>(index) % aloft::generator::body_names().size()];
   spec.imu_rate_hz = p.rate_hz;
   spec.gyro_cutoff_hz = p.cutoff_hz;
   return aloft::generator::generate_flight(spec, seed_base() + 97 * static_cast<std::uint64_t>(index));
@@ -59,7 +59,8 @@ aloft::generator::GeneratedFlight filtered_flight(const GridPoint& p, const std:
 
 }  // namespace
 
-TEST_CASE("the noise floor holds within x2 from 100 Hz to 8 kHz, filtered or not", "[noise_floor][filtered]") {
+TEST_CASE("the noise floor holds within x2 from 100 Hz to 8 kHz, filtered or not",
+          "[noise_floor][filtered]") {
   int flights = 0, within = 0;
   double worst = 1.0;
   int index = 0;
@@ -73,9 +74,11 @@ TEST_CASE("the noise floor holds within x2 from 100 Hz to 8 kHz, filtered or not
       worst = std::max(worst, off);
       ++flights;
       within += off <= 2.0;
-      std::printf("%6.0f Hz, low-pass %4.0f Hz, %-16s %-5s sigma %.5f truth %.5f (x%.2f) correlation %5.1f %s lp %.0f\n",
-                  p.rate_hz, p.cutoff_hz, effect.c_str(), g.truth.body.c_str(), floor.sigma.mean(),
-                  g.gyro_noise_in_readings_rad_s.mean(), off, floor.correlation, floor.method, floor.low_pass_hz);
+      std::printf(
+          "%6.0f Hz, low-pass %4.0f Hz, %-16s %-5s sigma %.5f truth %.5f (x%.2f) correlation %5.1f %s lp "
+          "%.0f\n",
+          p.rate_hz, p.cutoff_hz, effect.c_str(), g.truth.body.c_str(), floor.sigma.mean(),
+          g.gyro_noise_in_readings_rad_s.mean(), off, floor.correlation, floor.method, floor.low_pass_hz);
     }
   }
   std::printf("noise floor within x2 on %d of %d flights; worst x%.2f\n", within, flights, worst);
@@ -97,10 +100,11 @@ TEST_CASE("noise alone behind a gyro's low-pass stays none", "[noise_floor][filt
     const bool ok = d.analysis.verdict.effect == Effect::none;
     ++flights;
     none += ok;
-    std::printf("%6.0f Hz, low-pass %4.0f Hz: %s%s (floor %.4f, correlation %.1f, %s)\n", p.rate_hz, p.cutoff_hz,
-                effect_name(d.analysis.verdict.effect), ok ? "" : "  WRONG", d.noise.sigma.mean(), d.noise.correlation,
-                d.noise.method);
-    if (!ok && d.analysis.where.onset_s) std::printf("    onset %.3f s of %.3f s\n", *d.analysis.where.onset_s, flight.end_s());
+    std::printf("%6.0f Hz, low-pass %4.0f Hz: %s%s (floor %.4f, correlation %.1f, %s)\n", p.rate_hz,
+                p.cutoff_hz, effect_name(d.analysis.verdict.effect), ok ? "" : "  WRONG",
+                d.noise.sigma.mean(), d.noise.correlation, d.noise.method);
+    if (!ok && d.analysis.where.onset_s)
+      std::printf("    onset %.3f s of %.3f s\n", *d.analysis.where.onset_s, flight.end_s());
     for (const Candidate& k : d.analysis.candidates)
       if (!ok) std::printf("    %-20s score %12.1f shrink %6.3f\n", effect_name(k.effect), k.score, k.shrink);
   }

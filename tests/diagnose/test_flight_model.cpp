@@ -50,7 +50,8 @@ TEST_CASE("an axisymmetric body's rate turns about its axis at (C - A) / A w3, e
   CHECK(largest < 2e-6);
 }
 
-TEST_CASE("a tumbling asymmetric body keeps its energy and |L| at every 1 kHz sample to 2e-7", "[flight_model]") {
+TEST_CASE("a tumbling asymmetric body keeps its energy and |L| at every 1 kHz sample to 2e-7",
+          "[flight_model]") {
   const Eigen::Vector3d moments(0.0017, 0.0042, 0.0054);
   const NominalInertia body = NominalInertia::of_tensor(moments.asDiagonal());
   const Flight flight = kilohertz_flight();
@@ -66,7 +67,7 @@ TEST_CASE("a tumbling asymmetric body keeps its energy and |L| at every 1 kHz sa
     momentum_drift = std::max(momentum_drift, std::abs(momentum(w) / momentum(w0) - 1.0));
   }
   INFO("energy " << energy_drift << ", |L| " << momentum_drift);
-  CHECK(energy_drift < 2e-7);  // measured 6.3e-8
+  CHECK(energy_drift < 2e-7);    // measured 6.3e-8
   CHECK(momentum_drift < 2e-7);  // measured 3.2e-8
 }
 
@@ -83,9 +84,10 @@ TEST_CASE("steps shared by 1 kHz samples read as one step a sample does, to 3e-6
     predict_readings(model, flight, ref, w0, jump, shared, SampleStepping::shared_steps);
     predict_readings(model, flight, ref, w0, jump, per_sample, SampleStepping::step_per_sample);
     double largest = 0.0;
-    for (std::size_t k = 0; k < flight.size(); ++k) largest = std::max(largest, (shared[k] - per_sample[k]).norm());
+    for (std::size_t k = 0; k < flight.size(); ++k)
+      largest = std::max(largest, (shared[k] - per_sample[k]).norm());
     INFO("impulse at " << impulse_time << " s: largest difference " << largest << " rad/s");
-    CHECK(largest > 0.0);  // the two really step differently
+    CHECK(largest > 0.0);   // the two really step differently
     CHECK(largest < 3e-6);  // measured 1.6e-6 on this flip at 14 rad/s
   }
 }
@@ -144,7 +146,8 @@ TEST_CASE("the sensor's columns of the readings' Jacobian agree with central dif
       double largest = 0.0, size = 0.0;
       for (std::size_t k = 0; k < flight.size(); ++k) {
         const Eigen::Vector3d central = (up[k] - down[k]) / (2.0 * h);
-        largest = std::max(largest, (columns.block<3, 1>(static_cast<Eigen::Index>(3 * k), i) - central).norm());
+        largest =
+            std::max(largest, (columns.block<3, 1>(static_cast<Eigen::Index>(3 * k), i) - central).norm());
         size = std::max(size, central.norm());
       }
       INFO("column " << i << ": largest difference " << largest << " of " << size);
@@ -183,7 +186,8 @@ TEST_CASE("the impulse's Jacobian columns, carried by the flow map, agree with c
       at_impulse_derivative.col(i) = (rate_up - rate_down) / (2.0 * h);
     }
     Eigen::MatrixXd columns;
-    impulse_reading_derivatives(model, flight, ref, jump, rate_columns, at_impulse_derivative, {1, 1, 1}, columns);
+    impulse_reading_derivatives(model, flight, ref, jump, rate_columns, at_impulse_derivative, {1, 1, 1},
+                                columns);
     for (Eigen::Index i = 0; i < 3; ++i) {
       Eigen::VectorXd plus = jump, minus = jump;
       plus(i) += h;
@@ -193,7 +197,8 @@ TEST_CASE("the impulse's Jacobian columns, carried by the flow map, agree with c
       double largest = 0.0, size = 0.0;
       for (std::size_t k = 0; k < flight.size(); ++k) {
         const Eigen::Vector3d central = (up[k] - down[k]) / (2.0 * h);
-        largest = std::max(largest, (columns.block<3, 1>(static_cast<Eigen::Index>(3 * k), i) - central).norm());
+        largest =
+            std::max(largest, (columns.block<3, 1>(static_cast<Eigen::Index>(3 * k), i) - central).norm());
         size = std::max(size, central.norm());
       }
       INFO("impulse at " << impulse_time << " s, column " << i << ": largest difference " << largest << " of "

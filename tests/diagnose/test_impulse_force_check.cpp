@@ -87,7 +87,8 @@ TEST_CASE("impulse force: a verdict the accelerometer does not back is not confi
   const FlightDiagnosis blow = diagnose_flight(flight, nominal);
   REQUIRE(blow.analysis.verdict.effect == Effect::impulse);
   bool noted = false;
-  for (const std::string& n : blow.analysis.notes) noted = noted || n.find("shows a blow") != std::string::npos;
+  for (const std::string& n : blow.analysis.notes)
+    noted = noted || n.find("shows a blow") != std::string::npos;
   CHECK(noted);
 
   const Flight inner_flight = without_blow(flight, g);
@@ -95,6 +96,7 @@ TEST_CASE("impulse force: a verdict the accelerometer does not back is not confi
   REQUIRE(inner.analysis.verdict.effect == Effect::impulse);
   CHECK_FALSE(inner.analysis.verdict.confident);
   bool said = false;
-  for (const std::string& w : inner.analysis.verdict.could_not_judge) said = said || w.find("no blow") != std::string::npos;
+  for (const std::string& w : inner.analysis.verdict.could_not_judge)
+    said = said || w.find("no blow") != std::string::npos;
   CHECK(said);
 }

@@ -39,7 +39,8 @@ Flight gyrostat_flight(const Eigen::Matrix3d& tensor, const Eigen::Vector3d& h, 
 }
 
 // The diagnosis's prediction of `flight` under `model` with theta, from the first sample's rate.
-std::vector<Eigen::Vector3d> predicted(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta) {
+std::vector<Eigen::Vector3d> predicted(const EffectModel& model, const Flight& flight,
+                                       const Eigen::VectorXd& theta) {
   std::vector<Eigen::Vector3d> out;
   predict_readings(model, flight, 0, flight.omega.front(), theta, out);
   return out;
@@ -75,14 +76,17 @@ TEST_CASE("the gyrostat model moves as the generator's independent integrator do
   const Flight flight = gyrostat_flight(tensor, h, w0);
   const NominalInertia nominal = NominalInertia::of_tensor(tensor);
   const Eigen::VectorXd theta = tensor.inverse() * h;
-  const double gap = largest_gap(predicted(EffectModel(Effect::internal_momentum, nominal), flight, theta), flight.omega);
+  const double gap =
+      largest_gap(predicted(EffectModel(Effect::internal_momentum, nominal), flight, theta), flight.omega);
   std::printf("gyrostat: model against generator within %.2g rad/s over 1 s\n", gap);
   CHECK(gap < kModelAgreement_rad_s);
   // and the rotor matters: the rigid body drifts away by far more.
-  CHECK(largest_gap(predicted(EffectModel(Effect::none, nominal), flight, Eigen::VectorXd()), flight.omega) > 0.1);
+  CHECK(largest_gap(predicted(EffectModel(Effect::none, nominal), flight, Eigen::VectorXd()), flight.omega) >
+        0.1);
 }
 
-TEST_CASE("on a body of revolution, a rotor along the axis is an axial moment change within a flight", "[rotor][equivalence]") {
+TEST_CASE("on a body of revolution, a rotor along the axis is an axial moment change within a flight",
+          "[rotor][equivalence]") {
   const NominalInertia nominal = NominalInertia::of_tensor(kDisc);
   const Eigen::Vector3d h(0.0, 0.0, 0.0009);  // 5 % of |L| at ~10 rad/s
   const Eigen::Vector3d w0(6.0, -3.0, 8.0);
@@ -104,8 +108,9 @@ TEST_CASE("on a body of revolution, a rotor along the axis is an axial moment ch
     CHECK_FALSE(moments_mimicking_momentum(nominal, tilted, w0(2)).has_value());
     const Flight f = gyrostat_flight(kDisc, tilted, w0);
     const auto best = moments_mimicking_momentum(nominal, Eigen::Vector3d(0, 0, 0.0009), w0(2));
-    CHECK(largest_gap(predicted(EffectModel(Effect::inertia_moments, nominal), f, moments_theta(nominal, *best)),
-                      f.omega) > 0.05);
+    CHECK(largest_gap(
+              predicted(EffectModel(Effect::inertia_moments, nominal), f, moments_theta(nominal, *best)),
+              f.omega) > 0.05);
   }
   SECTION("not across flights at different axial rates") {
     const Eigen::Vector3d w1(6.0, -3.0, 4.0);  // half the axial rate
@@ -116,7 +121,8 @@ TEST_CASE("on a body of revolution, a rotor along the axis is an axial moment ch
                       other.omega) > 0.05);
   }
   SECTION("not on a body whose moments all differ") {
-    const NominalInertia box = NominalInertia::of_tensor(Eigen::Vector3d(0.0017, 0.0042, 0.0054).asDiagonal());
+    const NominalInertia box =
+        NominalInertia::of_tensor(Eigen::Vector3d(0.0017, 0.0042, 0.0054).asDiagonal());
     CHECK_FALSE(moments_mimicking_momentum(box, Eigen::Vector3d(0, 0, 0.001), 5.0).has_value());
   }
 }

@@ -139,7 +139,7 @@ TEST_CASE("a problem's own Jacobian is used where it gives one, differences wher
   std::atomic<int> given{0}, declined{0};
   // The exact Jacobian for block 0; block 1 declines, so its columns are differenced.
   p.jacobian = [&, residuals = p.residuals](int block, const Eigen::VectorXd& s, const Eigen::VectorXd& l,
-                                           Eigen::VectorXd& r, Eigen::MatrixXd& j) {
+                                            Eigen::VectorXd& r, Eigen::MatrixXd& j) {
     if (block == 1) {
       ++declined;
       return false;

@@ -156,8 +156,9 @@ TEST_CASE("between-flight scatter: flights that share one value read about 1, fl
   for (double scale : {1.0, 10.0}) {
     std::vector<Analysis> own;
     for (const auto& o : offsets) {
-      own.push_back(own_fit(Effect::gyro_scale, Eigen::Vector2d(0.1 + 0.01 * scale * o[0], 0.2 + 0.01 * scale * o[1]),
-                            0.01, 0.44));
+      own.push_back(own_fit(Effect::gyro_scale,
+                            Eigen::Vector2d(0.1 + 0.01 * scale * o[0], 0.2 + 0.01 * scale * o[1]), 0.01,
+                            0.44));
     }
     std::vector<const Analysis*> pointers;
     for (const Analysis& a : own) pointers.push_back(&a);

@@ -126,7 +126,8 @@ TEST_CASE("phone tosses at 1 kHz, 5 flights: intervals within 3 %", "[tensor]") 
   CHECK(median <= 0.03);
 }
 
-TEST_CASE("near-symmetric bodies: the plane whose axes the data cannot fix is named, with no angle", "[tensor]") {
+TEST_CASE("near-symmetric bodies: the plane whose axes the data cannot fix is named, with no angle",
+          "[tensor]") {
   // Flights of 1.2 s at 1 kHz with no effect. The cylinder (the seed paper's, GF moments
   // 183.8, 183.8, 210.8 kg cm^2) and the disc are bodies of revolution about z: Ix = Iy,
   // so no flight fixes the axes in the x-y plane. The box's three moments are well apart.

@@ -5,7 +5,8 @@
 
 namespace aloft::host::diagnose {
 
-std::vector<FirmwareFlight> firmware_flights(const ImuLog& log, const Body& body, const std::string& body_source) {
+std::vector<FirmwareFlight> firmware_flights(const ImuLog& log, const Body& body,
+                                             const std::string& body_source) {
   std::vector<FirmwareFlight> out;
   if (log.time_s.empty() || log.accel_m_s2.size() != log.time_s.size()) return out;
   const Recording recording = imu_csv_recording(log);

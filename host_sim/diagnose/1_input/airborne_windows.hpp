@@ -35,7 +35,8 @@ struct FirmwareFlight {
 // Every flight the firmware's code finds in `log` (none without an accelerometer).
 // Throws Error naming `body_source` or the log when the pipeline refuses the tensor or a
 // sample.
-std::vector<FirmwareFlight> firmware_flights(const ImuLog& log, const Body& body, const std::string& body_source);
+std::vector<FirmwareFlight> firmware_flights(const ImuLog& log, const Body& body,
+                                             const std::string& body_source);
 
 // The airborne windows of `log` as segments "airborne1", "airborne2", ..., each from the
 // pipeline's release to its landing (or to the log's end when the log ends in the air).

@@ -19,7 +19,8 @@ Contact strongest_force(const ImuLog& log, const Body& body, const FirmwareFligh
   for (std::size_t k = 0; k < log.time_s.size(); ++k) {
     if (log.time_s[k] < from_s || log.time_s[k] >= to_s) continue;
     const double force = centre_specific_force(
-        body_kinematics_at(log.time_s, log.gyro_rad_s, log.accel_m_s2, body.imu_to_body, k), flight.imu_position_m);
+        body_kinematics_at(log.time_s, log.gyro_rad_s, log.accel_m_s2, body.imu_to_body, k),
+        flight.imu_position_m);
     if (force > c.beyond_rotation_m_s2) {
       c.beyond_rotation_m_s2 = force;
       c.at_s = log.time_s[k];

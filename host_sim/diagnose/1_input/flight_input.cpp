@@ -48,7 +48,8 @@ std::vector<Flight> flights_from_segments(const ImuLog& log, const Body& body,
   return flights;
 }
 
-std::vector<Flight> flights_from_given_segments(const ImuLog& log, const Body& body, const std::string& body_source,
+std::vector<Flight> flights_from_given_segments(const ImuLog& log, const Body& body,
+                                                const std::string& body_source,
                                                 const std::vector<Segment>& segments) {
   const std::vector<RestPeriod> rest = find_rest_periods(log);
   std::vector<Flight> flights;

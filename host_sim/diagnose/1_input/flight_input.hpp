@@ -23,7 +23,8 @@ std::vector<Flight> flights_from_segments(const ImuLog& log, const Body& body,
 // Segments the user gave (--segments, --window): each cut to its flight where the
 // accelerometer shows a hand or the ground inside it (contact.hpp), the cut named in
 // Flight::contacts. Without an accelerometer, flights_from_segments.
-std::vector<Flight> flights_from_given_segments(const ImuLog& log, const Body& body, const std::string& body_source,
+std::vector<Flight> flights_from_given_segments(const ImuLog& log, const Body& body,
+                                                const std::string& body_source,
                                                 const std::vector<Segment>& segments);
 
 // Body rates log(R_k^-1 R_k+1)/dt of consecutive poses at the midpoint of each pair, body

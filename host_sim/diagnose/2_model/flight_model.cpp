@@ -154,7 +154,8 @@ class FlightDynamics {
       for (std::size_t i = 0; i < 3; ++i) torque[i] -= drag_ * speed * x[i];
     }
     if (has_momentum()) {  // momentum × w, a constant vector's cross with both lanes
-      const Eigen::Array2d h[3] = {Eigen::Array2d::Constant(momentum_(0)), Eigen::Array2d::Constant(momentum_(1)),
+      const Eigen::Array2d h[3] = {Eigen::Array2d::Constant(momentum_(0)),
+                                   Eigen::Array2d::Constant(momentum_(1)),
                                    Eigen::Array2d::Constant(momentum_(2))};
       const Lanes<3> gyroscopic = cross(h, x.data());
       for (std::size_t i = 0; i < 3; ++i) torque[i] += gyroscopic[i];
@@ -257,8 +258,8 @@ class FlightDynamics {
 // (integrated to the impulse, then on).
 class ReadingWalks {
  public:
-  ReadingWalks(const FlightDynamics& dynamics, const EffectModel& model, const Flight& flight, std::size_t ref,
-               std::vector<Vec3>& readings, double max_segment, Vec3* rate_at_impulse)
+  ReadingWalks(const FlightDynamics& dynamics, const EffectModel& model, const Flight& flight,
+               std::size_t ref, std::vector<Vec3>& readings, double max_segment, Vec3* rate_at_impulse)
       : d_(dynamics),
         flight_(flight),
         readings_(readings),
@@ -359,8 +360,8 @@ class ReadingWalks {
     const std::size_t lo = std::min(from, to), hi = std::max(from, to);
     for (std::size_t k = lo + 1; k < hi; ++k) {
       const double s = (true_time(k) - t0) / h, s2 = s * s, s3 = s2 * s;
-      readings_[k] = (2.0 * s3 - 3.0 * s2 + 1.0) * r0 + (3.0 * s2 - 2.0 * s3) * r1 + (s3 - 2.0 * s2 + s) * g0 +
-                     (s3 - s2) * g1;
+      readings_[k] = (2.0 * s3 - 3.0 * s2 + 1.0) * r0 + (3.0 * s2 - 2.0 * s3) * r1 +
+                     (s3 - 2.0 * s2 + s) * g0 + (s3 - s2) * g1;
     }
   }
 
@@ -510,8 +511,8 @@ std::vector<char> sensor_directions(const EffectModel& model, const Eigen::Vecto
 }
 
 void sensor_reading_derivatives(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta,
-                                const std::vector<Eigen::Vector3d>& readings, const std::vector<char>& directions,
-                                Eigen::MatrixXd& columns) {
+                                const std::vector<Eigen::Vector3d>& readings,
+                                const std::vector<char>& directions, Eigen::MatrixXd& columns) {
   const std::size_t n = flight.size();
   columns.setZero(static_cast<Eigen::Index>(3 * n), theta.size());
   const FlightDynamics at(model_terms(model, theta), flight);
@@ -554,8 +555,8 @@ std::vector<char> impulse_directions(const EffectModel& model, const Eigen::Vect
 
 void impulse_reading_derivatives(const EffectModel& model, const Flight& flight, std::size_t ref,
                                  const Eigen::VectorXd& theta, const Eigen::MatrixXd& rate_columns,
-                                 const Eigen::Matrix3d& impulse_rate_derivative, const std::vector<char>& directions,
-                                 Eigen::MatrixXd& columns) {
+                                 const Eigen::Matrix3d& impulse_rate_derivative,
+                                 const std::vector<char>& directions, Eigen::MatrixXd& columns) {
   const std::size_t n = flight.size();
   columns.setZero(rate_columns.rows(), theta.size());
   const FlightDynamics at(model_terms(model, theta), flight);

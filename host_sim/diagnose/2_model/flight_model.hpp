@@ -86,8 +86,8 @@ std::vector<char> sensor_directions(const EffectModel& model, const Eigen::Vecto
 // sensor alone. `columns`: 3n rows (sample k at 3k), one column per theta entry, zero
 // where not marked.
 void sensor_reading_derivatives(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta,
-                                const std::vector<Eigen::Vector3d>& readings, const std::vector<char>& directions,
-                                Eigen::MatrixXd& columns);
+                                const std::vector<Eigen::Vector3d>& readings,
+                                const std::vector<char>& directions, Eigen::MatrixXd& columns);
 
 // The theta directions (1: yes) along which only the impulse's jump moves.
 std::vector<char> impulse_directions(const EffectModel& model, const Eigen::VectorXd& theta);
@@ -101,8 +101,8 @@ std::vector<char> impulse_directions(const EffectModel& model, const Eigen::Vect
 // marked and on the near side.
 void impulse_reading_derivatives(const EffectModel& model, const Flight& flight, std::size_t ref,
                                  const Eigen::VectorXd& theta, const Eigen::MatrixXd& rate_columns,
-                                 const Eigen::Matrix3d& impulse_rate_derivative, const std::vector<char>& directions,
-                                 Eigen::MatrixXd& columns);
+                                 const Eigen::Matrix3d& impulse_rate_derivative,
+                                 const std::vector<char>& directions, Eigen::MatrixXd& columns);
 
 // The body rate (body axes) that the nominal sensor would read as `reading`; the
 // starting guess of the initial state.

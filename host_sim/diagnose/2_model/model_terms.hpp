@@ -16,10 +16,10 @@ namespace aloft::host::diagnose {
 struct ModelTerms {
   explicit ModelTerms(const NominalInertia& nominal) : inertia(nominal.tensor) {}
 
-  Eigen::Matrix3d inertia;                         // kg·m², body axes (before the rotor is taken out)
-  double drag = 0.0;                               // tau = -drag |w| w, N·m·s²
-  double rotor = 0.0;                              // rotor J, kg·m² (0: rigid body)
-  double rotor_rate = 0.0;                         // coupling c / J, 1/s
+  Eigen::Matrix3d inertia;  // kg·m², body axes (before the rotor is taken out)
+  double drag = 0.0;        // tau = -drag |w| w, N·m·s²
+  double rotor = 0.0;       // rotor J, kg·m² (0: rigid body)
+  double rotor_rate = 0.0;  // coupling c / J, 1/s
   // An internal rotor's angular momentum (a gyrostat), fixed in body axes, N·m·s:
   // I·dw/dt + w × (I·w + momentum) = 0.
   Eigen::Vector3d momentum = Eigen::Vector3d::Zero();

@@ -124,10 +124,11 @@ void weighted_column(const FlightData& d, const Eigen::MatrixXd& readings_column
 // impulse's (impulse_reading_derivatives, from the rate columns). Every other column is
 // differenced exactly as the fitter would (same step, same residuals). False when no
 // direction is either: the fitter then differences every column itself.
-bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta, const Eigen::VectorXd& local,
-                     Eigen::VectorXd& r, Eigen::MatrixXd& jacobian) {
+bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta,
+                     const Eigen::VectorXd& local, Eigen::VectorXd& r, Eigen::MatrixXd& jacobian) {
   const EffectModel model = setup.model();
-  const std::vector<char> sensor = sensor_directions(model, theta), impulse = impulse_directions(model, theta);
+  const std::vector<char> sensor = sensor_directions(model, theta),
+                          impulse = impulse_directions(model, theta);
   const auto none = [](const std::vector<char>& v) { return std::find(v.begin(), v.end(), 1) == v.end(); };
   if (none(sensor) && none(impulse)) return false;
   const FlightData& d = (*setup.data)[static_cast<std::size_t>(block)];
@@ -135,7 +136,8 @@ bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta
   const std::size_t ref = setup.refs[static_cast<std::size_t>(block)];
   std::vector<Vec3> readings;
   Vec3 at_impulse = Vec3::Zero(), moved_at_impulse = Vec3::Zero();
-  predict_readings(model, flight, ref, Vec3(local), theta, readings, SampleStepping::shared_steps, &at_impulse);
+  predict_readings(model, flight, ref, Vec3(local), theta, readings, SampleStepping::shared_steps,
+                   &at_impulse);
   residuals_of(d, readings, r);
   Eigen::MatrixXd sensor_columns, impulse_columns;
   if (!none(sensor)) sensor_reading_derivatives(model, flight, theta, readings, sensor, sensor_columns);
@@ -150,15 +152,15 @@ bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta
     double& value = i < p ? shifted_theta(i) : shifted_local(i - p);
     const double h = forward_difference_step(value);
     value += h;
-    predict_readings(model, flight, ref, Vec3(shifted_local), shifted_theta, readings, SampleStepping::shared_steps,
-                     &moved_at_impulse);
+    predict_readings(model, flight, ref, Vec3(shifted_local), shifted_theta, readings,
+                     SampleStepping::shared_steps, &moved_at_impulse);
     residuals_of(d, readings, moved);
     jacobian.col(i) = (moved - r) / h;
     if (i >= p) impulse_rate_derivative.col(i - p) = (moved_at_impulse - at_impulse) / h;
   }
   if (!none(impulse)) {
-    impulse_reading_derivatives(model, flight, ref, theta, jacobian.rightCols(3), impulse_rate_derivative, impulse,
-                                impulse_columns);
+    impulse_reading_derivatives(model, flight, ref, theta, jacobian.rightCols(3), impulse_rate_derivative,
+                                impulse, impulse_columns);
   }
   for (Eigen::Index i = 0; i < p; ++i) {
     if (sensor[static_cast<std::size_t>(i)]) weighted_column(d, sensor_columns, i, jacobian, i);

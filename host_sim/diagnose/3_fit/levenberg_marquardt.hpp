@@ -61,7 +61,8 @@ struct LeastSquaresResult {
 };
 
 // Minimises the sum of squared residuals from the given start. Derivatives are the
-// problem's `jacobian` where it gives them, else forward differences. Never throws on a bad start: a non-finite cost is treated as a rejected step.
+// problem's `jacobian` where it gives them, else forward differences. Never throws on a bad start: a
+// non-finite cost is treated as a rejected step.
 LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& shared_start,
                             const std::vector<Eigen::VectorXd>& local_start,
                             const LeastSquaresOptions& options = {});

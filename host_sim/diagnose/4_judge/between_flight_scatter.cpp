@@ -55,10 +55,12 @@ std::string between_flight_scatter_note(const BetweenFlightScatter& s, double po
   return printf_text("the pooled model shrinks the held-out gap by %.0f %%, its flights' own fits of ",
                      100.0 * pooled_shrink) +
          effect_name(s.effect) +
-         printf_text(" by %.0f %% (median of %.0f): their parameters scatter %.3g x beyond their own "
-                     "uncertainty",
-                     100.0 * s.median_own_shrink, static_cast<double>(s.flights), s.chi_square_per_dof) +
-         " (chi-square per degree of freedom between flights; 1 if they shared one value), and a model shared "
+         printf_text(
+             " by %.0f %% (median of %.0f): their parameters scatter %.3g x beyond their own "
+             "uncertainty",
+             100.0 * s.median_own_shrink, static_cast<double>(s.flights), s.chi_square_per_dof) +
+         " (chi-square per degree of freedom between flights; 1 if they shared one value), and a model "
+         "shared "
          "by every flight, judged on the flight it left out, cannot follow each";
 }
 

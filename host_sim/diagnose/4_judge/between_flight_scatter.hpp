@@ -18,7 +18,7 @@ namespace aloft::host::diagnose {
 
 struct BetweenFlightScatter {
   Effect effect = Effect::none;
-  int flights = 0;              // flights whose own fit of `effect` has a covariance
+  int flights = 0;  // flights whose own fit of `effect` has a covariance
   double chi_square_per_dof = 0.0;
   double median_own_shrink = 0.0;  // the flights' own held-out shrink with `effect` (interleaved folds)
 };

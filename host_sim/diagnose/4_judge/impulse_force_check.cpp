@@ -18,7 +18,8 @@ std::vector<BodyKinematics<double>> kinematics(const Flight& flight) {
   std::vector<BodyKinematics<double>> out;
   out.reserve(flight.size());
   for (std::size_t k = 0; k < flight.size(); ++k) {
-    out.push_back(body_kinematics_at(flight.time_s, flight.omega, flight.accel_m_s2, flight.sensor_to_body, k));
+    out.push_back(
+        body_kinematics_at(flight.time_s, flight.omega, flight.accel_m_s2, flight.sensor_to_body, k));
   }
   return out;
 }
@@ -35,7 +36,8 @@ Eigen::Vector3d lever_arm(const Flight& flight, const std::vector<BodyKinematics
 }  // namespace
 
 std::optional<ImpulseForce> impulse_force(const Flight& flight, double impulse_time_s) {
-  if (!flight.gyro_input || flight.accel_m_s2.size() != flight.size() || flight.size() < 3) return std::nullopt;
+  if (!flight.gyro_input || flight.accel_m_s2.size() != flight.size() || flight.size() < 3)
+    return std::nullopt;
   const std::vector<BodyKinematics<double>> kin = kinematics(flight);
   const Eigen::Vector3d r = lever_arm(flight, kin);
   std::vector<Eigen::Vector3d> excess(kin.size());
@@ -51,14 +53,16 @@ std::optional<ImpulseForce> impulse_force(const Flight& flight, double impulse_t
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (std::size_t k = 0; k < kin.size(); ++k) {
       if (std::abs(flight.time_s[k] - centre) > kImpulseWindow_s) continue;
-      const double dt = 0.5 * (flight.time_s[std::min(k + 1, kin.size() - 1)] - flight.time_s[k > 0 ? k - 1 : 0]);
+      const double dt =
+          0.5 * (flight.time_s[std::min(k + 1, kin.size() - 1)] - flight.time_s[k > 0 ? k - 1 : 0]);
       sum += (excess[k] - mean) * dt;
     }
     return sum.norm();
   };
   double square = 0.0;
   int windows = 0;
-  for (double c = flight.start_s() + kImpulseWindow_s; c + kImpulseWindow_s <= flight.end_s(); c += 2.0 * kImpulseWindow_s) {
+  for (double c = flight.start_s() + kImpulseWindow_s; c + kImpulseWindow_s <= flight.end_s();
+       c += 2.0 * kImpulseWindow_s) {
     if (std::abs(c - impulse_time_s) < 3.0 * kImpulseWindow_s) continue;
     square += std::pow(velocity_change(c), 2);
     ++windows;
@@ -78,16 +82,19 @@ void check_impulse_against_accelerometer(Analysis& analysis, const Flight& fligh
     const std::optional<ImpulseForce> f = impulse_force(flight, e.params.time_s);
     if (!f) continue;
     if (f->seen) {
-      analysis.notes.push_back(printf_text("impulse at %.3f s: the accelerometer shows a blow from outside, "
-                                           "a velocity change of %.3g m/s (%.0f x what the rest of the flight shows)",
-                                           e.params.time_s, f->velocity_change_m_s,
-                                           f->velocity_change_m_s / std::max(f->elsewhere_rms_m_s, 1e-12)));
+      analysis.notes.push_back(
+          printf_text("impulse at %.3f s: the accelerometer shows a blow from outside, "
+                      "a velocity change of %.3g m/s (%.0f x what the rest of the flight shows)",
+                      e.params.time_s, f->velocity_change_m_s,
+                      f->velocity_change_m_s / std::max(f->elsewhere_rms_m_s, 1e-12)));
       continue;
     }
     const std::string why = printf_text(
-        "impulse at %.3f s: the accelerometer shows no blow from outside there (a velocity change of %.3g m/s, "
+        "impulse at %.3f s: the accelerometer shows no blow from outside there (a velocity change of %.3g "
+        "m/s, "
         "%.1f x what the rest of the flight shows): a shift inside the body, or no impulse at all",
-        e.params.time_s, f->velocity_change_m_s, f->velocity_change_m_s / std::max(f->elsewhere_rms_m_s, 1e-12));
+        e.params.time_s, f->velocity_change_m_s,
+        f->velocity_change_m_s / std::max(f->elsewhere_rms_m_s, 1e-12));
     v.confident = false;
     v.could_not_judge.push_back(why);
   }

@@ -101,8 +101,9 @@ std::vector<Eigen::Vector3d> longest_clean_run(const Flight& flight, const std::
   if (best_count < 2) return {};
   rate_hz = static_cast<double>(best_count - 1) /
             (flight.time_s[best_first + best_count - 1] - flight.time_s[best_first]);
-  return std::vector<Eigen::Vector3d>(flight.omega.begin() + static_cast<std::ptrdiff_t>(best_first),
-                                      flight.omega.begin() + static_cast<std::ptrdiff_t>(best_first + best_count));
+  return std::vector<Eigen::Vector3d>(
+      flight.omega.begin() + static_cast<std::ptrdiff_t>(best_first),
+      flight.omega.begin() + static_cast<std::ptrdiff_t>(best_first + best_count));
 }
 
 // The first bin above the motion's band (kSteepOctave), found on the three axes' sum
@@ -127,7 +128,8 @@ std::size_t end_of_motion_band(const NoiseSpectrum& s) {
 double low_pass_gain(double f_hz, double cutoff_hz, double sample_hz) {
   if (cutoff_hz <= 0.0) return 1.0;
   const double pi = 3.14159265358979323846;
-  const double r = std::tan(pi * std::min(f_hz, 0.4999 * sample_hz) / sample_hz) / std::tan(pi * cutoff_hz / sample_hz);
+  const double r =
+      std::tan(pi * std::min(f_hz, 0.4999 * sample_hz) / sample_hz) / std::tan(pi * cutoff_hz / sample_hz);
   return 1.0 / (1.0 + r * r * r * r);
 }
 

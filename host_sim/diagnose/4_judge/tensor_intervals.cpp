@@ -103,7 +103,8 @@ void find_unresolved_planes(TensorReport& r, const Candidate& moments, const Eig
                         {0, 2, l(1), log_cov(1, 1)},
                         {1, 2, l(1) - l(0), log_cov(0, 0) + log_cov(1, 1) - 2.0 * log_cov(0, 1)}};
   for (const Pair& p : pairs) {
-    if (std::abs(p.log_ratio) <= quantile * std::sqrt(std::max(p.variance, 0.0))) r.unresolved_planes.push_back({p.a, p.b});
+    if (std::abs(p.log_ratio) <= quantile * std::sqrt(std::max(p.variance, 0.0)))
+      r.unresolved_planes.push_back({p.a, p.b});
   }
   for (int b = 0; b < 3; ++b) r.moments_kg_m2(b) = moments.params.principal_kg_m2(r.axis_order(b));
 }

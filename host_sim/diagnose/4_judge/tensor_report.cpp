@@ -29,15 +29,17 @@ std::string unresolved_planes_text(const TensorReport& r) {
   if (planes.empty()) return "";
   if (planes.size() == 1) {
     const int a = planes[0][0], b = planes[0][1];
-    std::snprintf(text, sizeof text,
-                  ", I%c and I%c cannot be told apart (%.4g and %.4g kg m^2): the axes in the %c-%c plane are "
-                  "not fixed",
-                  axis[a], axis[b], r.moments_kg_m2(a), r.moments_kg_m2(b), axis[a], axis[b]);
+    std::snprintf(
+        text, sizeof text,
+        ", I%c and I%c cannot be told apart (%.4g and %.4g kg m^2): the axes in the %c-%c plane are "
+        "not fixed",
+        axis[a], axis[b], r.moments_kg_m2(a), r.moments_kg_m2(b), axis[a], axis[b]);
   } else {
-    std::snprintf(text, sizeof text,
-                  ", no two moments can be told apart (Ix %.4g, Iy %.4g, Iz %.4g kg m^2): no principal axis is "
-                  "fixed",
-                  r.moments_kg_m2(0), r.moments_kg_m2(1), r.moments_kg_m2(2));
+    std::snprintf(
+        text, sizeof text,
+        ", no two moments can be told apart (Ix %.4g, Iy %.4g, Iz %.4g kg m^2): no principal axis is "
+        "fixed",
+        r.moments_kg_m2(0), r.moments_kg_m2(1), r.moments_kg_m2(2));
   }
   return text;
 }

@@ -96,7 +96,8 @@ json unresolved_planes_json(const TensorReport& t) {
   static const char* axis[] = {"x", "y", "z"};
   json out = json::array();
   for (const auto& [a, b] : t.unresolved_planes) {
-    out.push_back({{"axes", {axis[a], axis[b]}}, {"moments_kg_m2", {t.moments_kg_m2(a), t.moments_kg_m2(b)}}});
+    out.push_back(
+        {{"axes", {axis[a], axis[b]}}, {"moments_kg_m2", {t.moments_kg_m2(a), t.moments_kg_m2(b)}}});
   }
   return out;
 }

@@ -158,7 +158,8 @@ class OnboardPipeline {
   // Out of line, each with only its own locals: the frame under the release window's
   // dating and the flight's end is small (footprint.json's worst-case stack).
   ALOFT_OUT_OF_LINE void detect_airborne(std::uint32_t c) {
-    const FoundLanding landing = detector_.find_landing(history_, c, clock_.half_span(), r_flight_, next_feed_);
+    const FoundLanding landing =
+        detector_.find_landing(history_, c, clock_.half_span(), r_flight_, next_feed_);
     if (on_probation_) add_to_window(c);
     if (landing.found) {
       feed_until(landing.index);

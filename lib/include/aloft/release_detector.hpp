@@ -82,7 +82,9 @@ class ReleaseDetector {
   // The settings and the tensor are held, not copied (a pipeline's parts share its one
   // copy): they must outlive the detector.
   ReleaseDetector(const ReleaseDetectorSettings<Scalar>& settings, const Mat3<Scalar>& inertia)
-      : settings_(settings), inertia_(inertia), torque_scale_floor_(torque_scale_floor(settings.free_flight, inertia)) {}
+      : settings_(settings),
+        inertia_(inertia),
+        torque_scale_floor_(torque_scale_floor(settings.free_flight, inertia)) {}
   ReleaseDetector(ReleaseDetectorSettings<Scalar>&&, const Mat3<Scalar>&) = delete;
   ReleaseDetector(const ReleaseDetectorSettings<Scalar>&, Mat3<Scalar>&&) = delete;
 

@@ -92,8 +92,7 @@ class ReleaseWindow {
     if (count_ == 0) {
       b->start(i, t_us);
       count_ = 1;
-    } else if (static_cast<std::uint32_t>(t_us) - b->start_low_us >= settings_.block_us ||
-               i != next_index_) {
+    } else if (static_cast<std::uint32_t>(t_us) - b->start_low_us >= settings_.block_us || i != next_index_) {
       ++newest_;
       if (count_ < ring_blocks) ++count_;
       b = &blocks_[newest_ % ring_blocks];
@@ -196,8 +195,8 @@ class ReleaseWindow {
 
   const ReleaseWindowSettings<Scalar>& settings_;
   Block blocks_[ring_blocks];
-  std::uint32_t newest_ = 0;  // the open block: blocks_[newest_ % ring_blocks]
-  std::uint32_t count_ = 0;   // blocks held, the open one included
+  std::uint32_t newest_ = 0;      // the open block: blocks_[newest_ % ring_blocks]
+  std::uint32_t count_ = 0;       // blocks held, the open one included
   std::uint32_t next_index_ = 0;  // the index the open block takes next (another starts a block)
 };
 

@@ -493,8 +493,9 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
     // filtering their sum.
     LowPass signal_filter(spec.gyro_cutoff_hz, 1.0 / rate), noise_filter(spec.gyro_cutoff_hz, 1.0 / rate);
     if (spec.gyro_cutoff_hz > 0.0) {
-      settle_on_motion_before(signal_filter, effect.physics, thrown.omega0_body, spec.gyro_cutoff_hz, rate,
-                              [&](const Eigen::Vector3d& w) { return gain.cwiseProduct(body_to_sensor * w) + effect.bias; });
+      settle_on_motion_before(
+          signal_filter, effect.physics, thrown.omega0_body, spec.gyro_cutoff_hz, rate,
+          [&](const Eigen::Vector3d& w) { return gain.cwiseProduct(body_to_sensor * w) + effect.bias; });
     }
     Eigen::Vector3d noise_squares = Eigen::Vector3d::Zero();
     for (std::size_t k = 0; k < states.size(); ++k) {
@@ -517,8 +518,8 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
       for (std::size_t k = 0; k < states.size(); ++k) {
         const Eigen::Vector3d& w = states[k].omega_body;
         const Eigen::Vector3d w_dot = dynamics.shell_angular_acceleration(true_time[k], states[k]);
-        const Eigen::Vector3d a = w_dot.cross(r) + w.cross(w.cross(r)) +
-                                  blow_acceleration(effect.physics, body, true_time[k]);
+        const Eigen::Vector3d a =
+            w_dot.cross(r) + w.cross(w.cross(r)) + blow_acceleration(effect.physics, body, true_time[k]);
         log.accel_m_s2.push_back(body_to_sensor * a + noise_rng.normal_vector(spec.accel_noise_m_s2));
       }
     }

@@ -53,7 +53,8 @@ PerturbedRigidBody::Derivative PerturbedRigidBody::derivative(double t, const Ei
                                                               const Eigen::Vector3d& wr) const {
   Derivative d;
   d.q_dot = quaternion_rate(q, w);
-  Eigen::Vector3d torque = external_torque(t, w) - w.cross(shell_inertia_ * w + physics_.internal_momentum_N_m_s);
+  Eigen::Vector3d torque =
+      external_torque(t, w) - w.cross(shell_inertia_ * w + physics_.internal_momentum_N_m_s);
   if (has_rotor_) {
     const Eigen::Vector3d viscous = physics_.rotor_damping_N_m_s * (wr - w);
     torque += viscous;

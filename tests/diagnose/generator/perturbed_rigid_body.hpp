@@ -15,9 +15,9 @@
 // `impulse_duration_s`, of integral `angular_impulse` (duration 0: an instantaneous
 // jump of I_s w by the impulse), and h a steadily spinning internal rotor's angular
 // momentum, fixed in body axes (a gyrostat; zero but for internal_momentum). The damping
-// rotor exchanges momentum with the shell only, so the total momentum L = I_s w + J w_r is fixed in space without external torque while
-// kinetic energy falls at rate c |w_r - w|²: the "spherical rotor in a viscous cavity"
-// model of internal damping.
+// rotor exchanges momentum with the shell only, so the total momentum L = I_s w + J w_r is fixed in space
+// without external torque while kinetic energy falls at rate c |w_r - w|²: the "spherical rotor in a viscous
+// cavity" model of internal damping.
 //
 // Integration: classical RK4 on the 10-dimensional state with the quaternion
 // renormalised, steps no longer than `max_step_s`, and step boundaries placed on every

@@ -24,9 +24,9 @@
 namespace aloft::generator {
 
 struct SessionCase {
-  std::string name;                // e.g. "rotor_3": unique
+  std::string name;                 // e.g. "rotor_3": unique
   std::vector<FlightSpec> flights;  // one spec per flight (throw_seed set)
-  std::uint64_t seed = 0;          // the effect's seed, shared by the flights
+  std::uint64_t seed = 0;           // the effect's seed, shared by the flights
 };
 
 enum class RotorSeeds { tuning, withheld };
