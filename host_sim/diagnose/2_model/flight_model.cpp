@@ -486,14 +486,34 @@ namespace {
 // simulations, good to ~1e-7.
 constexpr double kTermStep = 1e-5;
 
+// The terms with theta moved by the step either way along parameter i.
+struct NudgedTerms {
+  double h;  // the step
+  ModelTerms up, down;
+};
+NudgedTerms nudged_terms(const EffectModel& model, const Eigen::VectorXd& theta, Eigen::Index i) {
+  const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
+  Eigen::VectorXd up = theta, down = theta;
+  up(i) += h;
+  down(i) -= h;
+  return {h, model_terms(model, up), model_terms(model, down)};
+}
+
+// The rotation's terms other than the impulse's jump are the same.
+bool same_motion_but_jump(const ModelTerms& a, const ModelTerms& b) {
+  return a.inertia == b.inertia && a.drag == b.drag && a.rotor == b.rotor && a.rotor_rate == b.rotor_rate &&
+         a.momentum == b.momentum && a.time_factor == b.time_factor;
+}
+
+bool same_sensor(const ModelTerms& a, const ModelTerms& b) {
+  return a.scale == b.scale && a.bias == b.bias && a.misaligned == b.misaligned &&
+         a.misalignment.coeffs() == b.misalignment.coeffs();
+}
+
 // Whether moving theta along direction i changes the sensor's terms and nothing else.
 bool moves_sensor_only(const ModelTerms& up, const ModelTerms& down) {
-  const bool dynamics_same = up.inertia == down.inertia && up.drag == down.drag && up.rotor == down.rotor &&
-                             up.rotor_rate == down.rotor_rate && up.has_jump == down.has_jump &&
-                             up.jump == down.jump && up.time_factor == down.time_factor;
-  const bool sensor_moves = up.scale != down.scale || up.bias != down.bias ||
-                            up.misalignment.coeffs() != down.misalignment.coeffs();
-  return dynamics_same && up.misaligned == down.misaligned && sensor_moves;
+  return same_motion_but_jump(up, down) && up.has_jump == down.has_jump && up.jump == down.jump &&
+         up.misaligned == down.misaligned && !same_sensor(up, down);
 }
 
 }  // namespace
@@ -501,11 +521,8 @@ bool moves_sensor_only(const ModelTerms& up, const ModelTerms& down) {
 std::vector<char> sensor_directions(const EffectModel& model, const Eigen::VectorXd& theta) {
   std::vector<char> out(static_cast<std::size_t>(theta.size()), 0);
   for (Eigen::Index i = 0; i < theta.size(); ++i) {
-    const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
-    Eigen::VectorXd up = theta, down = theta;
-    up(i) += h;
-    down(i) -= h;
-    out[static_cast<std::size_t>(i)] = moves_sensor_only(model_terms(model, up), model_terms(model, down));
+    const NudgedTerms t = nudged_terms(model, theta, i);
+    out[static_cast<std::size_t>(i)] = moves_sensor_only(t.up, t.down);
   }
   return out;
 }
@@ -520,11 +537,9 @@ void sensor_reading_derivatives(const EffectModel& model, const Flight& flight, 
   for (std::size_t k = 0; k < n; ++k) rates[k] = at.rate_of_reading(readings[k]);
   for (Eigen::Index i = 0; i < theta.size(); ++i) {
     if (!directions[static_cast<std::size_t>(i)]) continue;
-    const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
-    Eigen::VectorXd up = theta, down = theta;
-    up(i) += h;
-    down(i) -= h;
-    const FlightDynamics a(model_terms(model, up), flight), b(model_terms(model, down), flight);
+    const NudgedTerms t = nudged_terms(model, theta, i);
+    const double h = t.h;
+    const FlightDynamics a(t.up, flight), b(t.down, flight);
     // reading = scale (B w) + bias, differentiated with w held.
     const Mat3 d_sensor = (a.body_to_sensor() - b.body_to_sensor()) / (2.0 * h);
     const Vec3 d_scale = (a.scale() - b.scale()) / (2.0 * h), d_bias = (a.bias() - b.bias()) / (2.0 * h);
@@ -539,16 +554,10 @@ void sensor_reading_derivatives(const EffectModel& model, const Flight& flight, 
 std::vector<char> impulse_directions(const EffectModel& model, const Eigen::VectorXd& theta) {
   std::vector<char> out(static_cast<std::size_t>(theta.size()), 0);
   for (Eigen::Index i = 0; i < theta.size(); ++i) {
-    const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
-    Eigen::VectorXd up = theta, down = theta;
-    up(i) += h;
-    down(i) -= h;
-    const ModelTerms a = model_terms(model, up), b = model_terms(model, down);
-    const bool rest_same = a.inertia == b.inertia && a.drag == b.drag && a.rotor == b.rotor &&
-                           a.rotor_rate == b.rotor_rate && a.has_jump && b.has_jump &&
-                           a.time_factor == b.time_factor && a.scale == b.scale && a.bias == b.bias &&
-                           a.misaligned == b.misaligned && a.misalignment.coeffs() == b.misalignment.coeffs();
-    out[static_cast<std::size_t>(i)] = rest_same && a.jump != b.jump;
+    const NudgedTerms t = nudged_terms(model, theta, i);
+    out[static_cast<std::size_t>(i)] = same_motion_but_jump(t.up, t.down) && t.up.has_jump &&
+                                       t.down.has_jump && same_sensor(t.up, t.down) &&
+                                       t.up.jump != t.down.jump;
   }
   return out;
 }
@@ -570,11 +579,8 @@ void impulse_reading_derivatives(const EffectModel& model, const Flight& flight,
   const Mat3 carried = impulse_rate_derivative.inverse() * at.shell_inverse() * model.nominal.tensor;
   for (Eigen::Index i = 0; i < theta.size(); ++i) {
     if (!directions[static_cast<std::size_t>(i)]) continue;
-    const double h = kTermStep * std::max(1.0, std::abs(theta(i)));
-    Eigen::VectorXd up = theta, down = theta;
-    up(i) += h;
-    down(i) -= h;
-    const Vec3 d_jump = (model_terms(model, up).jump - model_terms(model, down).jump) / (2.0 * h);
+    const NudgedTerms t = nudged_terms(model, theta, i);
+    const Vec3 d_jump = (t.up.jump - t.down.jump) / (2.0 * t.h);
     const Vec3 c = sign * (carried * d_jump);
     for (std::size_t k = 0; k < n; ++k) {
       const double t = true_time(flight.time_s[k]);
