@@ -5,8 +5,7 @@ namespace aloft::host::diagnose {
 BodyKinematics<double> body_kinematics_at(const std::vector<double>& time_s,
                                           const std::vector<Eigen::Vector3d>& gyro_rad_s,
                                           const std::vector<Eigen::Vector3d>& accel_m_s2,
-                                          const Eigen::Quaterniond& sensor_to_body, std::size_t k) {
-  const Eigen::Matrix3d to_body = sensor_to_body.normalized().toRotationMatrix();
+                                          const Eigen::Matrix3d& to_body, std::size_t k) {
   std::size_t lo = k, hi = k;
   while (lo > 0 && time_s[k] - time_s[lo] < kDerivativeHalfSpan_s) --lo;
   while (hi + 1 < time_s.size() && time_s[hi] - time_s[k] < kDerivativeHalfSpan_s) ++hi;

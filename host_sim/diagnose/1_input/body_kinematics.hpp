@@ -19,10 +19,11 @@ namespace aloft::host::diagnose {
 // differenced noise (0.05 rad/s per sample) below 1 m/s² of |K r| for r up to 5 cm.
 constexpr double kDerivativeHalfSpan_s = 0.002;
 
-// Sample k of the series (sensor axes in, body axes out). time_s strictly increasing.
+// Sample k of the series (sensor axes in, body axes out through the rotation matrix
+// sensor_to_body). time_s strictly increasing.
 BodyKinematics<double> body_kinematics_at(const std::vector<double>& time_s,
                                           const std::vector<Eigen::Vector3d>& gyro_rad_s,
                                           const std::vector<Eigen::Vector3d>& accel_m_s2,
-                                          const Eigen::Quaterniond& sensor_to_body, std::size_t k);
+                                          const Eigen::Matrix3d& sensor_to_body, std::size_t k);
 
 }  // namespace aloft::host::diagnose

@@ -9,18 +9,13 @@
 namespace aloft::host::diagnose {
 namespace {
 
-// The largest centre force over the samples in [from_s, to_s): a Contact, not yet judged.
-Contact strongest_force(const ImuLog& log, const Body& body, const FirmwareFlight& flight, double from_s,
-                        double to_s, bool before_release) {
+// The largest centre force over samples first..last-1: a Contact, not yet judged.
+Contact strongest_force(const ImuLog& log, const Eigen::Matrix3d& sensor_to_body, const Eigen::Vector3d& r,
+                        std::size_t first, std::size_t last) {
   Contact c;
-  c.cut_from_s = from_s;
-  c.cut_to_s = to_s;
-  c.before_release = before_release;
-  for (std::size_t k = 0; k < log.time_s.size(); ++k) {
-    if (log.time_s[k] < from_s || log.time_s[k] >= to_s) continue;
+  for (std::size_t k = first; k < last; ++k) {
     const double force = centre_specific_force(
-        body_kinematics_at(log.time_s, log.gyro_rad_s, log.accel_m_s2, body.imu_to_body, k),
-        flight.imu_position_m);
+        body_kinematics_at(log.time_s, log.gyro_rad_s, log.accel_m_s2, sensor_to_body, k), r);
     if (force > c.beyond_rotation_m_s2) {
       c.beyond_rotation_m_s2 = force;
       c.at_s = log.time_s[k];
@@ -43,20 +38,36 @@ const FirmwareFlight* overlapping(const std::vector<FirmwareFlight>& flights, co
   return best;
 }
 
-SegmentInFlight cut_one(const ImuLog& log, const Body& body, const FirmwareFlight* flight, const Segment& s) {
+// Index of the first sample at or after t (before: false), or after t (true).
+std::size_t sample_at(const ImuLog& log, double t, bool after) {
+  const auto at = after ? std::upper_bound(log.time_s.begin(), log.time_s.end(), t)
+                        : std::lower_bound(log.time_s.begin(), log.time_s.end(), t);
+  return static_cast<std::size_t>(at - log.time_s.begin());
+}
+
+SegmentInFlight cut_one(const ImuLog& log, const Eigen::Matrix3d& sensor_to_body,
+                        const FirmwareFlight* flight, const Segment& s) {
   SegmentInFlight out{s, {}};
   if (!flight) return out;
+  const Eigen::Vector3d& r = flight->imu_position_m;
   if (flight->release_s > s.start_s) {
-    const Contact c = strongest_force(log, body, *flight, s.start_s, flight->release_s, true);
+    Contact c = strongest_force(log, sensor_to_body, r, sample_at(log, s.start_s, false),
+                                sample_at(log, flight->release_s, false));
     if (c.beyond_rotation_m_s2 >= kContactForce_m_s2) {
+      c.cut_from_s = s.start_s;
+      c.cut_to_s = flight->release_s;
       out.segment.start_s = flight->release_s;
       out.contacts.push_back(c);
     }
   }
   if (flight->landed && flight->landing_s < s.end_s) {
-    // The landing sample itself is the first of the contact: cut from just after it.
-    const Contact c = strongest_force(log, body, *flight, flight->landing_s, s.end_s + 1e-9, false);
+    // From the landing sample, the first of the contact, to the segment's last.
+    Contact c = strongest_force(log, sensor_to_body, r, sample_at(log, flight->landing_s, false),
+                                sample_at(log, s.end_s, true));
     if (c.beyond_rotation_m_s2 >= kContactForce_m_s2) {
+      c.before_release = false;
+      c.cut_from_s = flight->landing_s;
+      c.cut_to_s = s.end_s;
       out.segment.end_s = flight->landing_s;
       out.contacts.push_back(c);
     }
@@ -70,7 +81,8 @@ std::vector<SegmentInFlight> cut_contact(const ImuLog& log, const Body& body, co
                                          const std::vector<Segment>& segments) {
   const std::vector<FirmwareFlight> flights = firmware_flights(log, body, body_source);
   std::vector<SegmentInFlight> out;
-  for (const Segment& s : segments) out.push_back(cut_one(log, body, overlapping(flights, s), s));
+  const Eigen::Matrix3d sensor_to_body = body.imu_to_body.normalized().toRotationMatrix();
+  for (const Segment& s : segments) out.push_back(cut_one(log, sensor_to_body, overlapping(flights, s), s));
   return out;
 }
 

@@ -15,11 +15,11 @@ namespace {
 constexpr double kRidge_rad_s2 = 10.0;
 
 std::vector<BodyKinematics<double>> kinematics(const Flight& flight) {
+  const Eigen::Matrix3d sensor_to_body = flight.sensor_to_body.normalized().toRotationMatrix();
   std::vector<BodyKinematics<double>> out;
   out.reserve(flight.size());
   for (std::size_t k = 0; k < flight.size(); ++k) {
-    out.push_back(
-        body_kinematics_at(flight.time_s, flight.omega, flight.accel_m_s2, flight.sensor_to_body, k));
+    out.push_back(body_kinematics_at(flight.time_s, flight.omega, flight.accel_m_s2, sensor_to_body, k));
   }
   return out;
 }
