@@ -265,5 +265,9 @@ TEST_CASE("rank_step: another minimum of a search is reported when it fits about
   REQUIRE(chosen.alternatives.size() == 1);
   CHECK(chosen.alternatives[0].cost_behind == Approx(0.5 * kCloseMinimum));
   REQUIRE(a.notes.size() == 1);
-  CHECK(a.notes[0].find("another minimum") != std::string::npos);
+  CHECK(a.notes[0].text.find("another minimum") != std::string::npos);
+  // The note carries the other minimum's parameters; the report words them (effect_words).
+  REQUIRE(a.notes[0].params_of.has_value());
+  CHECK(*a.notes[0].params_of == Effect::impulse);
+  CHECK(a.notes[0].params.time_s == chosen.alternatives[0].params.time_s);
 }

@@ -9,6 +9,7 @@
 
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/flight_model.hpp"
+#include "diagnose/6_report/effect_words.hpp"
 
 using namespace aloft::host::diagnose;
 
@@ -91,8 +92,6 @@ TEST_CASE("every registered effect is complete, under a SPEC §4 name, none left
     CHECK(h.tolerance != nullptr);
     CHECK(h.apply != nullptr);
     CHECK(h.parameters != nullptr);
-    CHECK(h.text != nullptr);
-    CHECK(h.json != nullptr);
     CHECK(h.too_small != nullptr);
     CHECK(h.senseless != nullptr);
     CHECK(h.unphysical != nullptr);
@@ -102,14 +101,16 @@ TEST_CASE("every registered effect is complete, under a SPEC §4 name, none left
   CHECK(registered_effects().front() == Effect::none);
 }
 
-TEST_CASE("each effect's JSON has its SPEC §4 keys, and none has none", "[effect_descriptor]") {
+TEST_CASE("each effect's JSON has its SPEC §4 keys, and none has none; its text is empty for none only",
+          "[effect_descriptor]") {
   for (Effect e : registered_effects()) {
     const EffectDescriptor& d = describe(e);
     CAPTURE(d.name);
-    const nlohmann::json params = d.hooks.json(EffectParameters());
+    const nlohmann::json params = params_json(e, EffectParameters());
     REQUIRE(params.is_object());
     for (const std::string& key : spec_of(d.name)->keys) CHECK(params.contains(key));
     CHECK(params.empty() == (e == Effect::none));
+    CHECK(params_text(e, EffectParameters()).empty() == (e == Effect::none));
   }
 }
 

@@ -87,8 +87,7 @@ TEST_CASE("impulse force: a verdict the accelerometer does not back is not confi
   const FlightDiagnosis blow = diagnose_flight(flight, nominal);
   REQUIRE(blow.analysis.verdict.effect == Effect::impulse);
   bool noted = false;
-  for (const std::string& n : blow.analysis.notes)
-    noted = noted || n.find("shows a blow") != std::string::npos;
+  for (const Note& n : blow.analysis.notes) noted = noted || n.text.find("shows a blow") != std::string::npos;
   CHECK(noted);
 
   const Flight inner_flight = without_blow(flight, g);

@@ -16,6 +16,7 @@
 
 #include "diagnose/5_flow/diagnosis.hpp"
 #include "diagnose/1_input/flight_input.hpp"
+#include "diagnose/6_report/effect_words.hpp"
 #include "diagnose/6_report/report_json.hpp"
 #include "generator/phone_like_cases.hpp"
 #include "generator/phone_like_flights.hpp"

@@ -91,12 +91,12 @@ TEST_CASE("flights that disagree with the pool are named; a majority the pool ov
   pool = saying(Effect::gyro_bias);
   note_disagreeing_flights(pool, flights, {&bias, &drag, &bias});
   REQUIRE(pool.notes.size() == 1);
-  CHECK(pool.notes[0] == "flights whose own verdict differs from the pool's: b (aero_torque)");
+  CHECK(pool.notes[0].text == "flights whose own verdict differs from the pool's: b (aero_torque)");
 
   pool = saying(Effect::gyro_bias);
   note_disagreeing_flights(pool, flights, {&drag, &drag, &bias});
   REQUIRE(pool.notes.size() == 1);
-  CHECK(pool.notes[0] ==
+  CHECK(pool.notes[0].text ==
         "2 of 3 flights name aero_torque but the pool does not; flights that disagree with the pool: a "
         "(aero_torque), b (aero_torque)");
 }

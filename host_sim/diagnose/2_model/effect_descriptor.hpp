@@ -1,14 +1,13 @@
 // Everything `aloft diagnose` knows about one unmodelled effect, in one place: a
 // descriptor per effect (effects/<name>.cpp), registered by one line in
 // effects/effect_list.def. The rest of diagnose asks the descriptor and never switches
-// on the effect, so adding an effect is: write its file, add its line (docs/diagnose.md,
+// on the effect, so adding an effect is: write its file, add its line, and give the report
+// its words for the effect's parameters (6_report/effect_words.cpp; docs/diagnose.md,
 // "Adding an effect").
 //
 // Fill in every field; a test (tests/diagnose/test_effect_descriptor.cpp) checks that
 // each registered descriptor is complete and its name is a SPEC §4 name.
 #pragma once
-
-#include <nlohmann/json.hpp>
 
 #include <Eigen/Core>
 
@@ -50,8 +49,6 @@ struct EffectHooks {
   // Its theta as physical parameters (impulse_time_s: the model's, for an impulse).
   EffectParameters (*parameters)(const Eigen::VectorXd& theta, const NominalInertia& nominal,
                                  double impulse_time_s) = nullptr;
-  std::string (*text)(const EffectParameters& p) = nullptr;     // the summary's words
-  nlohmann::json (*json)(const EffectParameters& p) = nullptr;  // SPEC §4 `params`
   // Why the effect is too small to matter (practical_significance.hpp); empty: it matters.
   std::string (*too_small)(const EffectParameters& p, const SignificanceScale& scale) = nullptr;
   // Why fitted parameters make no sense for a real sensor (plausibility.hpp); empty: fine.

@@ -131,6 +131,19 @@ struct Verdict {
   std::vector<VerdictEffect> effects;
 };
 
+// A note for the reader. Most are worded where they are judged; one that names a fitted
+// effect's parameters (another minimum of the chosen fit) carries them, and the report
+// appends them in its own words (6_report/effect_words.hpp), so judging needs none.
+struct Note {
+  Note(std::string words) : text(std::move(words)) {}
+  Note(const char* words) : text(words) {}
+  Note(std::string words, Effect effect, EffectParameters params)
+      : text(std::move(words)), params_of(effect), params(std::move(params)) {}
+  std::string text;
+  std::optional<Effect> params_of;  // whose `params` follow the text, if any
+  EffectParameters params;
+};
+
 struct Analysis {
   Baseline baseline;
   std::optional<TensorReport> tensor;  // SPEC §4 `tensor` (tensor_report.hpp)
@@ -140,7 +153,7 @@ struct Analysis {
   // The best candidate's held-out chi-square per residual, floored at 1: how much of the
   // gap no candidate explains (scores are divided by it; see candidate_ranking.cpp).
   double dispersion = 1.0;
-  std::vector<std::string> notes;
+  std::vector<Note> notes;
   // The stepwise selection (steps[0] is the single-effect step, whose candidates are
   // `candidates` above), and the final model it settled on (effect none: nothing joined).
   std::vector<ModelStep> steps;

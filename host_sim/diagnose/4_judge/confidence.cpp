@@ -20,8 +20,8 @@ void note_close_minima(Analysis& analysis, const Candidate& chosen) {
     std::snprintf(text, sizeof text,
                   " fits about as well as the minimum kept (training chi-square %+.2f, within %.2f): ",
                   a.cost_behind, kCloseMinimum);
-    analysis.notes.push_back(std::string(effect_name(chosen.effect)) + ": another minimum" + text +
-                             describe(chosen.effect).hooks.text(a.params));
+    analysis.notes.emplace_back(std::string(effect_name(chosen.effect)) + ": another minimum" + text,
+                                chosen.effect, a.params);
   }
 }
 

@@ -102,7 +102,7 @@ PooledData pool_judged_flights(SessionDiagnosis& session, const std::vector<Flig
 // within the flight), said so.
 void take_single_flight(SessionDiagnosis& session, const PooledData& pool) {
   Analysis& analysis = session.pooled;
-  std::vector<std::string> notes = std::move(analysis.notes);
+  std::vector<Note> notes = std::move(analysis.notes);
   analysis = *pool.own.front();
   notes.push_back("one judged flight (" + pool.judged.flights.front()->name +
                   "): the top level is that flight's own verdict, held out within the flight");

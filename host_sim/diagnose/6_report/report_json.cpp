@@ -3,7 +3,8 @@
 #include <cmath>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/json_values.hpp"
+#include "diagnose/6_report/effect_words.hpp"
+#include "diagnose/6_report/json_values.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -200,7 +201,7 @@ json analysis_json(const Analysis& a) {
   verdict["steps"] = steps_json(a);
   out["verdict"] = verdict;
   out["unexplained_dispersion"] = a.dispersion;
-  if (!a.notes.empty()) out["notes"] = a.notes;
+  for (const Note& n : a.notes) out["notes"].push_back(note_text(n));
   return out;
 }
 
@@ -218,8 +219,6 @@ json contact_json(const std::vector<Contact>& contacts) {
 }
 
 }  // namespace
-
-json params_json(Effect effect, const EffectParameters& p) { return describe(effect).hooks.json(p); }
 
 json flight_report(const FlightDiagnosis& d) {
   json out = analysis_json(d.analysis);

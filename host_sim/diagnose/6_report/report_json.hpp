@@ -11,7 +11,4 @@ namespace aloft::host::diagnose {
 nlohmann::json flight_report(const FlightDiagnosis& diagnosis);
 nlohmann::json session_report(const SessionDiagnosis& diagnosis);
 
-// SPEC §4 `params` of a fitted effect (fixed keys per effect).
-nlohmann::json params_json(Effect effect, const EffectParameters& params);
-
 }  // namespace aloft::host::diagnose

@@ -6,11 +6,10 @@
 
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/printf_text.hpp"
+#include "diagnose/6_report/effect_words.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
-
-std::string params_text(Effect effect, const EffectParameters& p) { return describe(effect).hooks.text(p); }
 
 // gap_over_noise is a chi-square per residual, a squared ratio: 1300 reads as "1300 x the
 // noise" but is a gap 36 times the noise floor. Both, and what 1 means.
@@ -69,7 +68,7 @@ std::string analysis_summary(const Analysis& a) {
         << "\n";
   }
   for (const std::string& s : v.could_not_judge) out << "  could not judge: " << s << "\n";
-  for (const std::string& s : a.notes) out << "  note: " << s << "\n";
+  for (const Note& n : a.notes) out << "  note: " << note_text(n) << "\n";
   return out.str();
 }
 

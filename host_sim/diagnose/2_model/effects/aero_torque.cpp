@@ -30,10 +30,6 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& 
   return p;
 }
 
-std::string text(const EffectParameters& p) { return printf_text("k = %.3g N m s^2", p.k_N_m_s2); }
-
-nlohmann::json json(const EffectParameters& p) { return {{"k_N_m_s2", p.k_N_m_s2}}; }
-
 // |w| would fall by less than 0.5 % over the data.
 std::string too_small(const EffectParameters& p, const SignificanceScale& scale) {
   if (scale.nominal == nullptr) return {};
@@ -57,7 +53,7 @@ constexpr EffectDescriptor aero_torque_effect = [] {
   EffectDescriptor d;
   d.name = "aero_torque";
   d.parameter_count = 1;
-  d.hooks = {tolerance, apply, parameters, text, json, too_small, no_objection, unphysical};
+  d.hooks = {tolerance, apply, parameters, too_small, no_objection, unphysical};
   return d;
 }();
 

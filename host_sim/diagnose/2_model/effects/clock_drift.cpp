@@ -22,10 +22,6 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia&,
   return p;
 }
 
-std::string text(const EffectParameters& p) { return printf_text("rate error %.4f", p.rate_error); }
-
-nlohmann::json json(const EffectParameters& p) { return {{"rate_error", p.rate_error}}; }
-
 // A rate error below 0.1 %.
 std::string too_small(const EffectParameters& p, const SignificanceScale&) {
   if (std::abs(p.rate_error) < 0.001) return printf_text("its rate error is %.2g %%", 100.0 * p.rate_error);
@@ -46,7 +42,7 @@ constexpr EffectDescriptor clock_drift_effect = [] {
   d.parameter_count = 1;
   d.sensor = true;
   d.gyro_equivalents = {Effect::gyro_scale};
-  d.hooks = {tolerance, apply, parameters, text, json, too_small, senseless, no_physics_objection};
+  d.hooks = {tolerance, apply, parameters, too_small, senseless, no_physics_objection};
   return d;
 }();
 

@@ -1,6 +1,5 @@
 // `gyro_bias`: measured = true + b. theta = b (rad/s, sensor axes).
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/json_values.hpp"
 #include "diagnose/2_model/printf_text.hpp"
 
 namespace aloft::host::diagnose {
@@ -18,12 +17,6 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia&,
   return p;
 }
 
-std::string text(const EffectParameters& p) {
-  return printf_text("bias %.4f, %.4f, %.4f rad/s", p.vector(0), p.vector(1), p.vector(2));
-}
-
-nlohmann::json json(const EffectParameters& p) { return {{"bias_rad_s", json_vec(p.vector)}}; }
-
 // |b| below 0.1 % of the mean |w|.
 std::string too_small(const EffectParameters& p, const SignificanceScale& scale) {
   if (p.vector.norm() < 0.001 * scale.speed) return printf_text("its bias is %.2g rad/s", p.vector.norm());
@@ -37,7 +30,7 @@ constexpr EffectDescriptor gyro_bias_effect = [] {
   d.name = "gyro_bias";
   d.parameter_count = 3;
   d.sensor = true;
-  d.hooks = {tolerance, apply, parameters, text, json, too_small, no_objection, no_physics_objection};
+  d.hooks = {tolerance, apply, parameters, too_small, no_objection, no_physics_objection};
   return d;
 }();
 

@@ -1,6 +1,5 @@
 // `gyro_scale`: measured_i = (1 + s_i) true_i. theta = s (sensor axes).
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/json_values.hpp"
 #include "diagnose/2_model/printf_text.hpp"
 
 namespace aloft::host::diagnose {
@@ -17,12 +16,6 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia&,
   p.vector = theta.head<3>();
   return p;
 }
-
-std::string text(const EffectParameters& p) {
-  return printf_text("scale errors %.4f, %.4f, %.4f", p.vector(0), p.vector(1), p.vector(2));
-}
-
-nlohmann::json json(const EffectParameters& p) { return {{"scale_error", json_vec(p.vector)}}; }
 
 // Every error below 0.1 %.
 std::string too_small(const EffectParameters& p, const SignificanceScale&) {
@@ -45,7 +38,7 @@ constexpr EffectDescriptor gyro_scale_effect = [] {
   d.name = "gyro_scale";
   d.parameter_count = 3;
   d.sensor = true;
-  d.hooks = {tolerance, apply, parameters, text, json, too_small, senseless, no_physics_objection};
+  d.hooks = {tolerance, apply, parameters, too_small, senseless, no_physics_objection};
   return d;
 }();
 

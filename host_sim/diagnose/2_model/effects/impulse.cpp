@@ -3,7 +3,6 @@
 // moves from one sample to the next), so effect_fit.cpp searches it, and the ranking
 // charges it as a parameter all the same.
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/json_values.hpp"
 #include "diagnose/2_model/printf_text.hpp"
 
 namespace aloft::host::diagnose {
@@ -24,14 +23,6 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& 
   return p;
 }
 
-std::string text(const EffectParameters& p) {
-  return printf_text("at %.3f s, |dL| %.3g N m s", p.time_s, p.vector.norm());
-}
-
-nlohmann::json json(const EffectParameters& p) {
-  return {{"time_s", p.time_s}, {"angular_impulse_N_m_s", json_vec(p.vector)}};
-}
-
 // |dw| below 0.5 % of the mean |w|.
 std::string too_small(const EffectParameters& p, const SignificanceScale& scale) {
   if (scale.nominal == nullptr) return {};
@@ -48,7 +39,7 @@ constexpr EffectDescriptor impulse_effect = [] {
   d.parameter_count = 3;
   d.searched_parameters = 1;
   d.shared_by_flights = false;
-  d.hooks = {tolerance, apply, parameters, text, json, too_small, no_objection, no_physics_objection};
+  d.hooks = {tolerance, apply, parameters, too_small, no_objection, no_physics_objection};
   return d;
 }();
 

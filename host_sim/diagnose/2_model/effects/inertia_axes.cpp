@@ -4,7 +4,6 @@
 #include "aloft/rotation.hpp"
 #include "diagnose/2_model/canonical_rotation.hpp"
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/json_values.hpp"
 #include "diagnose/2_model/printf_text.hpp"
 
 namespace aloft::host::diagnose {
@@ -26,14 +25,6 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& 
   return p;
 }
 
-std::string text(const EffectParameters& p) { return printf_text("rotated by %.2f deg", p.angle_deg); }
-
-nlohmann::json json(const EffectParameters& p) {
-  return {{"angle_deg", p.angle_deg},
-          {"rotation", json_quat(p.rotation)},
-          {"tensor_kg_m2", json_matrix(p.tensor_kg_m2)}};
-}
-
 // Turned by less than 0.25°.
 std::string too_small(const EffectParameters& p, const SignificanceScale&) {
   if (p.angle_deg < 0.25) return printf_text("it turns the axes by only %.2g deg", p.angle_deg);
@@ -48,7 +39,7 @@ constexpr EffectDescriptor inertia_axes_effect = [] {
   d.parameter_count = 3;
   d.rotation_gauge = true;
   d.gyro_equivalents = {Effect::sensor_misalignment};
-  d.hooks = {tolerance, apply, parameters, text, json, too_small, no_objection, no_physics_objection};
+  d.hooks = {tolerance, apply, parameters, too_small, no_objection, no_physics_objection};
   return d;
 }();
 

@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/json_values.hpp"
 #include "diagnose/2_model/printf_text.hpp"
 
 namespace aloft::host::diagnose {
@@ -41,42 +40,6 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& 
   return p;
 }
 
-// Torque-free motion fixes only the ratios of the moments, so a change is said of one
-// moment relative to the other two (their geometric mean), which does not depend on how
-// the fitted moments were scaled: "the body file's Iy is 3.0 % high relative to Ix and
-// Iz (the data's Iy is 2.9 % below the file's); moments about body x, y, z: ...".
-std::string text(const EffectParameters& p) {
-  const Vec3 m = p.principal_body_order_kg_m2, n = p.nominal_body_order_kg_m2;
-  if (!(n.minCoeff() > 0.0) || !(m.minCoeff() > 0.0)) {
-    return printf_text("principal moments about body x, y, z %.4g, %.4g, %.4g kg m^2", m(0), m(1), m(2));
-  }
-  const Vec3 factor = m.cwiseQuotient(n);  // the data's moment over the file's
-  Vec3 relative = Vec3::Zero();            // each factor over the other two's geometric mean
-  for (int i = 0; i < 3; ++i) relative(i) = factor(i) / std::sqrt(factor((i + 1) % 3) * factor((i + 2) % 3));
-  Eigen::Index most = 0;
-  relative.array().log().abs().maxCoeff(&most);
-  const char* name[] = {"Ix", "Iy", "Iz"};
-  const int a = (static_cast<int>(most) + 1) % 3, b = (static_cast<int>(most) + 2) % 3;
-  const double file_off = 100.0 * (1.0 / relative(most) - 1.0), data_off = 100.0 * (relative(most) - 1.0);
-  return std::string("the body file's ") + name[most] + printf_text(" is %.1f %% ", std::abs(file_off)) +
-         (file_off > 0 ? "high" : "low") + " relative to " + name[std::min(a, b)] + " and " +
-         name[std::max(a, b)] + " (the data's " + name[most] +
-         printf_text(" is %.1f %% ", std::abs(data_off)) + (data_off < 0 ? "below" : "above") +
-         " the file's); " +
-         printf_text(
-             "principal moments about body x, y, z %.4g, %.4g, %.4g kg m^2 (scaled to the file's sum)", m(0),
-             m(1), m(2));
-}
-
-nlohmann::json json(const EffectParameters& p) {
-  return {{"principal_kg_m2", json_vec(p.principal_body_order_kg_m2)},
-          {"nominal_principal_kg_m2", json_vec(p.nominal_body_order_kg_m2)},
-          {"principal_axes_order",
-           "body file axes x, y, z (each principal axis by the body axis it lies nearest)"},
-          {"principal_ascending_kg_m2", json_vec(p.principal_kg_m2)},
-          {"tensor_kg_m2", json_matrix(p.tensor_kg_m2)}};
-}
-
 // Every moment within 0.5 % of nominal.
 std::string too_small(const EffectParameters& p, const SignificanceScale& scale) {
   if (scale.nominal == nullptr) return {};
@@ -101,7 +64,7 @@ constexpr EffectDescriptor inertia_moments_effect = [] {
   d.name = "inertia_moments";
   d.parameter_count = 2;
   d.sets_tensor = true;
-  d.hooks = {tolerance, apply, parameters, text, json, too_small, no_objection, unphysical};
+  d.hooks = {tolerance, apply, parameters, too_small, no_objection, unphysical};
   return d;
 }();
 

@@ -37,16 +37,6 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& 
   return p;
 }
 
-std::string text(const EffectParameters& p) {
-  return printf_text("rotor J = %.3g kg m^2, c = %.3g N m s", p.rotor_J_kg_m2, p.c_N_m_s);
-}
-
-nlohmann::json json(const EffectParameters& p) {
-  return {{"model", "spherical_rotor_in_viscous_cavity"},
-          {"rotor_J_kg_m2", p.rotor_J_kg_m2},
-          {"c_N_m_s", p.c_N_m_s}};
-}
-
 // No bar of its own: the shrink of the held-out gap decides.
 std::string too_small(const EffectParameters&, const SignificanceScale&) { return {}; }
 
@@ -85,7 +75,7 @@ constexpr EffectDescriptor internal_damping_effect = [] {
   d.starts_at_release = true;
   d.neutral_at_zero = false;
   d.start_grid = &kRotorGrid;
-  d.hooks = {tolerance, apply, parameters, text, json, too_small, no_objection, no_physics_objection};
+  d.hooks = {tolerance, apply, parameters, too_small, no_objection, no_physics_objection};
   return d;
 }();
 

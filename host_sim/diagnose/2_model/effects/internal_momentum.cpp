@@ -11,7 +11,6 @@
 // the two, so a session is where a rotor can be named. Registered but not yet tried by
 // the diagnosis (`candidate`, below).
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/json_values.hpp"
 #include "diagnose/2_model/printf_text.hpp"
 
 namespace aloft::host::diagnose {
@@ -30,13 +29,6 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& 
   p.vector = nominal.tensor * theta.head<3>();
   return p;
 }
-
-std::string text(const EffectParameters& p) {
-  return printf_text("h = (%.3g, %.3g, %.3g) N m s in body axes, |h| %.3g N m s", p.vector(0), p.vector(1),
-                     p.vector(2), p.vector.norm());
-}
-
-nlohmann::json json(const EffectParameters& p) { return {{"h_N_m_s", json_vec(p.vector)}}; }
 
 // |h| below 0.2 % of the |L| the mean |w| carries: the rotor's torque then turns w by less
 // than the smallest rotor the generator draws (0.5 %) does, by a factor of 2.5.
@@ -57,7 +49,7 @@ constexpr EffectDescriptor internal_momentum_effect = [] {
   // "A rotor inside": the withheld imu_impulse_4, three practice2 compound flights whose
   // gyro bias it stood in for, and a step of the first real racquet session).
   d.candidate = false;
-  d.hooks = {tolerance, apply, parameters, text, json, too_small, no_objection, no_physics_objection};
+  d.hooks = {tolerance, apply, parameters, too_small, no_objection, no_physics_objection};
   return d;
 }();
 

@@ -11,10 +11,6 @@ void apply(const Eigen::VectorXd&, const NominalInertia&, ModelTerms&) {}
 
 EffectParameters parameters(const Eigen::VectorXd&, const NominalInertia&, double) { return {}; }
 
-std::string text(const EffectParameters&) { return ""; }
-
-nlohmann::json json(const EffectParameters&) { return nlohmann::json::object(); }
-
 std::string too_small(const EffectParameters&, const SignificanceScale&) { return {}; }
 
 }  // namespace
@@ -23,7 +19,7 @@ constexpr EffectDescriptor none_effect = [] {
   EffectDescriptor d;
   d.name = "none";
   d.parameter_count = 0;
-  d.hooks = {tolerance, apply, parameters, text, json, too_small, no_objection, no_physics_objection};
+  d.hooks = {tolerance, apply, parameters, too_small, no_objection, no_physics_objection};
   return d;
 }();
 

@@ -4,7 +4,6 @@
 #include "aloft/rotation.hpp"
 #include "diagnose/2_model/canonical_rotation.hpp"
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/json_values.hpp"
 #include "diagnose/2_model/printf_text.hpp"
 
 namespace aloft::host::diagnose {
@@ -23,12 +22,6 @@ EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& 
   return p;
 }
 
-std::string text(const EffectParameters& p) { return printf_text("rotated by %.2f deg", p.angle_deg); }
-
-nlohmann::json json(const EffectParameters& p) {
-  return {{"angle_deg", p.angle_deg}, {"rotation", json_quat(p.rotation)}};
-}
-
 // Turned by less than 0.25°.
 std::string too_small(const EffectParameters& p, const SignificanceScale&) {
   if (p.angle_deg < 0.25) return printf_text("it turns the axes by only %.2g deg", p.angle_deg);
@@ -44,7 +37,7 @@ constexpr EffectDescriptor sensor_misalignment_effect = [] {
   d.sensor = true;
   d.rotation_gauge = true;
   d.gyro_equivalents = {Effect::inertia_axes};
-  d.hooks = {tolerance, apply, parameters, text, json, too_small, no_objection, no_physics_objection};
+  d.hooks = {tolerance, apply, parameters, too_small, no_objection, no_physics_objection};
   return d;
 }();
 
