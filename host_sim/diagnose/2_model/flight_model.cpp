@@ -414,6 +414,13 @@ int theta_offset(const EffectModel& model, Effect effect) {
   return -1;
 }
 
+bool has_searched_time(const EffectModel& model) {
+  for (Effect e : model_effects(model)) {
+    if (describe(e).searched_parameters > 0) return true;
+  }
+  return false;
+}
+
 int model_parameter_count(const EffectModel& model) {
   int count = 0;
   for (Effect e : model_effects(model)) count += effect_parameter_count(e);

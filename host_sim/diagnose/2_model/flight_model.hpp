@@ -45,6 +45,10 @@ std::vector<Effect> model_effects(const EffectModel& model);
 // Where an effect's parameters start in theta (-1: not in the model).
 int theta_offset(const EffectModel& model, Effect effect);
 
+// Whether one of the model's effects acts at an instant the fitter does not take but a
+// search finds (descriptor `searched_parameters`: the impulse's time, `impulse_time_s`).
+bool has_searched_time(const EffectModel& model);
+
 // Parameters of the whole model (the sum over its effects).
 int model_parameter_count(const EffectModel& model);
 

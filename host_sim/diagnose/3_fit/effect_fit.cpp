@@ -403,9 +403,11 @@ std::optional<Refined> other_grid_minimum(const ArrowProblem& problem, const std
   return Refined{std::move(r), 0.0};
 }
 
-EffectFit fit_impulse(Setup& setup, const EffectFit* nominal_fit) {
+// An effect that acts at one instant (descriptor `searched_parameters`: the impulse): its
+// time is searched over the flight, the rest fitted at each time tried.
+EffectFit fit_with_time_search(Setup& setup, const EffectFit* nominal_fit) {
   const Flight& flight = *(*setup.data)[0].flight;
-  const int p = static_cast<int>(setup.base_theta.size()) + 3;
+  const int p = static_cast<int>(setup.base_theta.size()) + effect_parameter_count(setup.effect);
   Eigen::VectorXd zero = Eigen::VectorXd::Zero(p);
   zero.head(setup.base_theta.size()) = setup.base_theta;
   const std::vector<Eigen::VectorXd> rates = starting_rates(setup, nominal_fit, zero);
@@ -481,9 +483,9 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::ve
                      const EffectFit* nominal_fit, const Eigen::VectorXd* theta_start, unsigned threads) {
   Setup setup{effect, &nominal, &data, {}, 0.0, {}, Eigen::VectorXd(), threads};
   for (const FlightData& d : data) setup.refs.push_back(reference_index(effect, *d.flight));
-  if (effect == Effect::impulse) {
+  if (describe(effect).searched_parameters > 0) {
     if (data.size() != 1) throw std::invalid_argument("an impulse is fitted to one flight only");
-    return fit_impulse(setup, nominal_fit);
+    return fit_with_time_search(setup, nominal_fit);
   }
   const int p = effect_parameter_count(effect);
   const ArrowProblem problem = problem_of(setup, p);
@@ -522,13 +524,13 @@ EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalIne
   const EffectModel model = setup.model();
   for (std::size_t i = 0; i < data.size(); ++i) {
     setup.refs.push_back(compound_reference_index(model, *data[i].flight));
-    if (i < base.flights.size() && theta_offset(model, Effect::impulse) >= 0 && added != Effect::impulse) {
+    if (i < base.flights.size() && has_searched_time(model) && describe(added).searched_parameters == 0) {
       setup.impulse_time_s = base.flights[i].impulse_time_s;
     }
   }
-  if (added == Effect::impulse) {
+  if (describe(added).searched_parameters > 0) {
     if (data.size() != 1) throw std::invalid_argument("an impulse is fitted to one flight only");
-    return fit_impulse(setup, &base);
+    return fit_with_time_search(setup, &base);
   }
   const int p = model_parameter_count(model);
   const ArrowProblem problem = problem_of(setup, p);

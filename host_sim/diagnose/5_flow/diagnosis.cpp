@@ -50,7 +50,7 @@ void describe_baseline(Analysis& analysis, const Flight& flight, const NominalIn
 void find_onset(Analysis& analysis, const Flight& flight, const NominalInertia& nominal,
                 const EffectFit& none_full, const Vec3& inverse_sigma) {
   const EffectModel final_model = model_of(analysis.model.fit, nominal, 0);
-  if (theta_offset(final_model, Effect::impulse) >= 0) {
+  if (has_searched_time(final_model)) {
     analysis.where.onset_s = final_model.impulse_time_s;
   } else if (analysis.verdict.effect != Effect::none) {
     const FlightData lead{&flight, leading_samples(flight.size(), 0.2, kMinimumSamples), inverse_sigma};

@@ -62,7 +62,9 @@ nlohmann::json inertia_moments_json(const EffectParameters& p) {
 }
 
 // `inertia_axes`
-std::string inertia_axes_text(const EffectParameters& p) { return printf_text("rotated by %.2f deg", p.angle_deg); }
+std::string inertia_axes_text(const EffectParameters& p) {
+  return printf_text("rotated by %.2f deg", p.angle_deg);
+}
 
 nlohmann::json inertia_axes_json(const EffectParameters& p) {
   return {{"angle_deg", p.angle_deg},
@@ -71,7 +73,9 @@ nlohmann::json inertia_axes_json(const EffectParameters& p) {
 }
 
 // `aero_torque`
-std::string aero_torque_text(const EffectParameters& p) { return printf_text("k = %.3g N m s^2", p.k_N_m_s2); }
+std::string aero_torque_text(const EffectParameters& p) {
+  return printf_text("k = %.3g N m s^2", p.k_N_m_s2);
+}
 
 nlohmann::json aero_torque_json(const EffectParameters& p) { return {{"k_N_m_s2", p.k_N_m_s2}}; }
 
@@ -110,14 +114,18 @@ std::string gyro_scale_text(const EffectParameters& p) {
 nlohmann::json gyro_scale_json(const EffectParameters& p) { return {{"scale_error", json_vec(p.vector)}}; }
 
 // `sensor_misalignment`
-std::string sensor_misalignment_text(const EffectParameters& p) { return printf_text("rotated by %.2f deg", p.angle_deg); }
+std::string sensor_misalignment_text(const EffectParameters& p) {
+  return printf_text("rotated by %.2f deg", p.angle_deg);
+}
 
 nlohmann::json sensor_misalignment_json(const EffectParameters& p) {
   return {{"angle_deg", p.angle_deg}, {"rotation", json_quat(p.rotation)}};
 }
 
 // `clock_drift`
-std::string clock_drift_text(const EffectParameters& p) { return printf_text("rate error %.4f", p.rate_error); }
+std::string clock_drift_text(const EffectParameters& p) {
+  return printf_text("rate error %.4f", p.rate_error);
+}
 
 nlohmann::json clock_drift_json(const EffectParameters& p) { return {{"rate_error", p.rate_error}}; }
 
