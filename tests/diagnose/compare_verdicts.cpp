@@ -71,6 +71,24 @@ double relative_difference(double a, double b) {
   return scale > 0.0 ? std::abs(a - b) / scale : 0.0;
 }
 
+// A candidate's score in both reports. A score is null where the report had no finite
+// number to write (a candidate not evaluated): two nulls agree, a null and a number differ.
+void compare_scores(const std::string& what, const json& a, const json& b, const Tolerances& tol,
+                    Measured& m) {
+  if (!a.is_number() || !b.is_number()) {
+    if (a.is_number() == b.is_number()) return;
+    std::printf("%s scores %s here, %s there\n", what.c_str(), a.dump().c_str(), b.dump().c_str());
+    ++m.differences;
+    return;
+  }
+  const double d = std::abs(a.get<double>() - b.get<double>());
+  m.score = std::max(m.score, d);
+  if (d > tol.score) {
+    std::printf("%s scores %.6f here, %.6f there\n", what.c_str(), a.get<double>(), b.get<double>());
+    ++m.differences;
+  }
+}
+
 // One analysis (a flight, or a session's pooled one): its verdict and candidates.
 void compare_analysis(const std::string& where, const json& a, const json& b, const Tolerances& tol,
                       Measured& m) {
@@ -82,7 +100,8 @@ void compare_analysis(const std::string& where, const json& a, const json& b, co
   }
   for (const char* key : {"heldout_rms_rel_err_before", "heldout_rms_rel_err_after",
                           "heldout_rms_da_before_deg", "heldout_rms_da_after_deg"}) {
-    const double x = a["verdict"].value(key, 0.0), y = b["verdict"].value(key, 0.0);
+    const double x = a.value("verdict", json::object()).value(key, 0.0);
+    const double y = b.value("verdict", json::object()).value(key, 0.0);
     const double d = relative_difference(x, y);
     m.relative = std::max(m.relative, d);
     if (d > tol.relative) {
@@ -94,13 +113,7 @@ void compare_analysis(const std::string& where, const json& a, const json& b, co
     if (!ca.contains("score")) continue;
     for (const json& cb : b.value("candidates", json::array())) {
       if (cb.value("effect", "") != ca.value("effect", "") || !cb.contains("score")) continue;
-      const double d = std::abs(ca["score"].get<double>() - cb["score"].get<double>());
-      m.score = std::max(m.score, d);
-      if (d > tol.score) {
-        std::printf("%s: %s scores %.6f here, %.6f there\n", where.c_str(), ca.value("effect", "").c_str(),
-                    ca["score"].get<double>(), cb["score"].get<double>());
-        ++m.differences;
-      }
+      compare_scores(where + ": " + ca.value("effect", ""), ca["score"], cb["score"], tol, m);
     }
   }
 }
