@@ -10,6 +10,7 @@
 #include "diagnose/4_judge/candidate_ranking.hpp"
 #include "diagnose/4_judge/confidence.hpp"
 #include "diagnose/4_judge/score_spread.hpp"
+#include "diagnose/2_model/nominal_inertia.hpp"
 
 using namespace aloft::host::diagnose;
 
@@ -270,4 +271,60 @@ TEST_CASE("rank_step: another minimum of a search is reported when it fits about
   REQUIRE(a.notes[0].params_of.has_value());
   CHECK(*a.notes[0].params_of == Effect::impulse);
   CHECK(a.notes[0].params.time_s == chosen.alternatives[0].params.time_s);
+}
+
+namespace {
+
+// A moments verdict and a gyro scale that fits as well with the same predictions, ranked
+// on a flight read by a gyro turned by `sensor_to_body`.
+Analysis moments_with_scale(const Eigen::Quaterniond& sensor_to_body, Effect head) {
+  static const NominalInertia nominal =
+      NominalInertia::of_tensor(Eigen::Vector3d(0.002, 0.004, 0.005).asDiagonal());
+  Flight flight;
+  flight.sensor_to_body = sensor_to_body;
+  for (int k = 0; k < 10; ++k) {
+    flight.time_s.push_back(0.01 * k);
+    flight.omega.emplace_back(1.0, 8.0, 0.5);
+    flight.usable.push_back(1);
+  }
+  // Scores (chi-square plus the penalties) 2000 for the head, 2003 for the other: beyond
+  // the rounding tolerance that names a tie by registry order, within the class margin.
+  const auto score = [&](Effect e) { return (e == head ? 2000.0 : 2003.0) - penalty(e); };
+  Candidate moments = candidate(Effect::inertia_moments, score(Effect::inertia_moments), 0.05);
+  moments.params.principal_kg_m2 = Eigen::Vector3d(0.0021, 0.004, 0.0049);  // the nominal order kept
+  Candidate scale = candidate(Effect::gyro_scale, score(Effect::gyro_scale), 0.05);
+  for (Candidate* c : {&moments, &scale}) c->heldout_readings = {flight.omega};  // the same predictions
+  Analysis a;
+  a.candidates = {candidate(Effect::none, 2900.0, 0.10), moments, scale};
+  RankingContext context;
+  context.flights = {&flight};
+  context.inverse_sigma = {Eigen::Vector3d::Constant(50.0)};
+  context.mean_speed = 10.0;
+  context.duration_s = 1.0;
+  context.nominal = &nominal;
+  rank_candidates(a, context);
+  return a;
+}
+
+bool lists(const std::vector<Effect>& list, Effect e) {
+  return std::find(list.begin(), list.end(), e) != list.end();
+}
+
+}  // namespace
+
+TEST_CASE("one-way equivalence: a scale is listed with moments only where it mimics them, never the reverse",
+          "[candidate_ranking]") {
+  const Eigen::Quaterniond along_axes = Eigen::Quaterniond::Identity();
+  const Eigen::Quaterniond turned(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()));
+  const Analysis mimicked = moments_with_scale(along_axes, Effect::inertia_moments);
+  REQUIRE(mimicked.verdict.effect == Effect::inertia_moments);
+  CHECK(lists(mimicked.verdict.equivalent, Effect::gyro_scale));
+  // A gyro turned from the principal axes mixes the rates: no scale mimics the moments.
+  const Analysis mixed = moments_with_scale(turned, Effect::inertia_moments);
+  REQUIRE(mixed.verdict.effect == Effect::inertia_moments);
+  CHECK_FALSE(lists(mixed.verdict.equivalent, Effect::gyro_scale));
+  // Moments never stand in for a scale.
+  const Analysis scale_first = moments_with_scale(along_axes, Effect::gyro_scale);
+  REQUIRE(scale_first.verdict.effect == Effect::gyro_scale);
+  CHECK_FALSE(lists(scale_first.verdict.equivalent, Effect::inertia_moments));
 }

@@ -96,6 +96,9 @@ TEST_CASE("every registered effect is complete, under a SPEC §4 name, none left
     CHECK(h.senseless != nullptr);
     CHECK(h.unphysical != nullptr);
     for (Effect q : d.gyro_equivalents) CHECK((q != e || e == Effect::none));  // padding is `none`
+    // A one-way equivalence names another effect and says when it holds.
+    CHECK((e == Effect::none || d.one_way_equivalent.stands_in_for != e));
+    CHECK((d.one_way_equivalent.stands_in_for == Effect::none) == (d.one_way_equivalent.holds == nullptr));
   }
   CHECK(names.size() == kSpec.size());
   CHECK(registered_effects().front() == Effect::none);

@@ -8,7 +8,7 @@
 
 #include "diagnose/3_fit/effect_fit.hpp"
 #include "diagnose/3_fit/held_out.hpp"
-#include "diagnose/4_judge/moment_scale_equivalence.hpp"
+#include "diagnose/2_model/moment_scale_equivalence.hpp"
 #include "generator/perturbed_rigid_body.hpp"
 
 using namespace aloft::host::diagnose;

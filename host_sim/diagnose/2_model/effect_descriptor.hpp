@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <array>
 #include <string>
@@ -74,6 +75,16 @@ struct StartGrid {
   Eigen::VectorXd (*joining)() = nullptr;
 };
 
+// An effect this one can stand in for under a condition, never the reverse: a gyro scale
+// for wrong moments (2_model/moment_scale_equivalence.hpp). The ranking lists this effect
+// beside a verdict of `stands_in_for` only where `holds` for that verdict's fitted
+// parameters, and never lists `stands_in_for` beside a verdict of this effect.
+struct OneWayEquivalence {
+  Effect stands_in_for = Effect::none;  // none: no such effect
+  bool (*holds)(const EffectParameters& other, const NominalInertia& nominal,
+                const Eigen::Quaterniond& sensor_to_body) = nullptr;
+};
+
 struct EffectDescriptor {
   const char* name = nullptr;  // the SPEC §4 name, also the report's
   // Parameters in theta (flight_model.hpp), scaled so that a unit change moves the
@@ -99,6 +110,7 @@ struct EffectDescriptor {
   // Effects a gyro alone cannot tell from this one whatever the flight (SPEC §4), padded
   // with `none`.
   std::array<Effect, 2> gyro_equivalents{};
+  OneWayEquivalence one_way_equivalent{};
   EffectHooks hooks;
 };
 

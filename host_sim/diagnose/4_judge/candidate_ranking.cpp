@@ -7,7 +7,6 @@
 
 #include "aloft/deviation.hpp"
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/4_judge/moment_scale_equivalence.hpp"
 #include "diagnose/4_judge/score_spread.hpp"
 
 namespace aloft::host::diagnose {
@@ -101,17 +100,16 @@ void judge_physics(Candidate& c) {
   }
 }
 
-// A gyro scale can stand in for wrong moments, never the reverse (moment_scale_equivalence.hpp):
-// listed with a moments verdict only where the gyro reads the principal axes and a scale
-// reproduces the fitted moments exactly; never listed with a scale verdict.
+// An effect that stands in for another one way (descriptor `one_way_equivalent`: a gyro
+// scale for wrong moments) is listed with a verdict of the other only where the condition
+// holds for that verdict's fit, and the other is never listed with a verdict of it.
 bool one_way_equivalence_allows(const Candidate& best, const Candidate& other,
                                 const RankingContext& context) {
-  if (best.effect == Effect::gyro_scale && other.effect == Effect::inertia_moments) return false;
-  if (best.effect != Effect::inertia_moments || other.effect != Effect::gyro_scale) return true;
+  if (describe(best.effect).one_way_equivalent.stands_in_for == other.effect) return false;
+  const OneWayEquivalence& stand_in = describe(other.effect).one_way_equivalent;
+  if (stand_in.stands_in_for != best.effect) return true;
   if (context.nominal == nullptr || context.flights.empty()) return false;
-  return gyro_along_principal_axes(context.nominal->principal_axes,
-                                   context.flights.front()->sensor_to_body) &&
-         scale_mimicking_moments(context.nominal->principal_moments, best.params.principal_kg_m2).has_value();
+  return stand_in.holds(best.params, *context.nominal, context.flights.front()->sensor_to_body);
 }
 
 bool eligible(const Candidate& c) {

@@ -1,5 +1,6 @@
 // `gyro_scale`: measured_i = (1 + s_i) true_i. theta = s (sensor axes).
 #include "diagnose/2_model/effect_descriptor.hpp"
+#include "diagnose/2_model/moment_scale_equivalence.hpp"
 #include "diagnose/2_model/printf_text.hpp"
 
 namespace aloft::host::diagnose {
@@ -31,6 +32,14 @@ std::string senseless(const EffectParameters& p) {
                      100.0 * p.vector(axis), 100.0 * kLargestSensibleScaleError);
 }
 
+// A scale reproduces wrong moments exactly where the gyro reads the principal axes and the
+// fitted moments keep the nominal order (moment_scale_equivalence.hpp).
+bool mimics_moments(const EffectParameters& moments, const NominalInertia& nominal,
+                    const Eigen::Quaterniond& sensor_to_body) {
+  return gyro_along_principal_axes(nominal.principal_axes, sensor_to_body) &&
+         scale_mimicking_moments(nominal.principal_moments, moments.principal_kg_m2).has_value();
+}
+
 }  // namespace
 
 constexpr EffectDescriptor gyro_scale_effect = [] {
@@ -38,6 +47,7 @@ constexpr EffectDescriptor gyro_scale_effect = [] {
   d.name = "gyro_scale";
   d.parameter_count = 3;
   d.sensor = true;
+  d.one_way_equivalent = {Effect::inertia_moments, mimics_moments};
   d.hooks = {tolerance, apply, parameters, too_small, senseless, no_physics_objection};
   return d;
 }();

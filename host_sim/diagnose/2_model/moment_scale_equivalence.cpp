@@ -1,4 +1,4 @@
-#include "diagnose/4_judge/moment_scale_equivalence.hpp"
+#include "diagnose/2_model/moment_scale_equivalence.hpp"
 
 #include <cmath>
 
