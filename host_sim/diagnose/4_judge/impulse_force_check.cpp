@@ -48,10 +48,17 @@ std::optional<ImpulseForce> impulse_force(const Flight& flight, double impulse_t
   }
   mean /= static_cast<double>(kin.size());
   // The integral of the excess over [centre - w, centre + w], each sample weighted by
-  // half the span to its neighbours.
+  // half the span to its neighbours. The window's samples are found by binary search (the
+  // times ascend), so the windows together read the flight about once.
   const auto velocity_change = [&](double centre) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (std::size_t k = 0; k < kin.size(); ++k) {
+    // One sample early: the test below, not the search's rounding of centre - w, decides.
+    const auto found =
+        std::lower_bound(flight.time_s.begin(), flight.time_s.end(), centre - kImpulseWindow_s);
+    const auto first =
+        static_cast<std::size_t>(std::max<std::ptrdiff_t>(found - flight.time_s.begin() - 1, 0));
+    for (std::size_t k = first; k < kin.size(); ++k) {
+      if (flight.time_s[k] - centre > kImpulseWindow_s) break;
       if (std::abs(flight.time_s[k] - centre) > kImpulseWindow_s) continue;
       const double dt =
           0.5 * (flight.time_s[std::min(k + 1, kin.size() - 1)] - flight.time_s[k > 0 ? k - 1 : 0]);
