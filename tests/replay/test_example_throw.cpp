@@ -8,12 +8,11 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <cstdint>
 #include <cstdlib>
-#include <cstring>
-#include <map>
-#include <sstream>
+#include <string>
+#include <vector>
 
+#include "flight_lines_check.hpp"
 #include "run_aloft.hpp"
 #include "throw_generator.hpp"
 
@@ -29,32 +28,14 @@ std::string example_body_text() {
   return aloft::test::body_json_text(aloft::test::example_throw_spec().tensor_kg_m2, Eigen::Vector3d::Zero());
 }
 
-// The replay_lines program's output: one map of key -> value per flight.
-std::vector<std::map<std::string, std::string>> replay_lines_flights() {
+// The replay_lines program's output, a flight at a time.
+std::vector<aloft::test::FlightLines> replay_lines_flights() {
   const aloft::test::ScratchDir& dir = aloft::test::program_scratch();
   const std::string out = dir.path("lines.txt");
   const std::string command =
       std::string("'") + ALOFT_REPLAY_LINES + "' '" + body_path + "' '" + csv_path + "' > '" + out + "'";
   REQUIRE(std::system(command.c_str()) == 0);
-  std::vector<std::map<std::string, std::string>> flights;
-  std::istringstream lines(read_file(out));
-  std::string key, value;
-  while (lines >> key >> value) {
-    if (key == "flight") flights.emplace_back();
-    if (!flights.empty()) flights.back()[key] = value;
-    std::getline(lines, value);  // the rest of a header line
-  }
-  return flights;
-}
-
-std::int64_t whole_microseconds(const json& seconds) { return std::llround(double(seconds) * 1e6); }
-std::int64_t microseconds_of(const std::string& text) { return std::llround(std::stod(text) * 1e6); }
-
-std::string bits_of(double value) {
-  const float f = static_cast<float>(value);
-  std::uint32_t bits = 0;
-  std::memcpy(&bits, &f, sizeof bits);
-  return std::to_string(bits);
+  return aloft::test::flight_lines_of(read_file(out));
 }
 
 }  // namespace
@@ -78,22 +59,7 @@ TEST_CASE("examples/throw_*: the firmware's host lines say what aloft replay --j
   INFO("stderr: " << run.err);
   REQUIRE(run.exit_code == 0);
   const json report = json::parse(read_file(report_path));
-  const auto lines = replay_lines_flights();
-  REQUIRE(lines.size() == report["flights"].size());
-  REQUIRE_FALSE(lines.empty());
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const json& f = report["flights"][i];
-    auto l = lines[i];
-    INFO("flight " << i);
-    CHECK(microseconds_of(l["release_s"]) == whole_microseconds(f["release_s"]));
-    CHECK(microseconds_of(l["landing_s"]) == whole_microseconds(f["landing_s"]));
-    CHECK(l["samples"] == std::to_string(int(f["samples"])));
-    CHECK(l["gaps"] == std::to_string(int(f["gaps"])));
-    CHECK(l["comparisons"] == std::to_string(int(f["comparisons"])));
-    CHECK(l["imu_position_from"] == f["imu_position_from"]);
-    CHECK(l["rms_da_rad_bits"] == bits_of(double(f["rms_da_deg"]) / 57.29577951308232));
-    CHECK(l["rms_rel_err_bits"] == bits_of(f["rms_rel_err"]));
-  }
+  aloft::test::check_flight_lines_match_report(replay_lines_flights(), report);
   // The generator's truth: release at 0.200 s (never before), landing at 0.500 s.
   const json& f = report["flights"][0];
   CHECK(double(f["release_s"]) >= 0.2);

@@ -7,13 +7,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cmath>
-#include <cstdint>
 #include <cstdlib>
-#include <cstring>
-#include <map>
-#include <sstream>
+#include <string>
 
+#include "flight_lines_check.hpp"
 #include "run_aloft.hpp"
 
 using aloft::test::read_file;
@@ -27,29 +24,6 @@ const std::string csv_path = std::string(ALOFT_EXAMPLES) + "/throw_imu.csv";
 void run_program(const std::string& command) {
   INFO(command);
   REQUIRE(std::system(command.c_str()) == 0);
-}
-
-// The lines' output: one map of key -> value per flight.
-std::vector<std::map<std::string, std::string>> flights_of(const std::string& text) {
-  std::vector<std::map<std::string, std::string>> flights;
-  std::istringstream lines(text);
-  std::string key, value;
-  while (lines >> key >> value) {
-    if (key == "flight") flights.emplace_back();
-    if (!flights.empty()) flights.back()[key] = value;
-    std::getline(lines, value);  // the rest of a header line
-  }
-  return flights;
-}
-
-std::int64_t whole_microseconds(const json& seconds) { return std::llround(double(seconds) * 1e6); }
-std::int64_t microseconds_of(const std::string& text) { return std::llround(std::stod(text) * 1e6); }
-
-std::string bits_of(double value) {
-  const float f = static_cast<float>(value);
-  std::uint32_t bits = 0;
-  std::memcpy(&bits, &f, sizeof bits);
-  return std::to_string(bits);
 }
 
 }  // namespace
@@ -68,22 +42,7 @@ TEST_CASE("the STM32F405 replay's host lines say what aloft replay --fifo --json
   INFO("stderr: " << run.err);
   REQUIRE(run.exit_code == 0);
   const json report = json::parse(read_file(report_path));
-  const auto flights = flights_of(read_file(lines));
-  REQUIRE(flights.size() == report["flights"].size());
-  REQUIRE_FALSE(flights.empty());
-  for (std::size_t i = 0; i < flights.size(); ++i) {
-    const json& f = report["flights"][i];
-    auto l = flights[i];
-    INFO("flight " << i);
-    CHECK(microseconds_of(l["release_s"]) == whole_microseconds(f["release_s"]));
-    CHECK(microseconds_of(l["landing_s"]) == whole_microseconds(f["landing_s"]));
-    CHECK(l["samples"] == std::to_string(int(f["samples"])));
-    CHECK(l["gaps"] == std::to_string(int(f["gaps"])));
-    CHECK(l["comparisons"] == std::to_string(int(f["comparisons"])));
-    CHECK(l["imu_position_from"] == f["imu_position_from"]);
-    CHECK(l["rms_da_rad_bits"] == bits_of(double(f["rms_da_deg"]) / 57.29577951308232));
-    CHECK(l["rms_rel_err_bits"] == bits_of(f["rms_rel_err"]));
-  }
+  aloft::test::check_flight_lines_match_report(aloft::test::flight_lines_of(read_file(lines)), report);
 }
 
 TEST_CASE(
