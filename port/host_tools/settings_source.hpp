@@ -1,7 +1,8 @@
-// What the replay firmwares' build-time generators (make_replay_source.cpp and
-// make_fifo_throw.cpp, both here) write of a body file's replay
-// settings: C++ definitions of PREFIX_inertia_kg_m2, PREFIX_sensor_to_body_wxyz,
-// PREFIX_imu_position_known and PREFIX_imu_position_m. Floats are written with 9
+// What the firmwares' build-time generators (make_replay_source.cpp, make_fifo_throw.cpp
+// and bake_flight_inertia.cpp, all here) write: of a body file's replay settings, C++
+// definitions of PREFIX_inertia_kg_m2, PREFIX_sensor_to_body_wxyz,
+// PREFIX_imu_position_known and PREFIX_imu_position_m; of an inertia tensor, its parts as
+// make_from_tensor derived them (aloft::InertiaTensorParts). Floats are written with 9
 // significant digits, which read back as the same float.
 #pragma once
 
@@ -18,6 +19,26 @@ inline std::string float_literal(float v) {
   std::string s = text;
   if (s.find_first_of(".e") == std::string::npos) s += ".0";
   return s + "f";
+}
+
+// `const aloft::InertiaTensorParts<float> NAME = {...};`
+inline void write_inertia_parts_source(std::FILE* out, const aloft::InertiaTensor<float>& inertia,
+                                       const char* name) {
+  const aloft::InertiaTensorParts<float> p = inertia.parts();
+  const auto list = [out](const float* v, int n) {
+    std::fprintf(out, "{");
+    for (int i = 0; i < n; ++i) std::fprintf(out, "%s%s", i > 0 ? ", " : "", float_literal(v[i]).c_str());
+    std::fprintf(out, "}");
+  };
+  std::fprintf(out, "const aloft::InertiaTensorParts<float> %s = {\n    ", name);
+  list(p.tensor, 9);
+  std::fprintf(out, ",\n    ");
+  list(p.inverse, 9);
+  std::fprintf(out, ",\n    ");
+  list(p.principal_moments, 3);
+  std::fprintf(out, ",\n    ");
+  list(p.principal_axes_wxyz, 4);
+  std::fprintf(out, "};\n");
 }
 
 inline void write_settings_source(std::FILE* out, const aloft::host::ReplaySettings& settings,

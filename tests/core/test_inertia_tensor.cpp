@@ -41,7 +41,27 @@ void check_principal_round_trip() {
   ALOFT_CHECK((a.tensor() * a.inverse() - Mat3<S>::Identity()).norm() < S(1e-5));
 }
 
+// A firmware bakes a tensor's parts at build time (port/host_tools/bake_flight_inertia.cpp):
+// from them the same tensor comes back, every number to the bit.
+template <typename S>
+void check_parts_round_trip() {
+  Mat3<S> t;
+  t << S(0.0031), S(-0.0004), S(0.0002), S(-0.0004), S(0.0094), S(0.0001), S(0.0002), S(0.0001), S(0.0108);
+  aloft::InertiaTensor<S> a;
+  ALOFT_REQUIRE(aloft::InertiaTensor<S>::make_from_tensor(t, a) == Status::ok);
+  const aloft::InertiaTensor<S> b = aloft::InertiaTensor<S>::from_accepted_parts(a.parts());
+  ALOFT_CHECK(b.tensor() == a.tensor());
+  ALOFT_CHECK(b.inverse() == a.inverse());
+  ALOFT_CHECK(b.principal_moments() == a.principal_moments());
+  ALOFT_CHECK(b.principal_axes().coeffs() == a.principal_axes().coeffs());
+}
+
 }  // namespace
+
+ALOFT_TEST_CASE("a tensor's parts, as a firmware bakes them, give the same tensor back", "[inertia]") {
+  check_parts_round_trip<double>();
+  check_parts_round_trip<float>();
+}
 
 ALOFT_TEST_CASE("the paper's GF cylinder from its geometry", "[inertia]") {
   check_paper_cylinder<double>();

@@ -9,9 +9,9 @@
 //   poll()   one bounded step: now and then one table register is read back (a register
 //            that lost its bits is rewritten, counted, and the call returns
 //            register_not_kept); INT_STATUS and FIFO_COUNT in one 3-byte read; then the
-//            whole packets present, at most kBurstPackets of them, in ONE burst, decoded
-//            by aloft/icm42688p_fifo.hpp and handed to the sink in order. The rest stays
-//            in the FIFO for the next poll (FIFO_RESUME_PARTIAL_RD).
+//            whole packets present, in bursts of at most kBurstPackets, decoded by
+//            aloft/icm42688p_fifo.hpp and handed to the sink in order. A part of a packet
+//            stays in the FIFO for the next poll (FIFO_RESUME_PARTIAL_RD).
 //
 // Faults and what poll() does (each is counted in DriverCounters):
 //   - overflow (INT_STATUS FIFO_FULL, or FIFO_COUNT at the 2 KiB capacity): the FIFO is
@@ -138,7 +138,10 @@ struct SampleSink {
 template <typename Scalar>
 class Icm42688pDriver {
  public:
-  static constexpr std::uint16_t kBurstPackets = 16;
+  // 8 packets (128 B of RAM): a poll takes every whole packet present, in as many bursts as
+  // that needs (the FIFO holds 128), and on a flight controller RAM is the scarcer
+  // resource (issue 29: the STM32F405 image's RAM bar).
+  static constexpr std::uint16_t kBurstPackets = 8;
   static constexpr std::uint16_t kBurstBytes = kBurstPackets * kPacket3Bytes;
 
   Icm42688pDriver(const ImuBus& bus, const DriverSettings& settings)
@@ -315,11 +318,18 @@ Status Icm42688pDriver<Scalar>::poll(const SampleSink<Scalar>& sink) {
     ++counters_.empty_reads;
     return status;
   }
-  const Status burst = read_burst(packets_in_fifo, sink);
+  std::uint16_t left = packets_in_fifo;
+  Status burst = read_burst(left, sink);
+  // More than a burst holds (a poll loop slower than the rate): the rest in further bursts,
+  // unless one was resynchronised (the FIFO flushed, data_lost_ set).
+  while (burst == Status::ok && left > kBurstPackets && !data_lost_) {
+    left = static_cast<std::uint16_t>(left - kBurstPackets);
+    burst = read_burst(left, sink);
+  }
   return burst != Status::ok ? burst : status;
 }
 
-// One burst of whole packets, decoded in order.
+// One burst of whole packets, the oldest of packets_in_fifo, decoded in order.
 template <typename Scalar>
 Status Icm42688pDriver<Scalar>::read_burst(std::uint16_t packets_in_fifo, const SampleSink<Scalar>& sink) {
   const std::uint16_t n = packets_in_fifo < kBurstPackets ? packets_in_fifo : kBurstPackets;

@@ -13,6 +13,17 @@
 
 namespace aloft {
 
+// What make_from_tensor derives from a tensor, as plain numbers a build step can bake into
+// a firmware image (port/host_tools/bake_flight_inertia.cpp), so that the image carries
+// neither the eigen decomposition nor the tensor's checks, which run once.
+template <typename Scalar>
+struct InertiaTensorParts {
+  Scalar tensor[9];               // column-major
+  Scalar inverse[9];              // column-major
+  Scalar principal_moments[3];    // ascending
+  Scalar principal_axes_wxyz[4];  // unit quaternion, principal axes into body axes
+};
+
 template <typename Scalar>
 class InertiaTensor {
  public:
@@ -56,6 +67,32 @@ class InertiaTensor {
     out.principal_moments_ = moments;
     out.principal_axes_ = Quat<Scalar>(axes).normalized();
     return Status::ok;
+  }
+
+  // The parts of a tensor that make_from_tensor accepted, as it derived them.
+  InertiaTensorParts<Scalar> parts() const {
+    InertiaTensorParts<Scalar> p;
+    for (int i = 0; i < 9; ++i) {
+      p.tensor[i] = tensor_.data()[i];
+      p.inverse[i] = inverse_.data()[i];
+    }
+    for (int i = 0; i < 3; ++i) p.principal_moments[i] = principal_moments_(i);
+    const Scalar q[4] = {principal_axes_.w(), principal_axes_.x(), principal_axes_.y(), principal_axes_.z()};
+    for (int i = 0; i < 4; ++i) p.principal_axes_wxyz[i] = q[i];
+    return p;
+  }
+
+  // The same tensor again from its parts, not checked again: only from parts() of a tensor
+  // that make_from_tensor accepted (a firmware's build step does that on the build machine
+  // and stops the build when the tensor is rejected).
+  static InertiaTensor from_accepted_parts(const InertiaTensorParts<Scalar>& p) {
+    InertiaTensor out;
+    out.tensor_ = Eigen::Map<const Mat3<Scalar>>(p.tensor);
+    out.inverse_ = Eigen::Map<const Mat3<Scalar>>(p.inverse);
+    out.principal_moments_ = Eigen::Map<const Vec3<Scalar>>(p.principal_moments);
+    const Scalar* q = p.principal_axes_wxyz;
+    out.principal_axes_ = Quat<Scalar>(q[0], q[1], q[2], q[3]);
+    return out;
   }
 
   // From principal moments (any order) and the rotation mapping the principal frame

@@ -1,6 +1,7 @@
 // What the STM32F405 firmware checks and how: the body's inertia tensor, K, and the
 // onboard pipeline's settings. A maker sets the tensor to their own body's (from its body
-// file, SPEC §2); the one here is the practice brick (data/practice/case00/body.json).
+// file, SPEC §2); the one here is the practice brick (data/practice/case00/body.json). The
+// build checks and decomposes it (flight_inertia below).
 #pragma once
 
 #include "aloft/onboard_pipeline.hpp"
@@ -21,8 +22,12 @@ using Pipeline = aloft::OnboardPipeline<float, live_simulations>;
 // The tensor is symmetric, so the array reads the same in row or column order.
 inline aloft::Mat3<float> body_tensor() { return Eigen::Map<const aloft::Mat3<float>>(&inertia_kg_m2[0][0]); }
 
-inline aloft::Status make_inertia(aloft::InertiaTensor<float>& inertia) {
-  return aloft::InertiaTensor<float>::make_from_tensor(body_tensor(), inertia);
+// The tensor as make_from_tensor checks and decomposes it, done at build time on the build
+// machine (port/host_tools/bake_flight_inertia.cpp writes flight_inertia.cpp in the build
+// folder; a rejected tensor stops the build), so the image carries no eigen solver.
+extern const aloft::InertiaTensorParts<float> flight_inertia_parts;
+inline aloft::InertiaTensor<float> flight_inertia() {
+  return aloft::InertiaTensor<float>::from_accepted_parts(flight_inertia_parts);
 }
 
 inline aloft::OnboardPipelineSettings<float> pipeline_settings() {

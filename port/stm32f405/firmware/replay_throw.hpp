@@ -7,6 +7,7 @@
 
 #include <cstdint>
 
+#include "aloft/inertia_tensor.hpp"
 #include "icm42688p_packet_encoder.hpp"
 
 namespace aloft_stm32f405 {
@@ -15,7 +16,9 @@ constexpr std::uint32_t replay_odr_hz = 1000;  // the driver's default rate, as 
 
 extern const aloft_test::ChipSample replay_chip_samples[];  // raw counts, one per period
 extern const std::uint32_t replay_chip_sample_count;
-extern const float replay_inertia_kg_m2[3][3];     // body axes, about the centre of mass
+extern const float replay_inertia_kg_m2[3][3];  // body axes, about the centre of mass
+// That tensor as the host's replay decomposes it (aloft::host::replay_inertia).
+extern const aloft::InertiaTensorParts<float> replay_inertia_parts;
 extern const float replay_sensor_to_body_wxyz[4];  // imu.rotation
 extern const bool replay_imu_position_known;       // imu.position given
 extern const float replay_imu_position_m[3];

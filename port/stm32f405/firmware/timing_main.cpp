@@ -114,12 +114,7 @@ int main() {
   }
   clock_ticks = false;
 #if !defined(ALOFT_STM32F405_TIMING_BASELINE)
-  aloft::InertiaTensor<float> inertia;
-  if (aloft_stm32f405::make_inertia(inertia) != aloft::Status::ok) {
-    out.text("inertia tensor rejected").line();
-    return 1;
-  }
-  pipeline.emplace(inertia, aloft_stm32f405::pipeline_settings());
+  pipeline.emplace(aloft_stm32f405::flight_inertia(), aloft_stm32f405::pipeline_settings());
 #endif
   std::uint64_t start = 0;
   for (unsigned i = 0; i < samples; ++i) {
