@@ -152,13 +152,9 @@ TEST_CASE("SPEC §4's classes a gyro cannot split, and no sensor effect for moti
         V{Effect::sensor_misalignment, Effect::inertia_axes});
   CHECK(always_equivalent(Effect::clock_drift, true) == V{Effect::clock_drift, Effect::gyro_scale});
   CHECK(always_equivalent(Effect::inertia_axes, false) == V{Effect::inertia_axes});
-  // Every registered effect is a candidate for IMU input but those not yet tried
-  // (internal_momentum: effects/internal_momentum.cpp).
-  std::size_t tried = 0;
-  for (Effect e : registered_effects()) tried += describe(e).candidate;
-  CHECK(candidate_effects(true).size() == tried);
-  CHECK(tried + 1 == registered_effects().size());
-  for (Effect e : candidate_effects(true)) CHECK(describe(e).candidate);
+  // Every registered effect is a candidate for IMU input, the rotor too.
+  CHECK(candidate_effects(true) == registered_effects());
+  CHECK(describe(Effect::internal_momentum).named_only_when_told_apart);
   for (Effect e : candidate_effects(false)) CHECK_FALSE(is_sensor_effect(e));
   CHECK(effect_penalty_count(Effect::impulse) == effect_parameter_count(Effect::impulse) + 1);
 }

@@ -26,8 +26,8 @@ int effect_penalty_count(Effect effect);
 // Gyro bias, scale, misalignment and clock drift describe the sensor, not the motion.
 bool is_sensor_effect(Effect effect);
 
-// The candidate effects for IMU input (every effect a descriptor marks `candidate`) or
-// motion capture (no sensor effects), in registry order.
+// The candidate effects for IMU input (every registered effect) or motion capture (no sensor effects), in
+// registry order.
 std::vector<Effect> candidate_effects(bool gyro_input);
 
 // Effects that gyro data cannot tell apart from `effect` whatever the flight, including

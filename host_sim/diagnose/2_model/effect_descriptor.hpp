@@ -103,10 +103,10 @@ struct EffectDescriptor {
   bool shared_by_flights = true;
   // Not started at zero but from a grid (nullptr: zero, or the caller's start).
   const StartGrid* start_grid = nullptr;
-  // Tried as a candidate (single flights, the stepwise search, sessions). false: the effect
-  // is described (model, parameters, report) but not yet tried, because trying it took
-  // verdicts from other effects (docs/diagnose.md, "A rotor inside").
-  bool candidate = true;
+  // Named only where the data tell it from its look-alikes (4_judge/told_apart.hpp): it
+  // beats every other candidate beyond a tie, and in a session the flights' own fits of it
+  // agree. For an effect whose few free parameters mimic several others within a flight.
+  bool named_only_when_told_apart = false;
   // Effects a gyro alone cannot tell from this one whatever the flight (SPEC §4), padded
   // with `none`.
   std::array<Effect, 2> gyro_equivalents{};

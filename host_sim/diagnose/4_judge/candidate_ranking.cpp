@@ -8,6 +8,7 @@
 #include "aloft/deviation.hpp"
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/4_judge/score_spread.hpp"
+#include "diagnose/4_judge/told_apart.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -239,6 +240,31 @@ std::size_t fixed_order_headline(const std::vector<Candidate>& all, std::size_t 
   return head;
 }
 
+// The best eligible candidate of an effect other than all[head]'s, or -1.
+int best_other(const std::vector<Candidate>& all, std::size_t head) {
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (eligible(all[i]) && all[i].effect != all[head].effect) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+// all[best], or the candidate that heads in its place when all[best] is an effect named
+// only when told apart and is not (told_apart.hpp; -1: none does). `listed`: all[best]
+// when it is to be listed as indistinguishable from the one in its place, else -1.
+// Needs measure_against(best).
+int told_apart_best(std::vector<Candidate>& all, std::size_t best, const RankingContext& context,
+                    int& listed) {
+  listed = -1;
+  if (!describe(all[best].effect).named_only_when_told_apart) return static_cast<int>(best);
+  const int rival = best_other(all, best);
+  const NotToldApart not_told = told_apart(
+      all[best], rival >= 0 ? &all[static_cast<std::size_t>(rival)] : nullptr, context.own_analyses);
+  if (not_told.why.empty()) return static_cast<int>(best);
+  all[best].note = not_told.why;
+  if (not_told.indistinguishable) listed = static_cast<int>(best);
+  return rival;
+}
+
 // The class's members name each other; a tie outside the class and the headline name
 // each other.
 void mark_indistinguishable(std::vector<Candidate>& all, const StepRanking& out) {
@@ -271,12 +297,19 @@ StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context
     if (out.best < 0 && eligible(all[i])) out.best = static_cast<int>(i);
   }
   if (out.best < 0 || out.reference < 0) return out;
-  const std::size_t best = static_cast<std::size_t>(out.best);
-  out.beats_reference = all[best].score < all[static_cast<std::size_t>(out.reference)].score - margin;
   std::vector<std::vector<double>> chunks;
   for (const Candidate& c : all)
     chunks.push_back(chunk_chi_squares(c, context.flights, context.inverse_sigma));
-  measure_against(all, best, chunks, dispersion);
+  measure_against(all, static_cast<std::size_t>(out.best), chunks, dispersion);
+  int listed = -1;
+  const int in_place = told_apart_best(all, static_cast<std::size_t>(out.best), context, listed);
+  if (in_place < 0) {
+    out.best = -1;
+    return out;
+  }
+  const std::size_t best = static_cast<std::size_t>(in_place);
+  if (static_cast<int>(best) != out.best) measure_against(all, best, chunks, dispersion);
+  out.beats_reference = all[best].score < all[static_cast<std::size_t>(out.reference)].score - margin;
   out.equivalent = class_of(all, all[best], context, margin, dispersion);
   const std::size_t head = fixed_order_headline(all, best, context.gyro_input);
   if (head != best) {
@@ -285,8 +318,9 @@ StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context
   }
   out.best = static_cast<int>(head);
   for (const Candidate& c : all) {
+    const bool fits_as_well = static_cast<int>(&c - all.data()) == listed;
     if (eligible(c) && !contains(out.equivalent, c.effect) &&
-        scores_tie(c.score_behind, c.score_behind_spread))
+        (scores_tie(c.score_behind, c.score_behind_spread) || fits_as_well))
       out.tied.push_back(c.effect);
   }
   std::sort(out.tied.begin(), out.tied.end());
@@ -297,7 +331,8 @@ StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context
 void rank_candidates(Analysis& analysis, bool gyro_input, const std::vector<const Flight*>& flights,
                      const std::vector<Eigen::Vector3d>& inverse_sigma, double mean_speed,
                      double duration_s) {
-  rank_candidates(analysis, RankingContext{gyro_input, flights, inverse_sigma, mean_speed, duration_s});
+  rank_candidates(
+      analysis, RankingContext{gyro_input, flights, inverse_sigma, mean_speed, duration_s, nullptr, 0.0, {}});
 }
 
 void rank_candidates(Analysis& analysis, const RankingContext& context) {

@@ -29,6 +29,8 @@ struct RankingContext {
   double duration_s = 0.0;                     // of the data that informs shared parameters
   const NominalInertia* nominal = nullptr;     // the stepwise selection's parameters need it
   double resolution = 0.0;                     // rad/s (noise_floor.hpp); 0: unknown
+  // A session's flights, each one's own analysis (told_apart.hpp); empty for one flight.
+  std::vector<const Analysis*> own_analyses;
 };
 
 // One step of the ranking: scores every candidate of `all` against the one marked
@@ -37,7 +39,9 @@ struct RankingContext {
 // the data cannot tell from it (score within the margin, predictions within 0.3 sigma).
 // Ties (confidence.hpp): members of that class whose scores tie are named in the
 // registry's order, so `best` is the first of them in the registry, not the one whose fit
-// ended a bit lower; candidates outside the class that tie with it are `tied`.
+// ended a bit lower; candidates outside the class that tie with it are `tied`. An effect
+// named only when told apart (told_apart.hpp) and not told apart gives way to the best
+// candidate of another effect (its note says why).
 // Fills every evaluated candidate's score_spread, score_behind and score_behind_spread.
 struct StepRanking {
   double dispersion = 1.0;

@@ -33,6 +33,16 @@ void note_ties(Verdict& v, const Candidate& chosen, const std::vector<Effect>& t
     if (other == candidates.end()) continue;
     v.confident = false;
     char text[400];
+    if (!scores_tie(other->score_behind, other->score_behind_spread)) {
+      // Listed although it fits better: an effect not named from this data (told_apart.hpp).
+      std::snprintf(text, sizeof text,
+                    "%s and %s are indistinguishable here: %s's held-out score is %.1f better (spread "
+                    "%.1f), but ",
+                    effect_name(chosen.effect), effect_name(e), effect_name(e), -other->score_behind,
+                    other->score_behind_spread);
+      v.could_not_judge.push_back(text + other->note);
+      continue;
+    }
     std::snprintf(text, sizeof text,
                   "%s and %s are indistinguishable here: their held-out scores differ by %.1f, within "
                   "%.0f x the spread of that difference (%.1f) or %.1f",

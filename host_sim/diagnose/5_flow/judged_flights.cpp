@@ -54,7 +54,8 @@ RankingContext JudgedFlights::ranking_context(const NominalInertia& nominal, dou
                         speed_sum / static_cast<double>(flights.size()),
                         duration_sum,
                         &nominal,
-                        resolution};
+                        resolution,
+                        {}};  // a session sets its flights' own analyses
 }
 
 }  // namespace aloft::host::diagnose

@@ -153,8 +153,9 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
   // The coarsest resolution of the pooled flights (those left out have none).
   double resolution = 0.0;
   for (const FlightDiagnosis& d : session.flights) resolution = std::max(resolution, d.noise.resolution);
-  judge_candidates(analysis, pool.judged.ranking_context(nominal, resolution),
-                   FlightsLeftOut(pool.judged, pool.own, nominal, none_all, workers));
+  RankingContext context = pool.judged.ranking_context(nominal, resolution);
+  context.own_analyses = pool.own;
+  judge_candidates(analysis, context, FlightsLeftOut(pool.judged, pool.own, nominal, none_all, workers));
   note_disagreeing_flights(analysis, pool.judged.flights, pool.own);
   note_between_flight_scatter(analysis, pool.own);
   add_flip_periods(session, pool, none_all, flights, nominal);

@@ -32,6 +32,10 @@ std::vector<SessionCase> rotor_session_cases(RotorSeeds seeds, int per_kind, int
     add("moments", "inertia_moments", i % 2 == 0 ? "cylinder" : "disc", 0.0, i);
     add("noise", "none", bodies[static_cast<std::size_t>(i + 1) % bodies.size()], 20.0, i);
   }
+  // Added after the others, so that their seeds stay those measured before.
+  for (int i = 0; i < per_kind; ++i) {
+    add("bias", "gyro_bias", bodies[static_cast<std::size_t>(i + 3) % bodies.size()], 0.0, i);
+  }
   return out;
 }
 

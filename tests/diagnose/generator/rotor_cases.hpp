@@ -12,7 +12,9 @@
 //   moments      wrong moments on the two bodies of revolution (cylinder, disc), where an
 //                axial moment change is, flight by flight, a rotor along the axis;
 //   noise        noise alone behind a 1 kHz gyro's 20 Hz low-pass (the flight the
-//                previous rotor named `impulse`).
+//                previous rotor named `impulse`);
+//   bias         a gyro bias, which a rotor h = I·b mimics to first order (listed after
+//                the others, whose seeds stay as they were).
 #pragma once
 
 #include <cstdint>

@@ -8,8 +8,7 @@
 // with |w| (wrong moments with |w|²); and on a body of revolution, h along the axis is,
 // within one flight, exactly an axial moment changed by h / w_axis
 // (4_judge/momentum_moment_equivalence.hpp): flights thrown at different axial rates part
-// the two, so a session is where a rotor can be named. Registered but not yet tried by
-// the diagnosis (`candidate`, below).
+// the two, so a session is where a rotor can be named (`named_only_when_told_apart`).
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/printf_text.hpp"
 
@@ -45,10 +44,11 @@ constexpr EffectDescriptor internal_momentum_effect = [] {
   EffectDescriptor d;
   d.name = "internal_momentum";
   d.parameter_count = 3;
-  // Not yet a candidate: tried, it took verdicts that are not a rotor's (docs/diagnose.md,
-  // "A rotor inside": the withheld imu_impulse_4, three practice2 compound flights whose
-  // gyro bias it stood in for, and a step of the first real racquet session).
-  d.candidate = false;
+  // Within a flight h mimics an impulse, a gyro bias (h = I·b to first order) and, along
+  // a body of revolution's axis, an axial moment: tried as an ordinary candidate it took
+  // the withheld imu_impulse_4, three practice2 compound flights and a step of the first
+  // real racquet session (docs/diagnose.md, "A rotor inside").
+  d.named_only_when_told_apart = true;
   d.hooks = {tolerance, apply, parameters, too_small, no_objection, no_physics_objection};
   return d;
 }();
