@@ -1,6 +1,7 @@
 // diagnose/4_judge: what a session's verdict says of its flights, moved out of the flow
 // (issue 30): the mean flip-period errors (flip_period_summary), the note on flights that
-// disagree with the pool (flight_agreement), and the onsets (onset).
+// disagree with the pool (flight_agreement), and the onsets (onset); and when a rotor is
+// told apart from its look-alikes (told_apart).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "diagnose/4_judge/flight_agreement.hpp"
 #include "diagnose/4_judge/flip_period_summary.hpp"
 #include "diagnose/4_judge/onset.hpp"
+#include "diagnose/4_judge/told_apart.hpp"
 
 using namespace aloft::host::diagnose;
 
@@ -172,5 +174,46 @@ TEST_CASE("between-flight scatter: flights that share one value read about 1, fl
     Analysis pooled = pooled_verdict(Effect::gyro_scale, 0.35);
     note_between_flight_scatter(pooled, pointers);
     CHECK(pooled.notes.size() == (scale > 1.0 ? 1u : 0u));
+  }
+}
+
+TEST_CASE("a rotor is told apart only in a session whose flights agree on it and where it wins clearly",
+          "[session][rotor]") {
+  Candidate rotor, rival;
+  rotor.effect = Effect::internal_momentum;
+  rival.effect = Effect::gyro_bias;
+  SECTION("one flight: never, listed beside the other effect") {
+    rival.score_behind = 500.0;  // far behind
+    rival.score_behind_spread = 10.0;
+    const NotToldApart one = told_apart(rotor, &rival, true);
+    CHECK_FALSE(one.why.empty());
+    CHECK(one.indistinguishable);
+  }
+  SECTION("a session: a tie is not told apart, a clear win is") {
+    rival.score_behind = 30.0;
+    rival.score_behind_spread = 20.0;  // within 2 spreads
+    CHECK(told_apart(rotor, &rival, false).indistinguishable);
+    rival.score_behind = 50.0;  // beyond 2 spreads
+    CHECK(told_apart(rotor, &rival, false).why.empty());
+    CHECK(told_apart(rotor, nullptr, false).why.empty());
+  }
+  SECTION("a session whose flights scatter beyond their errors rules it out") {
+    // Two of the rotor's three parameters (own_fit's theta), offsets of about one standard
+    // error (chi-square per dof 0.735), then of ten (73.5).
+    const double offsets[5][2] = {{0.8, -1.1}, {-0.6, 0.4}, {1.2, 0.9}, {-1.0, -0.3}, {-0.4, 0.1}};
+    for (double scale : {1.0, 10.0}) {
+      std::vector<Analysis> own;
+      for (const auto& o : offsets) {
+        own.push_back(own_fit(Effect::internal_momentum,
+                              Eigen::Vector2d(0.1 + 0.01 * scale * o[0], 0.2 + 0.01 * scale * o[1]), 0.01,
+                              0.5));
+      }
+      std::vector<const Analysis*> pointers;
+      for (const Analysis& a : own) pointers.push_back(&a);
+      CHECK(flights_disagree_on(Effect::internal_momentum, pointers).empty() == (scale == 1.0));
+      // Fewer than three flights: no scatter, nothing ruled out.
+      pointers.resize(2);
+      CHECK(flights_disagree_on(Effect::internal_momentum, pointers).empty());
+    }
   }
 }

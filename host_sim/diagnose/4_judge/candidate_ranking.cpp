@@ -185,6 +185,13 @@ void score_candidates(std::vector<Candidate>& all, const Candidate& reference, c
           "pin its parameters";
     }
     judge_physics(c);
+    if (describe(c.effect).named_only_when_told_apart && !context.own_analyses.empty()) {
+      const std::string why = flights_disagree_on(c.effect, context.own_analyses);
+      if (!why.empty()) {
+        c.physical = false;
+        c.note = why;
+      }
+    }
   }
 }
 
@@ -258,7 +265,7 @@ int told_apart_best(std::vector<Candidate>& all, std::size_t best, const Ranking
   if (!describe(all[best].effect).named_only_when_told_apart) return static_cast<int>(best);
   const int rival = best_other(all, best);
   const NotToldApart not_told = told_apart(
-      all[best], rival >= 0 ? &all[static_cast<std::size_t>(rival)] : nullptr, context.own_analyses);
+      all[best], rival >= 0 ? &all[static_cast<std::size_t>(rival)] : nullptr, context.own_analyses.empty());
   if (not_told.why.empty()) return static_cast<int>(best);
   all[best].note = not_told.why;
   if (not_told.indistinguishable) listed = static_cast<int>(best);

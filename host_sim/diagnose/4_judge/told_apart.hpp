@@ -8,9 +8,9 @@
 // What tells it apart:
 // - in a session, h is one constant of the object, so the flights' own fits of it agree
 //   within their errors (between_flight_scatter.hpp: chi-square per degree of freedom at
-//   most kFlightsDisagree). An axial moment change mimics h_a = dI_a w_a, which differs
-//   from flight to flight with the axial rate; a knock, a bias or the racquet's own
-//   motion has no one h either;
+//   most kFlightsDisagree); where they do not, the ranking rules it out. An axial moment
+//   change mimics h_a = dI_a w_a, which differs from flight to flight with the axial rate;
+//   a knock, a bias or the racquet's own motion has no one h either;
 // - and there its held-out score beats the best candidate of every other effect beyond a
 //   tie (confidence.hpp, scores_tie).
 // Within one flight nothing does: the other effect heads the step, and the rotor, where it
@@ -25,17 +25,19 @@
 
 namespace aloft::host::diagnose {
 
+// Why a session rules `effect` out: the flights' own fits of it (`own`: each flight's own
+// analysis) scatter beyond kFlightsDisagree. Empty: they agree, or fewer than three
+// flights have a fit of it.
+std::string flights_disagree_on(Effect effect, const std::vector<const Analysis*>& own);
+
 struct NotToldApart {
-  std::string why;  // empty: told apart
-  // Listed beside the candidate that heads in its place when it fits as well or better
-  // (one flight, or a tie); not when the flights disagree on it.
-  bool indistinguishable = false;
+  std::string why;                 // empty: told apart
+  bool indistinguishable = false;  // listed beside the candidate that heads in its place
 };
 
 // Whether `head` (a candidate of such an effect, every candidate's score_behind measured
 // against it) is told apart from `rival` (the best eligible candidate of another effect,
-// null if none), given `own`: the session's flights' own analyses (empty for one flight).
-NotToldApart told_apart(const Candidate& head, const Candidate* rival,
-                        const std::vector<const Analysis*>& own);
+// null if none) on the data of one flight (`one_flight`) or of a session.
+NotToldApart told_apart(const Candidate& head, const Candidate* rival, bool one_flight);
 
 }  // namespace aloft::host::diagnose
