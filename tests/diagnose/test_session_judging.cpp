@@ -148,28 +148,33 @@ Analysis pooled_verdict(Effect effect, double shrink) {
   return a;
 }
 
+// Five flights' own fits of `effect` with shrink 0.44, each theta known to 0.01 and offset
+// from one value by about `scale` standard errors: the offsets have mean 0 and squares
+// summing to 5.88 over (5 - 1) x 2 degrees of freedom, a chi-square per dof of 0.735 times
+// scale squared.
+std::vector<Analysis> five_flights(Effect effect, double scale) {
+  const double offsets[5][2] = {{0.8, -1.1}, {-0.6, 0.4}, {1.2, 0.9}, {-1.0, -0.3}, {-0.4, 0.1}};
+  std::vector<Analysis> own;
+  for (const auto& o : offsets) {
+    own.push_back(
+        own_fit(effect, Eigen::Vector2d(0.1 + 0.01 * scale * o[0], 0.2 + 0.01 * scale * o[1]), 0.01, 0.44));
+  }
+  return own;
+}
+
 }  // namespace
 
 TEST_CASE("between-flight scatter: flights that share one value read about 1, flights that differ far more",
           "[session]") {
-  // Five flights, each theta known to 0.01: offsets of about one standard error (a shared
-  // value), then of ten.
-  const double offsets[5][2] = {{0.8, -1.1}, {-0.6, 0.4}, {1.2, 0.9}, {-1.0, -0.3}, {-0.4, 0.1}};
+  // Offsets of about one standard error (a shared value), then of ten.
   for (double scale : {1.0, 10.0}) {
-    std::vector<Analysis> own;
-    for (const auto& o : offsets) {
-      own.push_back(own_fit(Effect::gyro_scale,
-                            Eigen::Vector2d(0.1 + 0.01 * scale * o[0], 0.2 + 0.01 * scale * o[1]), 0.01,
-                            0.44));
-    }
+    const std::vector<Analysis> own = five_flights(Effect::gyro_scale, scale);
     std::vector<const Analysis*> pointers;
     for (const Analysis& a : own) pointers.push_back(&a);
     const auto scatter = between_flight_scatter(Effect::gyro_scale, pointers);
     REQUIRE(scatter);
     CHECK(scatter->flights == 5);
     CHECK(scatter->median_own_shrink == Approx(0.44));
-    // The offsets have mean 0 and squares summing to 5.88 over (5 - 1) x 2 degrees of
-    // freedom: 0.735, times the scale squared.
     CHECK(scatter->chi_square_per_dof == Approx(0.735 * scale * scale));
     Analysis pooled = pooled_verdict(Effect::gyro_scale, 0.35);
     note_between_flight_scatter(pooled, pointers);
@@ -198,16 +203,9 @@ TEST_CASE("a rotor is told apart only in a session whose flights agree on it and
     CHECK(told_apart(rotor, nullptr, false).why.empty());
   }
   SECTION("a session whose flights scatter beyond their errors rules it out") {
-    // Two of the rotor's three parameters (own_fit's theta), offsets of about one standard
-    // error (chi-square per dof 0.735), then of ten (73.5).
-    const double offsets[5][2] = {{0.8, -1.1}, {-0.6, 0.4}, {1.2, 0.9}, {-1.0, -0.3}, {-0.4, 0.1}};
+    // Two parameters stand for the rotor's three: chi-square per dof 0.735, then 73.5.
     for (double scale : {1.0, 10.0}) {
-      std::vector<Analysis> own;
-      for (const auto& o : offsets) {
-        own.push_back(own_fit(Effect::internal_momentum,
-                              Eigen::Vector2d(0.1 + 0.01 * scale * o[0], 0.2 + 0.01 * scale * o[1]), 0.01,
-                              0.5));
-      }
+      const std::vector<Analysis> own = five_flights(Effect::internal_momentum, scale);
       std::vector<const Analysis*> pointers;
       for (const Analysis& a : own) pointers.push_back(&a);
       CHECK(flights_disagree_on(Effect::internal_momentum, pointers).empty() == (scale == 1.0));
