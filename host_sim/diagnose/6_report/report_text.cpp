@@ -40,10 +40,12 @@ std::string analysis_summary(const Analysis& a) {
     for (std::size_t i = 1; i < v.equivalent.size(); ++i) out << " " << effect_name(v.equivalent[i]);
     out << ")";
   }
+  // A tie of scores, or an effect that fits better but is named only where the data tell
+  // it apart (4_judge/told_apart.hpp): could_not_judge says which, with the numbers.
   if (!v.indistinguishable.empty()) {
-    out << " (tied with";
+    out << " (not told apart from";
     for (Effect e : v.indistinguishable) out << " " << effect_name(e);
-    out << ": the data cannot choose)";
+    out << " here: see could not judge)";
   }
   if (!v.effects.empty()) {
     out << ": " << params_text(v.effects.front().effect, v.effects.front().params) << "\n";
