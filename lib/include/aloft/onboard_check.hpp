@@ -110,8 +110,16 @@ class OnboardCheck {
   std::uint32_t airborne_samples() const { return samples_; }
   std::uint32_t seeds_started() const { return seeds_started_; }
   int live_simulations() const { return live_; }
-  // Over every comparison of every simulation, live or retired.
-  const DeviationStats<Scalar>& overall() const { return overall_; }
+  // Over every comparison of every simulation, live or retired: the retired ones' figures
+  // were merged as they retired, the live ones' are merged here, so no sample pays for
+  // an overall running mean besides the per-seed one.
+  ALOFT_COLD DeviationStats<Scalar> overall() const {
+    DeviationStats<Scalar> all = retired_;
+    for (const Slot& slot : slots_) {
+      if (slot.live) all.merge(slot.stats);
+    }
+    return all;
+  }
   // Slot i in [0, K): the i-th newest seed still held (live, or the last ones retired).
   const SeedReport<Scalar>& seed(int i) const { return slots_[slot_of_newest(i)]; }
   // Seed n (< kept_first_seeds) as it stands if still held, else as it stood when it
@@ -142,8 +150,6 @@ class OnboardCheck {
     const Scalar norm_sq = m.squaredNorm();
     const bool has_rate = norm_sq > Scalar(0);  // a zero rate has no direction to compare
     const Scalar inverse_norm = has_rate ? Scalar(1) / std::sqrt(norm_sq) : Scalar(0);
-    // A local copy, so that the compiler keeps it in registers across the slots.
-    DeviationStats<Scalar> overall = overall_;
     for (int i = 0; i < K; ++i) {
       Slot& slot = slots_[i];
       if (!slot.live) continue;
@@ -156,9 +162,7 @@ class OnboardCheck {
       const Scalar dz = w.z - measured.z;
       const Scalar rel = std::sqrt(dx * dx + dy * dy + dz * dz) * inverse_norm;
       slot.stats.add_values(da, rel);
-      overall.add_values(da, rel);
     }
-    overall_ = overall;
     if (samples_ % seed_every_ == 0) start_seed(measured);
     ++samples_;
   }
@@ -167,13 +171,19 @@ class OnboardCheck {
     newest_ = (newest_ + 1) % K;  // the oldest slot, once all K are in use
     Slot& slot = slots_[newest_];
     if (!slot.live) ++live_;
-    if (slot.live && slot.seed_number < kept_first_seeds)
-      retired_first_[slot.seed_number] = summary(slot.stats);
+    if (slot.live) retire(slot);
     slot.seed_number = seeds_started_++;
     slot.seeded_at_sample = samples_;
     slot.live = true;
     slot.stats.reset();
     slot.omega = measured;
+  }
+
+  // The slot's seed gives way to a new one: its figures join the overall ones, and the
+  // flight's first seeds are kept for the record.
+  void retire(const Slot& slot) {
+    retired_.merge(slot.stats);
+    if (slot.seed_number < kept_first_seeds) retired_first_[slot.seed_number] = summary(slot.stats);
   }
 
   int slot_of_newest(int i) const { return ((newest_ - i) % K + K) % K; }
@@ -187,7 +197,7 @@ class OnboardCheck {
   FlightDetector<Scalar> detector_;
   Slot slots_[K] = {};
   SeedSummary<Scalar> retired_first_[kept_first_seeds] = {};
-  DeviationStats<Scalar> overall_;
+  DeviationStats<Scalar> retired_;  // over the comparisons of every retired seed
   std::uint32_t samples_ = 0;
   std::uint32_t seeds_started_ = 0;
   int newest_ = K - 1;
