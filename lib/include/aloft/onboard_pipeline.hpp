@@ -266,7 +266,8 @@ class OnboardPipeline {
     const std::uint32_t h = clock_.half_span();
     BodyKinematics<Scalar> k;
     if (!history_.kinematics(i, h, k) || !detector_.torque_free_remembered(i, h, k)) return;
-    if (lever_arm_.add(LeverArmTerms<Scalar>(k))) r_flight_ = lever_arm_.flight_r();
+    const bool due = lever_arm_.add(LeverArmTerms<Scalar>(k));
+    if (due || (on_probation_ && lever_arm_.taken_over())) r_flight_ = lever_arm_.flight_r();
   }
 
   // The simulations alive before a long gap cannot be carried across it.
