@@ -192,7 +192,8 @@ class OnboardCheck {
     return w;
   }
 
-  void start_seed(const LaneVec3<Scalar>& measured) {
+  // Out of line (one sample in seed_every): its code is kept out of the per-sample loop.
+  ALOFT_COLD void start_seed(const LaneVec3<Scalar>& measured) {
     newest_ = (newest_ + 1) % K;  // the oldest slot, once all K are in use
     Slot& slot = slots_[newest_];
     if (!slot.live) ++live_;
