@@ -48,7 +48,8 @@ struct LeverArmTerms {
     const Mat3<Scalar> m = lever_arm_matrix(k.w, k.w_dot);
     // Column i of K dotted with column j, summed as x0 + (x1 + x2) as Eigen sums m^T m.
     for (int i = 0; i < 3; ++i) {
-      for (int j = i; j < 3; ++j) ktk.upper(i, j) = m(0, i) * m(0, j) + (m(1, i) * m(1, j) + m(2, i) * m(2, j));
+      for (int j = i; j < 3; ++j)
+        ktk.upper(i, j) = m(0, i) * m(0, j) + (m(1, i) * m(1, j) + m(2, i) * m(2, j));
     }
     kta = m.transpose() * k.a;
     ata = k.a.squaredNorm();
@@ -77,7 +78,8 @@ class LeverArmFit {
     const Scalar w = static_cast<Scalar>(n);
     for (int i = 0; i < 3; ++i) {
       const Scalar w0 = w * k_mean(0, i), w1 = w * k_mean(1, i), w2 = w * k_mean(2, i);
-      for (int j = i; j < 3; ++j) ktk_.upper(i, j) += w0 * k_mean(0, j) + (w1 * k_mean(1, j) + w2 * k_mean(2, j));
+      for (int j = i; j < 3; ++j)
+        ktk_.upper(i, j) += w0 * k_mean(0, j) + (w1 * k_mean(1, j) + w2 * k_mean(2, j));
       kta_(i) += w0 * a_mean(0) + (w1 * a_mean(1) + w2 * a_mean(2));
     }
     ata_ += w * a_mean.squaredNorm();

@@ -112,8 +112,10 @@ template <typename T>
 inline LaneVec3<T> principal_rate_rk4_half_steps(const EulerCoefficients<T>& half_c, const LaneVec3<T>& w0) {
   const T two(LaneScalar<T>(2));
   const LaneVec3<T> k1 = principal_angular_acceleration(half_c, w0);
-  const LaneVec3<T> k2 = principal_angular_acceleration(half_c, LaneVec3<T>{w0.x + k1.x, w0.y + k1.y, w0.z + k1.z});
-  const LaneVec3<T> k3 = principal_angular_acceleration(half_c, LaneVec3<T>{w0.x + k2.x, w0.y + k2.y, w0.z + k2.z});
+  const LaneVec3<T> k2 =
+      principal_angular_acceleration(half_c, LaneVec3<T>{w0.x + k1.x, w0.y + k1.y, w0.z + k1.z});
+  const LaneVec3<T> k3 =
+      principal_angular_acceleration(half_c, LaneVec3<T>{w0.x + k2.x, w0.y + k2.y, w0.z + k2.z});
   const LaneVec3<T> k4 = principal_angular_acceleration(half_c, detail::plus_scaled(w0, two, k3));
   return detail::plus_scaled(w0, T(LaneScalar<T>(1) / LaneScalar<T>(3)), detail::rk4_sum(k1, k2, k3, k4));
 }
