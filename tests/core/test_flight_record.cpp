@@ -123,11 +123,11 @@ ALOFT_TEST_CASE("flight record: the tensor and settings hashes are CRC-32 of the
   other(2, 2) = 0.0301;
   ALOFT_CHECK(aloft::tensor_hash(other) != 0xFABCA080u);
   // The default settings at K = 8: zlib.crc32(struct.pack('<HH4fB3fIIfIIff4fIHffIfHfffIf'
-  // 'IIHffIH' 'HIIHH' 'HHH' 'HffHH' 'H', 8, 10, 1, 0, 0, 0, 0, 0, 0, 0, 20000, 200000, 3.0,
+  // 'IIHffIH' 'HIIHH' 'HHH' 'HffHHH' 'H', 8, 10, 1, 0, 0, 0, 0, 0, 0, 0, 20000, 200000, 3.0,
   // 100000, 300000, 0.5, 2.0, 2.0, 0.1, 0.5, 30.0, 4000, 5, 0.5, 0.2, 3500, 0.5, 3, 0.15,
   // 0.5, 10.0, 1000, 0.01, 25000, 5000, 3, 0.8, 0.02, 15000, 4, 16, 900, 3000, 6, 32, 16, 1,
-  // 4, 16, 0.005, 0.25, 64, 8, 8)).
-  constexpr std::uint32_t default_hash = 0x9F4693A9u;
+  // 4, 16, 0.005, 0.25, 64, 8, 8, 8)).
+  constexpr std::uint32_t default_hash = 0x9FC3C2EFu;
   const aloft::OnboardPipelineSettings<float> defaults;
   ALOFT_CHECK(aloft::settings_hash(defaults, 8) == default_hash);
   ALOFT_CHECK(aloft::settings_hash(aloft::OnboardPipelineSettings<double>(), 8) == default_hash);
@@ -189,6 +189,7 @@ ALOFT_TEST_CASE("flight record: changing any pipeline setting changes the settin
       [](Settings& s) { s.lever_arm.halves_agree_relative += 0.01f; },
       [](Settings& s) { s.lever_arm.given_gives_way_after += 1; },
       [](Settings& s) { s.lever_arm.missed_gives_way_after += 1; },
+      [](Settings& s) { s.lever_arm.solve_every_samples += 1; },
   };
   int unchanged = -1;  // the first change above that left the hash as it was
   for (int n = 0; n < static_cast<int>(sizeof(changes) / sizeof(changes[0])); ++n) {

@@ -5,7 +5,7 @@
 // Scalar is (a firmware checks in float):
 //   tensor hash:   Ixx, Iyy, Izz, Ixy, Ixz, Iyz of the tensor as given, kg·m² (24 bytes)
 //   settings hash: every setting the onboard pipeline uses (OnboardPipelineSettings), in
-//                  the order written in settings_hash below (181 bytes): K (u16),
+//                  the order written in settings_hash below (183 bytes): K (u16),
 //                  seed_every (u16), sensor_to_body w x y z, imu_position_known (u8),
 //                  imu_position_m x y z, bridge_gap_up_to_us (u32),
 //                  end_flight_after_gap_us (u32), gap_interval_factor, min_flight_us
@@ -23,8 +23,8 @@
 //                  (u16), flight_level_samples (u16), then clock: interval_mean_samples,
 //                  half_span_min_samples, half_span_max_samples (u16 each), then lever_arm:
 //                  half_block_samples (u16), halves_agree_m, halves_agree_relative,
-//                  given_gives_way_after, missed_gives_way_after (u16 each), then
-//                  feed_lag_samples (u16). gap_interval_factor and
+//                  given_gives_way_after, missed_gives_way_after, solve_every_samples
+//                  (u16 each), then feed_lag_samples (u16). gap_interval_factor and
 //                  derivative_half_span_us are clock's, estimate_min_turn_rad is
 //                  lever_arm's, in the places listed. (Unlisted types: f32.)
 #pragma once
@@ -48,10 +48,10 @@ std::uint32_t tensor_hash(const Mat3<Scalar>& tensor) {
   return crc32(bytes, sizeof(bytes));
 }
 
-// Computed once, at start-up: optimised for size (ALOFT_COLD), it lists some 50 numbers.
+// Computed once, at start-up: optimised for size (ALOFT_COLD), it lists some 51 numbers.
 template <typename Scalar>
 ALOFT_COLD std::uint32_t settings_hash(const OnboardPipelineSettings<Scalar>& s, int live_simulations) {
-  std::uint8_t bytes[181];
+  std::uint8_t bytes[183];
   std::uint8_t* p = bytes;
   const auto f32 = [&p](Scalar v) { le::put_f32(p, static_cast<float>(v)), p += 4; };
   const auto u32 = [&p](std::uint32_t v) { le::put_u32(p, v), p += 4; };
@@ -109,6 +109,7 @@ ALOFT_COLD std::uint32_t settings_hash(const OnboardPipelineSettings<Scalar>& s,
   f32(l.halves_agree_relative);
   u16(l.given_gives_way_after);
   u16(l.missed_gives_way_after);
+  u16(l.solve_every_samples);
   u16(s.feed_lag_samples);
   return crc32(bytes, static_cast<std::size_t>(p - bytes));
 }

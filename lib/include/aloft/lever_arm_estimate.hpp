@@ -14,16 +14,47 @@
 
 namespace aloft {
 
+// K^T K is symmetric: its six distinct entries (the upper triangle). Summing six, not
+// nine, takes a third of the additions out of every sample the fits take.
+template <typename Scalar>
+struct SymmetricMat3 {
+  Scalar xx = Scalar(0), xy = Scalar(0), xz = Scalar(0), yy = Scalar(0), yz = Scalar(0), zz = Scalar(0);
+
+  SymmetricMat3& operator+=(const SymmetricMat3& o) {
+    xx += o.xx;
+    xy += o.xy;
+    xz += o.xz;
+    yy += o.yy;
+    yz += o.yz;
+    zz += o.zz;
+    return *this;
+  }
+  // Entry (i, j), i <= j.
+  Scalar& upper(int i, int j) {
+    Scalar* const rows[3][3] = {{&xx, &xy, &xz}, {&xy, &yy, &yz}, {&xz, &yz, &zz}};
+    return *rows[i][j];
+  }
+  Mat3<Scalar> full() const {
+    Mat3<Scalar> m;
+    m << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+    return m;
+  }
+};
+
 // One sample's terms of the sums, formed once when the sample joins several fits.
 template <typename Scalar>
 struct LeverArmTerms {
   explicit LeverArmTerms(const BodyKinematics<Scalar>& k) {
     const Mat3<Scalar> m = lever_arm_matrix(k.w, k.w_dot);
-    ktk = m.transpose() * m;
+    // Column i of K dotted with column j, summed as x0 + (x1 + x2) as Eigen sums m^T m.
+    for (int i = 0; i < 3; ++i) {
+      for (int j = i; j < 3; ++j)
+        ktk.upper(i, j) = m(0, i) * m(0, j) + (m(1, i) * m(1, j) + m(2, i) * m(2, j));
+    }
     kta = m.transpose() * k.a;
     ata = k.a.squaredNorm();
   }
-  Mat3<Scalar> ktk;
+  SymmetricMat3<Scalar> ktk;
   Vec3<Scalar> kta;
   Scalar ata;
 };
@@ -47,7 +78,8 @@ class LeverArmFit {
     const Scalar w = static_cast<Scalar>(n);
     for (int i = 0; i < 3; ++i) {
       const Scalar w0 = w * k_mean(0, i), w1 = w * k_mean(1, i), w2 = w * k_mean(2, i);
-      for (int j = 0; j < 3; ++j) ktk_(i, j) += w0 * k_mean(0, j) + (w1 * k_mean(1, j) + w2 * k_mean(2, j));
+      for (int j = i; j < 3; ++j)
+        ktk_.upper(i, j) += w0 * k_mean(0, j) + (w1 * k_mean(1, j) + w2 * k_mean(2, j));
       kta_(i) += w0 * a_mean(0) + (w1 * a_mean(1) + w2 * a_mean(2));
     }
     ata_ += w * a_mean.squaredNorm();
@@ -65,21 +97,21 @@ class LeverArmFit {
   ALOFT_OUT_OF_LINE Vec3<Scalar> solve(Scalar ridge_rad_s2) const {
     if (count_ == 0) return Vec3<Scalar>::Zero();
     const Scalar lambda = ridge_rad_s2 * ridge_rad_s2 * static_cast<Scalar>(count_);
-    const Mat3<Scalar> m = ktk_ + lambda * Mat3<Scalar>::Identity();
+    const Mat3<Scalar> m = ktk_.full() + lambda * Mat3<Scalar>::Identity();
     return m.inverse() * kta_;  // positive definite: the ridge keeps it invertible
   }
 
   // Root mean square of |a - K r| over the samples (m/s²).
   ALOFT_COLD Scalar rms_residual(const Vec3<Scalar>& r) const {
     if (count_ == 0) return Scalar(0);
-    const Scalar sse = ata_ - Scalar(2) * r.dot(kta_) + r.dot(ktk_ * r);
+    const Scalar sse = ata_ - Scalar(2) * r.dot(kta_) + r.dot(ktk_.full() * r);
     return std::sqrt((sse > Scalar(0) ? sse : Scalar(0)) / static_cast<Scalar>(count_));
   }
 
   std::uint32_t count() const { return count_; }
 
  private:
-  Mat3<Scalar> ktk_ = Mat3<Scalar>::Zero();
+  SymmetricMat3<Scalar> ktk_;
   Vec3<Scalar> kta_ = Vec3<Scalar>::Zero();
   Scalar ata_ = Scalar(0);
   std::uint32_t count_ = 0;

@@ -30,6 +30,13 @@ struct LeverArmEstimatorSettings {
   // 16 ms at 4 kHz is no worse than a ruler's few millimetres.
   std::uint16_t given_gives_way_after = 64;
   std::uint16_t missed_gives_way_after = 8;  // the release's fit missed the given r: sooner
+  // Once the flight's fit has taken over, its r is solved anew every this many samples,
+  // not at every one (at every one while the release is still on probation, where the
+  // release window dates it with that r): a 3x3 solve costs about 100 instructions (of a 2,500 budget per
+  // sample on a Cortex-M4F), while one more sample changes a least-squares fit over the
+  // 8 to 64 or more before it little. The release and landing figures of
+  // tests/host/test_release_detection.cpp were measured with it.
+  std::uint16_t solve_every_samples = 8;
 };
 
 // Limits the estimator shares with the release detector (ReleaseDetectorSettings).
@@ -65,15 +72,17 @@ class LeverArmEstimator {
     half_fit_[1].reset();
   }
 
-  // One torque-free sample's terms. True when the flight's own fit now takes over
-  // (flight_r() is then the r to judge the flight with).
+  // One torque-free sample's terms. True when the flight's own fit has taken over and its
+  // r is due to be solved anew (flight_r() is then the r to judge the flight with): at
+  // the sample it takes over, then every `solve_every_samples`.
   bool add(const LeverArmTerms<Scalar>& terms) {
     flight_fit_.add(terms);
     half_fit_[(flight_fit_.count() / settings_.half_block_samples) % 2u].add(terms);
-    const std::uint32_t enough =
-        release_missed_given_r_ ? settings_.missed_gives_way_after : settings_.given_gives_way_after;
-    return flight_fit_.count() >= enough;
+    const std::uint32_t every = settings_.solve_every_samples > 0 ? settings_.solve_every_samples : 1u;
+    return taken_over() && (flight_fit_.count() - gives_way_after()) % every == 0;
   }
+  // The flight's own fit judges the flight from now on.
+  bool taken_over() const { return flight_fit_.count() >= gives_way_after(); }
   Vec3<Scalar> flight_r() const { return flight_fit_.solve(limits_.ridge_rad_s2); }
 
   // The flight ended: what it says about r (`given`: the body file's r, or null), and the
@@ -98,6 +107,13 @@ class LeverArmEstimator {
   }
 
   bool has_estimate() const { return has_estimate_; }
+
+ private:
+  std::uint32_t gives_way_after() const {
+    return release_missed_given_r_ ? settings_.missed_gives_way_after : settings_.given_gives_way_after;
+  }
+
+ public:
   const Vec3<Scalar>& estimate() const { return estimate_; }
 
  private:

@@ -85,6 +85,7 @@ class OnboardPipeline {
       : inertia_(inertia),
         settings_(settings),
         sensor_to_body_(settings.check.sensor_to_body.normalized().toRotationMatrix()),
+        sensor_is_body_(sensor_to_body_ == Mat3<Scalar>::Identity()),
         clock_(settings_.clock),
         detector_(settings_.release, inertia_.tensor()),
         window_(settings_.release_window),
@@ -106,8 +107,12 @@ class OnboardPipeline {
       end_flight(false, previous_t_us);
     }
     const std::uint8_t flags = static_cast<std::uint8_t>(sample.flags | (tick.gap ? imu_gap_before : 0));
-    history_.push(sample.t_us, sensor_to_body_ * sample.gyro_rad_s, sensor_to_body_ * sample.accel_m_s2,
-                  flags);
+    Vec3<Scalar> gyro = sample.gyro_rad_s, accel = sample.accel_m_s2;
+    if (!sensor_is_body_) {
+      gyro = sensor_to_body_ * gyro;
+      accel = sensor_to_body_ * accel;
+    }
+    history_.push(sample.t_us, gyro, accel, flags);
     if (history_.count() > clock_.half_span()) detect(history_.count() - 1 - clock_.half_span());
     return Status::ok;
   }
@@ -266,7 +271,8 @@ class OnboardPipeline {
     const std::uint32_t h = clock_.half_span();
     BodyKinematics<Scalar> k;
     if (!history_.kinematics(i, h, k) || !detector_.torque_free_remembered(i, h, k)) return;
-    if (lever_arm_.add(LeverArmTerms<Scalar>(k))) r_flight_ = lever_arm_.flight_r();
+    const bool due = lever_arm_.add(LeverArmTerms<Scalar>(k));
+    if (due || (on_probation_ && lever_arm_.taken_over())) r_flight_ = lever_arm_.flight_r();
   }
 
   // The simulations alive before a long gap cannot be carried across it.
@@ -320,6 +326,10 @@ class OnboardPipeline {
   InertiaTensor<Scalar> inertia_;
   OnboardPipelineSettings<Scalar> settings_;  // the one copy: the parts below hold references
   Mat3<Scalar> sensor_to_body_;
+  // The sensor's axes are the body's (the usual mounting): samples are taken as they are,
+  // which is what the rotation by the identity gives (but for the sign of a zero), without
+  // its 30 instructions per sample.
+  bool sensor_is_body_;
   StreamClock<Scalar> clock_;
   SampleHistory<Scalar, history_samples> history_;
   ReleaseDetector<Scalar, history_samples> detector_;
