@@ -107,16 +107,13 @@ class LeverArmEstimator {
   }
 
   bool has_estimate() const { return has_estimate_; }
+  const Vec3<Scalar>& estimate() const { return estimate_; }
 
  private:
   std::uint32_t gives_way_after() const {
     return release_missed_given_r_ ? settings_.missed_gives_way_after : settings_.given_gives_way_after;
   }
 
- public:
-  const Vec3<Scalar>& estimate() const { return estimate_; }
-
- private:
   bool trusted(const Vec3<Scalar>& r, Scalar turn_angle_rad) const {
     const Vec3<Scalar> ra = half_fit_[0].solve(limits_.ridge_rad_s2);
     const Vec3<Scalar> rb = half_fit_[1].solve(limits_.ridge_rad_s2);
