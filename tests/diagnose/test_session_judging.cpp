@@ -182,6 +182,19 @@ TEST_CASE("between-flight scatter: flights that share one value read about 1, fl
   }
 }
 
+TEST_CASE("between-flight scatter: a noise correlated over neighbouring readings widens each flight's error",
+          "[session]") {
+  // Flights ten standard errors apart, as the fits count them, but behind a low-pass that
+  // makes 20 readings one independent sample: 20 times the variance, 1/20 the chi-square.
+  std::vector<Analysis> own = five_flights(Effect::gyro_scale, 10.0);
+  for (Analysis& a : own) a.where.noise_correlation = 20.0;
+  std::vector<const Analysis*> pointers;
+  for (const Analysis& a : own) pointers.push_back(&a);
+  const auto scatter = between_flight_scatter(Effect::gyro_scale, pointers);
+  REQUIRE(scatter);
+  CHECK(scatter->chi_square_per_dof == Approx(0.735 * 100.0 / 20.0));
+}
+
 TEST_CASE("a rotor is told apart only in a session whose flights agree on it and where it wins clearly",
           "[session][rotor]") {
   Candidate rotor, rival;

@@ -40,6 +40,10 @@ struct Where {
   std::string dominant_axis = "x";
   Eigen::Vector3d rms_gap_body_rad_s = Eigen::Vector3d::Zero();  // baseline gap per body axis
   Eigen::Vector3d noise_floor = Eigen::Vector3d::Zero();         // per sensor axis
+  // Readings per independent sample of that noise (NoiseFloor::correlation, > 1 behind a
+  // gyro's low-pass); per flight only. A fit's covariance, its noise taken from the
+  // residuals, is that many times too narrow.
+  double noise_correlation = 1.0;
   double gap_over_noise = 0.0;  // baseline chi-square per residual (1: noise only)
   std::vector<TimeSlice> slices;
   std::optional<Invariants> invariants;  // per flight only

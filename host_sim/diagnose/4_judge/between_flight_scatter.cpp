@@ -26,8 +26,9 @@ std::optional<BetweenFlightScatter> between_flight_scatter(Effect effect,
   for (const Analysis* a : flights) {
     const Candidate* c = a ? own_candidate(*a, effect) : nullptr;
     if (!c || c->fit.theta_covariance.rows() != c->fit.theta.size() || c->fit.theta.size() == 0) continue;
+    const Eigen::MatrixXd covariance = c->fit.theta_covariance * a->where.noise_correlation;
     theta.push_back(c->fit.theta);
-    precision.push_back(c->fit.theta_covariance.completeOrthogonalDecomposition().pseudoInverse());
+    precision.push_back(covariance.completeOrthogonalDecomposition().pseudoInverse());
     shrinks.push_back(c->shrink);
   }
   const int n = static_cast<int>(theta.size());

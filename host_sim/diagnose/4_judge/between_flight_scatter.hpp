@@ -23,7 +23,10 @@ struct BetweenFlightScatter {
   double median_own_shrink = 0.0;  // the flights' own held-out shrink with `effect` (interleaved folds)
 };
 
-// From each flight's own candidate for `effect`; none when fewer than 3 flights have one.
+// From each flight's own candidate for `effect`, its covariance widened by the flight's
+// noise correlation (Where::noise_correlation: behind a gyro's low-pass the fit's own
+// covariance counts readings, not independent samples); none when fewer than 3 flights
+// have one.
 std::optional<BetweenFlightScatter> between_flight_scatter(Effect effect,
                                                            const std::vector<const Analysis*>& flights);
 

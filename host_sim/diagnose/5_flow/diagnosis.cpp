@@ -78,6 +78,7 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
   }
   d.noise = estimate_noise_floor(flight);
   analysis.where.noise_floor = d.noise.sigma;
+  analysis.where.noise_correlation = d.noise.correlation;
   const Vec3 inverse_sigma = d.noise.weighting_sigma().cwiseInverse();
   JudgedFlights judged;
   judged.add(flight, inverse_sigma);

@@ -36,6 +36,13 @@ std::vector<SessionCase> rotor_session_cases(RotorSeeds seeds, int per_kind, int
   for (int i = 0; i < per_kind; ++i) {
     add("bias", "gyro_bias", bodies[static_cast<std::size_t>(i + 3) % bodies.size()], 0.0, i);
   }
+  // Rotors seen through a gyro's 100 Hz two-pole low-pass, at 1 kHz and at 4 kHz (a
+  // flight controller's rate): noise correlated over 2-10 samples, whose fits' own
+  // covariances understate their errors (between_flight_scatter.hpp widens them).
+  for (int i = 0; i < per_kind; ++i) {
+    add("filtered", "internal_momentum", bodies[static_cast<std::size_t>(i + 4) % bodies.size()], 100.0, i);
+    for (FlightSpec& flight : out.back().flights) flight.imu_rate_hz = i % 2 == 0 ? 1000.0 : 4000.0;
+  }
   return out;
 }
 

@@ -4,7 +4,7 @@
 //
 // A session is several flights of one body and one sensor sharing one effect (the effect
 // drawn once from the session's seed, each throw and its noise from its own seed:
-// FlightSpec::throw_seed), gyro at 1 kHz:
+// FlightSpec::throw_seed), gyro at 1 kHz unless said:
 //   rotor        internal_momentum, every body in turn (flight_generator.hpp: |h| 0.5-10 %
 //                of |L| at 10 rad/s, any direction);
 //   impulse      an impulse in each flight (its size and time drawn once, relative to
@@ -14,7 +14,9 @@
 //   noise        noise alone behind a 1 kHz gyro's 20 Hz low-pass (the flight the
 //                previous rotor named `impulse`);
 //   bias         a gyro bias, which a rotor h = I·b mimics to first order (listed after
-//                the others, whose seeds stay as they were).
+//                the others, whose seeds stay as they were);
+//   filtered     a rotor behind a 100 Hz two-pole low-pass, at 1 kHz and 4 kHz in turn
+//                (listed last, for the same reason).
 #pragma once
 
 #include <cstdint>
