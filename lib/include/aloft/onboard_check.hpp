@@ -95,6 +95,16 @@ class OnboardCheck {
     return Status::ok;
   }
 
+  // update() for a gyro sample the caller has already found finite and a finite dt (the
+  // onboard pipeline tests every sample as it arrives, and feeds only airborne ones):
+  // only dt > 0 is tested, not the numbers again (about 20 instructions per sample on a
+  // Cortex-M4F). Returns ok or non_positive_time_step, in which case nothing changes.
+  Status update_finite(const Vec3<Scalar>& gyro, Scalar dt) {
+    if (samples_ > 0 && !(dt > Scalar(0))) return Status::non_positive_time_step;
+    use_sample(gyro, dt);
+    return Status::ok;
+  }
+
   // A sample whose gyro is no measurement (an axis clipped): the live simulations step
   // over its dt, nothing is compared and no seed starts. Returns ok or an error status.
   Status skip(Scalar dt) {

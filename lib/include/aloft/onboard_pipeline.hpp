@@ -98,7 +98,13 @@ class OnboardPipeline {
   // One sample. Returns ok, or an error status (non-finite numbers, a time stamp not
   // after the previous one) in which case the sample is not used and nothing changes.
   Status push(const ImuSample<Scalar>& sample) {
-    if (!all_finite(sample.gyro_rad_s) || !all_finite(sample.accel_m_s2)) return Status::non_finite_input;
+    Vec3<Scalar> gyro = sample.gyro_rad_s, accel = sample.accel_m_s2;
+    if (!sensor_is_body_) {
+      gyro = sensor_to_body_ * gyro;
+      accel = sensor_to_body_ * accel;
+    }
+    // Tested in body axes, as the history keeps them: the check takes them as finite.
+    if (!all_finite(gyro) || !all_finite(accel)) return Status::non_finite_input;
     const std::uint64_t previous_t_us = clock_.last_t_us();
     const StreamTick tick = clock_.tick(sample);
     if (tick.status != Status::ok) return tick.status;
@@ -107,11 +113,6 @@ class OnboardPipeline {
       end_flight(false, previous_t_us);
     }
     const std::uint8_t flags = static_cast<std::uint8_t>(sample.flags | (tick.gap ? imu_gap_before : 0));
-    Vec3<Scalar> gyro = sample.gyro_rad_s, accel = sample.accel_m_s2;
-    if (!sensor_is_body_) {
-      gyro = sensor_to_body_ * gyro;
-      accel = sensor_to_body_ * accel;
-    }
     history_.push(sample.t_us, gyro, accel, flags);
     if (history_.count() > clock_.half_span()) detect(history_.count() - 1 - clock_.half_span());
     return Status::ok;
@@ -261,7 +262,7 @@ class OnboardPipeline {
       (void)check_->skip(dt);
       return;
     }
-    if (check_->update(history_.gyro(i), dt) == Status::ok) ++current_.samples;
+    if (check_->update_finite(history_.gyro(i), dt) == Status::ok) ++current_.samples;
     current_.turn_angle_rad += history_.gyro(i).norm() * dt;
     fit_sample(i);
   }
