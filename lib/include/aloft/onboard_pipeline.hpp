@@ -104,7 +104,7 @@ class OnboardPipeline {
       accel = sensor_to_body_ * accel;
     }
     // Tested in body axes, as the history keeps them: the check takes them as finite.
-    if (!all_finite(gyro) || !all_finite(accel)) return Status::non_finite_input;
+    if (!all_finite(gyro, accel)) return Status::non_finite_input;
     const std::uint64_t previous_t_us = clock_.last_t_us();
     const StreamTick tick = clock_.tick(sample);
     if (tick.status != Status::ok) return tick.status;
