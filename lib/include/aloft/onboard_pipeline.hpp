@@ -270,7 +270,7 @@ class OnboardPipeline {
   // The lever-arm fit takes the samples the gyro calls torque-free.
   void fit_sample(std::uint32_t i) {
     const std::uint32_t h = clock_.half_span();
-    BodyKinematics<Scalar> k;
+    BodyKinematics<Scalar> k{typename BodyKinematics<Scalar>::Unset{}};
     if (!history_.kinematics(i, h, k) || !detector_.torque_free_remembered(i, h, k)) return;
     const bool due = lever_arm_.add(LeverArmTerms<Scalar>(k));
     if (due || (on_probation_ && lever_arm_.taken_over())) r_flight_ = lever_arm_.flight_r();
