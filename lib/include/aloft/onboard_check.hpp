@@ -254,7 +254,8 @@ class OnboardCheck {
 
   DeviationStats<Scalar> stats(const Slot& slot) const {
     return DeviationStats<Scalar>::from_sums(compared_ - slot.compared_before, slot.sum_square_da,
-                                             slot.sum_square_rel, slot.max_da, std::sqrt(slot.max_square_rel));
+                                             slot.sum_square_rel, slot.max_da,
+                                             std::sqrt(slot.max_square_rel));
   }
 
   int slot_of_newest(int i) const { return ((newest_ - i) % K + K) % K; }
