@@ -98,13 +98,7 @@ class OnboardPipeline {
   // One sample. Returns ok, or an error status (non-finite numbers, a time stamp not
   // after the previous one) in which case the sample is not used and nothing changes.
   Status push(const ImuSample<Scalar>& sample) {
-    Vec3<Scalar> gyro = sample.gyro_rad_s, accel = sample.accel_m_s2;
-    if (!sensor_is_body_) {
-      gyro = sensor_to_body_ * gyro;
-      accel = sensor_to_body_ * accel;
-    }
-    // Tested in body axes, as the history keeps them: the check takes them as finite.
-    if (!all_finite(gyro, accel)) return Status::non_finite_input;
+    if (!all_finite(sample.gyro_rad_s, sample.accel_m_s2)) return Status::non_finite_input;
     const std::uint64_t previous_t_us = clock_.last_t_us();
     const StreamTick tick = clock_.tick(sample);
     if (tick.status != Status::ok) return tick.status;
@@ -112,7 +106,16 @@ class OnboardPipeline {
       feed_until(history_.count());
       end_flight(false, previous_t_us);
     }
-    const std::uint8_t flags = static_cast<std::uint8_t>(sample.flags | (tick.gap ? imu_gap_before : 0));
+    std::uint8_t flags = static_cast<std::uint8_t>(sample.flags | (tick.gap ? imu_gap_before : 0));
+    Vec3<Scalar> gyro = sample.gyro_rad_s, accel = sample.accel_m_s2;
+    if (!sensor_is_body_) {
+      gyro = sensor_to_body_ * gyro;
+      accel = sensor_to_body_ * accel;
+      // Numbers near the float range's end can overflow in the rotation: no measurement
+      // then (the check takes the history's samples as finite).
+      if (!all_finite(gyro, accel))
+        flags = static_cast<std::uint8_t>(flags | imu_gyro_clipped | imu_accel_clipped);
+    }
     history_.push(sample.t_us, gyro, accel, flags);
     if (history_.count() > clock_.half_span()) detect(history_.count() - 1 - clock_.half_span());
     return Status::ok;
