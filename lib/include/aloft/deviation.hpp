@@ -65,6 +65,22 @@ class DeviationStats {
 
   void reset() { *this = DeviationStats(); }
 
+  // The accumulator of `count` comparisons kept elsewhere as sums of squares and maxima
+  // (the onboard check's seeds: a sum costs a sample one addition, a running mean a
+  // division and a subtraction more).
+  static DeviationStats from_sums(std::uint32_t count, Scalar sum_square_da, Scalar sum_square_rel,
+                                  Scalar max_da, Scalar max_rel) {
+    DeviationStats out;
+    if (count == 0) return out;
+    const Scalar n = static_cast<Scalar>(count);
+    out.count_ = count;
+    out.mean_square_da_ = sum_square_da / n;
+    out.mean_square_rel_ = sum_square_rel / n;
+    out.max_da_ = max_da;
+    out.max_rel_ = max_rel;
+    return out;
+  }
+
   std::uint32_t count() const { return count_; }
   Scalar mean_square_da() const { return mean_square_da_; }
   Scalar rms_da() const { return std::sqrt(mean_square_da_); }

@@ -47,6 +47,12 @@ inline Mat3<Scalar> lever_arm_matrix(const Vec3<Scalar>& w, const Vec3<Scalar>& 
 // One sample's kinematics in body axes: rate, its derivative, specific force.
 template <typename Scalar>
 struct BodyKinematics {
+  // Left unset: for one that SampleHistory::kinematics fills at once and that is read only
+  // when it did (zeroing it first cost every airborne sample ten instructions).
+  struct Unset {};
+  BodyKinematics() = default;
+  explicit BodyKinematics(Unset) : w(), w_dot(), a() {}
+
   Vec3<Scalar> w = Vec3<Scalar>::Zero();      // rad/s
   Vec3<Scalar> w_dot = Vec3<Scalar>::Zero();  // rad/s²
   Vec3<Scalar> a = Vec3<Scalar>::Zero();      // m/s²

@@ -101,6 +101,19 @@ inline RawPacket3 parse_packet3(const std::uint8_t* bytes) {
   return p;
 }
 
+// Some axis at -32768, -32767 or +32767: the packet may be invalid or clipped, and the
+// two tests below decide. One comparison per axis, no branch, for the packets that hold
+// none (nearly all): about 20 instructions per sample fewer on a Cortex-M4F.
+inline bool holds_extreme_value(const RawPacket3& p) {
+  bool extreme = false;
+  for (int axis = 0; axis < 3; ++axis) {
+    // v + 32766 falls outside [0, 65532] exactly for those three values.
+    extreme |= static_cast<unsigned>(p.accel[axis] + 32766) > 65532u;
+    extreme |= static_cast<unsigned>(p.gyro[axis] + 32766) > 65532u;
+  }
+  return extreme;
+}
+
 inline bool holds_invalid_value(const RawPacket3& p) {
   for (int axis = 0; axis < 3; ++axis) {
     if (p.accel[axis] == kInvalidSample || p.gyro[axis] == kInvalidSample) return true;
@@ -177,7 +190,8 @@ class FifoDecoder {
   PacketOutcome decode(const std::uint8_t* packet, ImuSample<Scalar>& out) {
     if (!is_packet3_header(packet[0])) return PacketOutcome::foreign_header;
     const RawPacket3 raw = parse_packet3(packet);
-    const bool valid = !holds_invalid_value(raw);
+    const bool extreme = holds_extreme_value(raw);
+    const bool valid = !extreme || !holds_invalid_value(raw);
     // Before the first valid packet there is no time base yet, and nothing to lose.
     if (!started_) {
       if (!valid) return PacketOutcome::invalid;
@@ -186,7 +200,7 @@ class FifoDecoder {
       advance_clock(raw.timestamp);
     }
     if (!valid) return PacketOutcome::invalid;
-    out = to_sample(raw);
+    out = to_sample(raw, extreme);
     if (ticks_ - last_sample_ticks_ > gap_threshold_ticks_) add_flag(out, imu_gap_before);
     last_sample_ticks_ = ticks_;
     return PacketOutcome::sample;
@@ -250,15 +264,15 @@ class FifoDecoder {
     last_stamp_ = stamp;
   }
 
-  ImuSample<Scalar> to_sample(const RawPacket3& raw) const {
+  ImuSample<Scalar> to_sample(const RawPacket3& raw, bool extreme) const {
     ImuSample<Scalar> s;
     s.t_us = time_us();
     for (int axis = 0; axis < 3; ++axis) {
       s.accel_m_s2[axis] = static_cast<Scalar>(raw.accel[axis]) * accel_m_s2_per_lsb<Scalar>();
       s.gyro_rad_s[axis] = static_cast<Scalar>(raw.gyro[axis]) * gyro_rad_s_per_lsb<Scalar>();
     }
-    if (at_full_scale(raw.accel)) add_flag(s, imu_accel_clipped);
-    if (at_full_scale(raw.gyro)) add_flag(s, imu_gyro_clipped);
+    if (extreme && at_full_scale(raw.accel)) add_flag(s, imu_accel_clipped);
+    if (extreme && at_full_scale(raw.gyro)) add_flag(s, imu_gyro_clipped);
     return s;
   }
 

@@ -63,11 +63,13 @@ template <typename Scalar>
 class LeverArmFit {
  public:
   void add(const BodyKinematics<Scalar>& k) { add(LeverArmTerms<Scalar>(k)); }
-  ALOFT_OUT_OF_LINE void add(const LeverArmTerms<Scalar>& t) {
-    ktk_ += t.ktk;
-    kta_ += t.kta;
-    ata_ += t.ata;
-    ++count_;
+  ALOFT_OUT_OF_LINE void add(const LeverArmTerms<Scalar>& t) { accumulate(t); }
+  // One sample's terms into two fits (a flight's and its half's), in line: the terms stay
+  // in registers, not stored and read back once per fit (about 35 instructions per
+  // sample on a Cortex-M4F). The same sums to the bit as two add() calls.
+  static void add_to_both(LeverArmFit& a, LeverArmFit& b, const LeverArmTerms<Scalar>& t) {
+    a.accumulate(t);
+    b.accumulate(t);
   }
   // n samples summarised by their mean K and mean a (a block mean: what varies within
   // the block, as a structural mode does, is left out).
@@ -111,6 +113,14 @@ class LeverArmFit {
   std::uint32_t count() const { return count_; }
 
  private:
+  // By value: the sums written cannot alias the terms read, so these are read once.
+  void accumulate(LeverArmTerms<Scalar> t) {
+    ktk_ += t.ktk;
+    kta_ += t.kta;
+    ata_ += t.ata;
+    ++count_;
+  }
+
   SymmetricMat3<Scalar> ktk_;
   Vec3<Scalar> kta_ = Vec3<Scalar>::Zero();
   Scalar ata_ = Scalar(0);

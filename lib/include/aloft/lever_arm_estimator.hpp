@@ -76,8 +76,8 @@ class LeverArmEstimator {
   // r is due to be solved anew (flight_r() is then the r to judge the flight with): at
   // the sample it takes over, then every `solve_every_samples`.
   bool add(const LeverArmTerms<Scalar>& terms) {
-    flight_fit_.add(terms);
-    half_fit_[(flight_fit_.count() / settings_.half_block_samples) % 2u].add(terms);
+    const std::uint32_t n = flight_fit_.count() + 1;  // the flight fit's count with this sample
+    LeverArmFit<Scalar>::add_to_both(flight_fit_, half_fit_[(n / settings_.half_block_samples) % 2u], terms);
     const std::uint32_t every = settings_.solve_every_samples > 0 ? settings_.solve_every_samples : 1u;
     return taken_over() && (flight_fit_.count() - gives_way_after()) % every == 0;
   }

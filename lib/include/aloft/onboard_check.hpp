@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 
 #include "aloft/cold_path.hpp"
 #include "aloft/deviation.hpp"
@@ -94,6 +95,16 @@ class OnboardCheck {
     return Status::ok;
   }
 
+  // update() for a gyro sample the caller has already found finite and a finite dt (the
+  // onboard pipeline tests every sample as it arrives, and feeds only airborne ones):
+  // only dt > 0 is tested, not the numbers again (about 20 instructions per sample on a
+  // Cortex-M4F). Returns ok or non_positive_time_step, in which case nothing changes.
+  Status update_finite(const Vec3<Scalar>& gyro, Scalar dt) {
+    if (samples_ > 0 && !(dt > Scalar(0))) return Status::non_positive_time_step;
+    use_sample(gyro, dt);
+    return Status::ok;
+  }
+
   // A sample whose gyro is no measurement (an axis clipped): the live simulations step
   // over its dt, nothing is compared and no seed starts. Returns ok or an error status.
   Status skip(Scalar dt) {
@@ -113,27 +124,49 @@ class OnboardCheck {
   // an overall running mean besides the per-seed one.
   ALOFT_COLD DeviationStats<Scalar> overall() const {
     DeviationStats<Scalar> all = retired_;
-    for (const Slot& slot : slots_) {
-      if (slot.live) all.merge(slot.stats);
-    }
+    for (int n = 0; n < live_; ++n) all.merge(stats(slots_[n]));
     return all;
   }
   // Slot i in [0, K): the i-th newest seed still held (live, or the last ones retired).
-  const SeedReport<Scalar>& seed(int i) const { return slots_[slot_of_newest(i)]; }
+  SeedReport<Scalar> seed(int i) const {
+    const int n = slot_of_newest(i);
+    SeedReport<Scalar> out;
+    if (n >= live_) return out;  // not used yet
+    out.seed_number = slots_[n].seed_number;
+    out.seeded_at_sample = slots_[n].seeded_at_sample;
+    out.live = true;
+    out.stats = stats(slots_[n]);
+    return out;
+  }
   // Seed n (< kept_first_seeds) as it stands if still held, else as it stood when it
   // retired; false when fewer than n + 1 seeds have started.
   bool first_seed(std::uint32_t n, SeedSummary<Scalar>& out) const {
     if (n >= kept_first_seeds || n >= seeds_started_) return false;
     out = retired_first_[n];
-    for (const Slot& slot : slots_) {
-      if (slot.live && slot.seed_number == n) out = summary(slot.stats);
+    for (int i = 0; i < live_; ++i) {
+      if (slots_[i].seed_number == n) out = summary(stats(slots_[i]));
     }
     return true;
   }
 
  private:
-  struct Slot : SeedReport<Scalar> {
-    LaneVec3<Scalar> omega = {};  // body rate of the simulation, principal axes
+  // A live simulation. Slots are taken in order and never freed (a new seed takes the
+  // oldest's), so the live ones are slots [0, live_): the per-sample loop runs over them
+  // without testing each. Its comparisons are kept as sums, not running means, and its
+  // count as the check's count of compared samples when it was seeded (every live seed
+  // is compared at every compared sample): a sample costs each seed two additions, not a
+  // count, a conversion, two subtractions and two divisions. A seed lives K * seed_every
+  // samples, so a float sum adds at most that many terms. The relative error is kept
+  // squared (its maximum too), which is all its RMS needs.
+  struct Slot {
+    std::uint32_t seed_number = 0;
+    std::uint32_t seeded_at_sample = 0;
+    std::uint32_t compared_before = 0;  // compared_ when it was seeded
+    LaneVec3<Scalar> omega = {};        // body rate of the simulation, principal axes
+    Scalar sum_square_da = Scalar(0);
+    Scalar sum_square_rel = Scalar(0);
+    Scalar max_da = Scalar(0);
+    Scalar max_square_rel = Scalar(0);
   };
 
   Status validate_sample(const Vec3<Scalar>& gyro, Scalar dt) const {
@@ -146,14 +179,14 @@ class OnboardCheck {
     const Vec3<Scalar> m = sensor_to_principal_ * gyro;
     const LaneVec3<Scalar> measured{m.x(), m.y(), m.z()};
     const Scalar norm_sq = m.squaredNorm();
-    const bool has_rate = norm_sq > Scalar(0);
-    const Scalar inverse_norm = has_rate ? Scalar(1) / std::sqrt(norm_sq) : Scalar(0);
     // Common to every seed: each takes the same step.
     const EulerCoefficients<Scalar> half_c = half_step_coefficients(coefficients_, dt);
-    if (has_rate) {
-      step_and_compare(half_c, measured, inverse_norm);
+    // A zero rate has no direction to compare; below the smallest normal number, its
+    // square's inverse would overflow (a rate under 1e-19 rad/s in float).
+    if (norm_sq >= std::numeric_limits<Scalar>::min()) {
+      step_and_compare(half_c, measured, Scalar(1) / norm_sq);
     } else {
-      step_live(half_c);  // a zero rate has no direction to compare
+      step_live(half_c);
     }
     if (samples_ % seed_every_ == 0) start_seed(measured);
     ++samples_;
@@ -162,24 +195,27 @@ class OnboardCheck {
   // Every live simulation one step on (half_c: half_step_coefficients of the step).
   // Out of line: rare (a clipped gyro, a zero rate), and one copy of the step for both.
   ALOFT_COLD void step_live(const EulerCoefficients<Scalar>& half_c) {
-    for (Slot& slot : slots_) {
-      if (slot.live) step(half_c, slot.omega);
-    }
+    for (int n = 0; n < live_; ++n) step(half_c, slots_[n].omega);
   }
 
-  // The same, each compared with the measured rate (inverse_norm: 1 / its norm, > 0).
+  // The same, each compared with the measured rate (inverse_norm_sq: 1 / its squared
+  // norm, finite).
   void step_and_compare(const EulerCoefficients<Scalar>& half_c, const LaneVec3<Scalar>& measured,
-                        Scalar inverse_norm) {
-    for (Slot& slot : slots_) {
-      if (!slot.live) continue;
+                        Scalar inverse_norm_sq) {
+    for (int n = 0; n < live_; ++n) {
+      Slot& slot = slots_[n];
       const LaneVec3<Scalar> w = step(half_c, slot.omega);
       const Scalar da = lane_deviation_angle(w, measured);
       const Scalar dx = w.x - measured.x;
       const Scalar dy = w.y - measured.y;
       const Scalar dz = w.z - measured.z;
-      const Scalar rel = std::sqrt(dx * dx + dy * dy + dz * dz) * inverse_norm;
-      slot.stats.add_values(da, rel);
+      const Scalar square_rel = (dx * dx + dy * dy + dz * dz) * inverse_norm_sq;
+      slot.sum_square_da += da * da;
+      slot.sum_square_rel += square_rel;
+      if (da > slot.max_da) slot.max_da = da;
+      if (square_rel > slot.max_square_rel) slot.max_square_rel = square_rel;
     }
+    ++compared_;
   }
 
   // One RK4 step of a simulation's rate, written back in place (whole-vector assignment
@@ -196,20 +232,30 @@ class OnboardCheck {
   ALOFT_COLD void start_seed(const LaneVec3<Scalar>& measured) {
     newest_ = (newest_ + 1) % K;  // the oldest slot, once all K are in use
     Slot& slot = slots_[newest_];
-    if (!slot.live) ++live_;
-    if (slot.live) retire(slot);
+    if (newest_ < live_) {
+      retire(slot);
+    } else {
+      ++live_;
+    }
+    slot = Slot();
     slot.seed_number = seeds_started_++;
     slot.seeded_at_sample = samples_;
-    slot.live = true;
-    slot.stats.reset();
+    slot.compared_before = compared_;
     slot.omega = measured;
   }
 
   // The slot's seed gives way to a new one: its figures join the overall ones, and the
   // flight's first seeds are kept for the record.
   void retire(const Slot& slot) {
-    retired_.merge(slot.stats);
-    if (slot.seed_number < kept_first_seeds) retired_first_[slot.seed_number] = summary(slot.stats);
+    const DeviationStats<Scalar> s = stats(slot);
+    retired_.merge(s);
+    if (slot.seed_number < kept_first_seeds) retired_first_[slot.seed_number] = summary(s);
+  }
+
+  DeviationStats<Scalar> stats(const Slot& slot) const {
+    return DeviationStats<Scalar>::from_sums(compared_ - slot.compared_before, slot.sum_square_da,
+                                             slot.sum_square_rel, slot.max_da,
+                                             std::sqrt(slot.max_square_rel));
   }
 
   int slot_of_newest(int i) const { return ((newest_ - i) % K + K) % K; }
@@ -225,6 +271,7 @@ class OnboardCheck {
   SeedSummary<Scalar> retired_first_[kept_first_seeds] = {};
   DeviationStats<Scalar> retired_;  // over the comparisons of every retired seed
   std::uint32_t samples_ = 0;
+  std::uint32_t compared_ = 0;  // samples compared (not skipped, not a zero rate)
   std::uint32_t seeds_started_ = 0;
   int newest_ = K - 1;
   int live_ = 0;

@@ -98,7 +98,7 @@ class OnboardPipeline {
   // One sample. Returns ok, or an error status (non-finite numbers, a time stamp not
   // after the previous one) in which case the sample is not used and nothing changes.
   Status push(const ImuSample<Scalar>& sample) {
-    if (!all_finite(sample.gyro_rad_s) || !all_finite(sample.accel_m_s2)) return Status::non_finite_input;
+    if (!all_finite(sample.gyro_rad_s, sample.accel_m_s2)) return Status::non_finite_input;
     const std::uint64_t previous_t_us = clock_.last_t_us();
     const StreamTick tick = clock_.tick(sample);
     if (tick.status != Status::ok) return tick.status;
@@ -106,11 +106,15 @@ class OnboardPipeline {
       feed_until(history_.count());
       end_flight(false, previous_t_us);
     }
-    const std::uint8_t flags = static_cast<std::uint8_t>(sample.flags | (tick.gap ? imu_gap_before : 0));
+    std::uint8_t flags = static_cast<std::uint8_t>(sample.flags | (tick.gap ? imu_gap_before : 0));
     Vec3<Scalar> gyro = sample.gyro_rad_s, accel = sample.accel_m_s2;
     if (!sensor_is_body_) {
       gyro = sensor_to_body_ * gyro;
       accel = sensor_to_body_ * accel;
+      // Numbers near the float range's end can overflow in the rotation: no measurement
+      // then (the check takes the history's samples as finite).
+      if (!all_finite(gyro, accel))
+        flags = static_cast<std::uint8_t>(flags | imu_gyro_clipped | imu_accel_clipped);
     }
     history_.push(sample.t_us, gyro, accel, flags);
     if (history_.count() > clock_.half_span()) detect(history_.count() - 1 - clock_.half_span());
@@ -261,7 +265,7 @@ class OnboardPipeline {
       (void)check_->skip(dt);
       return;
     }
-    if (check_->update(history_.gyro(i), dt) == Status::ok) ++current_.samples;
+    if (check_->update_finite(history_.gyro(i), dt) == Status::ok) ++current_.samples;
     current_.turn_angle_rad += history_.gyro(i).norm() * dt;
     fit_sample(i);
   }
@@ -269,7 +273,7 @@ class OnboardPipeline {
   // The lever-arm fit takes the samples the gyro calls torque-free.
   void fit_sample(std::uint32_t i) {
     const std::uint32_t h = clock_.half_span();
-    BodyKinematics<Scalar> k;
+    BodyKinematics<Scalar> k{typename BodyKinematics<Scalar>::Unset{}};
     if (!history_.kinematics(i, h, k) || !detector_.torque_free_remembered(i, h, k)) return;
     const bool due = lever_arm_.add(LeverArmTerms<Scalar>(k));
     if (due || (on_probation_ && lever_arm_.taken_over())) r_flight_ = lever_arm_.flight_r();

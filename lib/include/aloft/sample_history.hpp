@@ -56,10 +56,10 @@ class SampleHistory {
   // False when the span is not held, crosses a gap or holds a clipped gyro sample.
   ALOFT_OUT_OF_LINE bool kinematics(std::uint32_t i, std::uint32_t h, BodyKinematics<Scalar>& out) const {
     if (i < h || !holds(i - h) || !holds(i + h)) return false;
-    for (std::uint32_t j = i - h; j <= i + h; ++j) {
-      if ((flags_[j % N] & imu_gyro_clipped) != 0) return false;
-      if (j > i - h && (flags_[j % N] & imu_gap_before) != 0) return false;
-    }
+    // No clipped gyro in [i - h, i + h], no gap inside it: the flags ORed, tested once.
+    unsigned bad = flags_[(i - h) % N] & imu_gyro_clipped;
+    for (std::uint32_t j = i - h + 1; j <= i + h; ++j) bad |= flags_[j % N];
+    if ((bad & (imu_gyro_clipped | imu_gap_before)) != 0) return false;
     const std::uint32_t span_us = entries_[(i + h) % N].t_low - entries_[(i - h) % N].t_low;
     out.w = gyro(i);
     out.w_dot = (gyro(i + h) - gyro(i - h)) * (Scalar(1e6) / static_cast<Scalar>(span_us));

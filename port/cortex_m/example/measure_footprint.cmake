@@ -37,9 +37,14 @@ math(EXPR loop_milli "${without_steady_ticks} * ${milli_instructions_per_tick} /
 math(EXPR loop_instructions "(${loop_milli} + 500) / 1000")
 
 disassemble(${FIRMWARE} ${OUTPUT}.disassembly.txt disassembly)
-# The onboard check's per-sample work, where the compiler kept it out of line.
+# The onboard check's per-sample work, where the compiler kept it out of line; else the
+# update it was put in line into.
 string(REGEX MATCH "<(_ZN5aloft12OnboardCheck[^>]*use_sample[^>]*)>:" _ "${disassembly}")
 set(update_function ${CMAKE_MATCH_1})
+if(NOT update_function)
+  string(REGEX MATCH "<(_ZN5aloft12OnboardCheck[^>]*6update[^>]*)>:" _ "${disassembly}")
+  set(update_function ${CMAKE_MATCH_1})
+endif()
 worst_case_stack(${OUTPUT}.disassembly.txt "${CI_DIRS}" --report "${update_function}")
 set(update_stack_bytes null)
 if(update_function AND stack_report MATCHES "below [^ ]+ ([0-9]+)")
