@@ -82,13 +82,15 @@ TEST_CASE("the noise floor holds within x2 from 100 Hz to 8 kHz, filtered or not
     }
   }
   std::printf("noise floor within x2 on %d of %d flights; worst x%.2f\n", within, flights, worst);
-  // Measured at the commit that made the spectral floor: 65 of 66 on the tuning seeds
-  // (worst x2.21: 4 kHz behind 20 Hz, an impulse), 63 of 66 on the withheld ones (worst
-  // x5.8: 100 Hz behind 20 Hz, where 100 samples hold too few bins above the tumble to see
-  // the low-pass, and the differences' floor stands). The bar of issue 31 (every flight
-  // within x2) is not met in that corner; these checks keep it from getting worse.
-  CHECK(within >= flights - 3);
-  CHECK(worst < 6.0);
+  // Measured: 65 of 66 on the tuning seeds (worst x2.08: 4 kHz behind 20 Hz, an impulse
+  // flight) and 65 of 66 on the withheld ones (worst x2.12: 8 kHz behind 20 Hz, an
+  // impulse flight). Behind 20 Hz at 4-8 kHz the filter's knee lies under the tumble's
+  // harmonics: the spectrum above them gives the level times the cutoff to the 4th, not
+  // each, and the variance goes as the cutoff's -3rd power. The bar of issue 31 (every
+  // flight within x2) is missed there by one flight per set; these checks keep it from
+  // getting worse.
+  CHECK(within >= flights - 1);
+  CHECK(worst < 2.5);
 }
 
 TEST_CASE("noise alone behind a gyro's low-pass stays none", "[noise_floor][filtered]") {

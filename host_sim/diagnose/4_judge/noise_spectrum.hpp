@@ -9,7 +9,8 @@
 // least-squares quadratic taken off and a 4-term Blackman-Harris window (side lobes 92 dB
 // down, so the motion's 10 rad/s leaks less than a 0.001 rad/s noise puts in a bin); each
 // bin the median over the segments (not the mean), so that an impulse's step, whose
-// spectrum falls only as 1/f², in one or two segments does not pass for noise.
+// spectrum falls only as 1/f², in one or two segments does not pass for noise; divided by
+// that median's expected value for a noise of unit power, so the density is unbiased.
 #pragma once
 
 #include <Eigen/Core>
@@ -32,8 +33,9 @@ struct NoiseSpectrum {
 NoiseSpectrum welch_spectrum(const std::vector<Eigen::Vector3d>& readings, double sample_hz);
 
 // Segments shorter than this resolve too few bins above a tumble's harmonics; data
-// shorter than kShortestSpectrum give too few segments for their median.
+// shorter than kShortestSpectrum give fewer than four half-overlapping segments (a 100 Hz
+// flight of 0.8 s has 80 samples: four segments of 32).
 constexpr int kShortestSegment = 32;
-constexpr int kShortestSpectrum = 3 * kShortestSegment;
+constexpr int kShortestSpectrum = 5 * kShortestSegment / 2;
 
 }  // namespace aloft::host::diagnose
