@@ -27,6 +27,17 @@ constexpr std::uint32_t systick_processor_clock = 1u << 2;
 inline volatile std::uint32_t& scb_cpacr() { return *reinterpret_cast<volatile std::uint32_t*>(0xE000ED88u); }
 constexpr std::uint32_t cpacr_fpu_full_access = 0xFu << 20;
 
+// Floating-point context control register (PM0214 §4.6.2; ARMv7-M ARM B3.2.20), reset value
+// 0xC0000000: ASPEN set, so the first FPU instruction sets CONTROL.FPCA and every exception
+// from then on stacks the extended frame (PM0214 §2.3.7, Figure 12: 26 words, S0-S15 and
+// FPSCR besides the 8 core registers), with LSPEN set deferring the FP part (lazy stacking)
+// but reserving its room all the same. With ASPEN clear, FPCA stays 0 and every exception
+// stacks the 8-word basic frame; the FP registers are then not preserved across an
+// exception, which is sound only while no handler touches them (startup.cpp).
+inline volatile std::uint32_t& fpu_fpccr() { return *reinterpret_cast<volatile std::uint32_t*>(0xE000EF34u); }
+constexpr std::uint32_t fpccr_aspen = 1u << 31;
+constexpr std::uint32_t fpccr_lspen = 1u << 30;
+
 }  // namespace core
 }  // namespace port
 }  // namespace aloft

@@ -54,8 +54,17 @@ extern "C" __attribute__((section(".isr_vector"), used)) const Handler vector_ta
 };
 
 extern "C" void Reset_Handler() {
+  namespace core = aloft::port::core;
   // The FPU first: the compiler may use FP registers in any code below.
-  aloft::port::core::scb_cpacr() = aloft::port::core::scb_cpacr() | aloft::port::core::cpacr_fpu_full_access;
+  core::scb_cpacr() = core::scb_cpacr() | core::cpacr_fpu_full_access;
+  // No FP context on exception entry (core_registers.hpp, FPCCR): neither handler here
+  // (SysTick_Handler, Fault_Handler) nor anything it calls holds an FPU instruction, which
+  // the stack measurement checks on the linked image (port/host_tools/worst_case_stack.cpp
+  // fails otherwise), so the interrupted code's FP registers need no saving. Each
+  // exception then stacks 32 B (36 with the aligner), not 108: 144 B of worst-case stack
+  // for the two handlers. Cleared before any FPU instruction runs, so CONTROL.FPCA is
+  // never set.
+  core::fpu_fpccr() = core::fpu_fpccr() & ~(core::fpccr_aspen | core::fpccr_lspen);
   asm volatile("dsb\n\tisb" ::: "memory");
   for (std::uint32_t *src = __data_load, *dst = __data_start; dst < __data_end;) *dst++ = *src++;
   for (std::uint32_t* dst = __bss_start; dst < __bss_end;) *dst++ = 0;

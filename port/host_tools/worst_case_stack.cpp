@@ -13,8 +13,14 @@
 //     an edge of its own, since as an --indirect candidate every indirect call would reach
 //     it;
 //   - total: the deepest path from --root, plus for each --interrupt handler its own
-//     deepest path and the 108-byte exception frame of a core with the FPU in use (26
-//     words, aligned to 8). Handlers are summed, as if each could nest on the last.
+//     deepest path and the 36-byte basic exception frame (8 words, and the aligner word
+//     when the stack was not 8-byte aligned; PM0214 §2.3.7). Handlers are summed, as if
+//     each could nest on the last. The basic frame is the whole frame because the startup
+//     code clears FPCCR.ASPEN (port/cortex_m/startup.cpp), which is sound only while no
+//     handler uses the FPU: so the program fails when any function a handler reaches
+//     holds an FPU instruction (a `v` mnemonic, or a coprocessor access to p10/p11), or
+//     an indirect call it cannot follow. With ASPEN set, each frame would be 108 bytes
+//     (26 words: S0-S15 and FPSCR too, and the aligner).
 // Recursion makes the depth unbounded; the program says so and exits 1.
 //   worst_case_stack DISASSEMBLY.txt [--ci FILE]... --root SYMBOL [--interrupt SYMBOL]...
 //                    [--indirect SYMBOL]... [--call CALLER=CALLEE]... [--report SYMBOL]...
@@ -38,6 +44,7 @@ struct Function {
   long frame_from_compiler = -1;  // -1: not compiled with -fcallgraph-info
   bool dynamic_frame = false;
   bool indirect_calls = false;
+  bool uses_fpu = false;  // holds an FPU instruction
   std::set<std::string> callees;
   long frame() const { return frame_from_compiler >= 0 ? frame_from_compiler : frame_from_disassembly; }
 };
@@ -87,6 +94,11 @@ void read_disassembly(const std::string& path) {
       if (hash != std::string::npos) f.frame_from_disassembly += std::stol(args.substr(hash + 1), nullptr, 0);
     } else if (op.rfind("str", 0) == 0 && args.find("[sp, #-") != std::string::npos && args.back() == '!') {
       f.frame_from_disassembly += std::stol(args.substr(args.find("#-") + 2), nullptr, 0);
+    }
+    if (op[0] == 'v' || ((op.rfind("mcr", 0) == 0 || op.rfind("mrc", 0) == 0 || op.rfind("ldc", 0) == 0 ||
+                          op.rfind("stc", 0) == 0 || op.rfind("cdp", 0) == 0) &&
+                         (args.find("p10") != std::string::npos || args.find("p11") != std::string::npos))) {
+      f.uses_fpu = true;
     }
     const bool is_call = op == "bl" || op == "blx";
     const bool is_branch = !is_call && op[0] == 'b' && op.rfind("bic", 0) != 0 && op.rfind("bkpt", 0) != 0 &&
@@ -150,6 +162,20 @@ Depth deepest(const std::string& name) {
   return best;
 }
 
+// The first function reachable from `name` (itself included) that holds an FPU
+// instruction or an indirect call (which could reach one), or "" when there is none.
+std::string reaches_fpu(const std::string& name, std::set<std::string>& seen) {
+  const auto fit = functions.find(name);
+  if (fit == functions.end() || !seen.insert(name).second) return "";
+  if (fit->second.uses_fpu) return name + " (an FPU instruction)";
+  if (fit->second.indirect_calls) return name + " (an indirect call)";
+  for (const std::string& callee : fit->second.callees) {
+    const std::string found = reaches_fpu(callee, seen);
+    if (!found.empty()) return found;
+  }
+  return "";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -190,11 +216,19 @@ int main(int argc, char** argv) {
     for (const auto& s : std::vector<std::string>{root}) {
       if (!functions.count(s)) throw std::runtime_error("root " + s + " is not in the image");
     }
-    constexpr long exception_frame_bytes = 108;
+    // 8 words and the aligner (file comment): the frame of a core that stacks no FP context.
+    constexpr long exception_frame_bytes = 36;
     const Depth main_path = deepest(root);
     long interrupt_bytes = 0;
     for (const auto& handler : interrupts) {
       if (!functions.count(handler)) throw std::runtime_error(handler + " is not in the image");
+      std::set<std::string> seen;
+      const std::string fpu = reaches_fpu(handler, seen);
+      if (!fpu.empty()) {
+        throw std::runtime_error(
+            "interrupt " + handler + " reaches " + fpu +
+            ": the FPU context would have to be stacked (FPCCR.ASPEN set, a 108-byte frame)");
+      }
       interrupt_bytes += exception_frame_bytes + deepest(handler).bytes;
     }
     int from_compiler = 0;

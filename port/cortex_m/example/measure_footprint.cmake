@@ -10,7 +10,9 @@
 #     unwind tables, constructors); the stack is a section of its own and not counted.
 #   stack_bytes: worst-case depth of the whole firmware from GCC's -fcallgraph-info=su
 #     frame sizes and the call graph of the linked image (host/worst_case_stack.cpp),
-#     including the SysTick and fault handlers with their exception frames.
+#     including the SysTick and fault handlers, each with the basic 36-byte exception frame
+#     (the startup code stacks no FP context; the stack tool fails if a handler reaches an
+#     FPU instruction).
 #   heap_bytes: 0 by construction: the cortex_m port makes any heap use a link error.
 #   instructions_per_update: both images run under QEMU with -icount shift=0, where every
 #     guest instruction advances the virtual clock by exactly 1 ns, so SysTick (25 MHz)

@@ -9,8 +9,9 @@
 #     output), section by section (`size -A`); the stack is a section of its own.
 #   stack_bytes: worst-case depth of the flight firmware from GCC's -fcallgraph-info=su
 #     frame sizes and the linked image's call graph, including the SysTick and fault
-#     handlers with their exception frames; the bus's function pointers resolve to the
-#     SPI1 functions.
+#     handlers, each with the basic 36-byte exception frame (the startup code stacks no FP
+#     context; the stack tool fails if a handler reaches an FPU instruction); the bus's
+#     function pointers resolve to the SPI1 functions.
 #   heap_bytes: 0 by construction: the port makes any heap use a link error.
 #   details.records_flash_bytes, details.records_ram_bytes: what the flight records add
 #     (issue 23: <= 2 KiB flash, <= 256 B RAM): the flight image minus the same image built
