@@ -151,6 +151,7 @@ class Icm42688pDriver {
   Status poll(const SampleSink<Scalar>& sink);
   const DriverCounters& counters() const { return counters_; }
   const DriverSettings& settings() const { return settings_; }
+  const ImuBus& bus() const { return bus_; }
 
  private:
   Status select_bank(Bank bank);

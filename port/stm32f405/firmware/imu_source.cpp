@@ -31,4 +31,9 @@ aloft::Status imu_poll(const aloft::icm42688p::SampleSink<float>& sink) { return
 
 const aloft::icm42688p::DriverCounters& imu_counters() { return driver->counters(); }
 
+std::uint64_t imu_bus_now_us() {
+  const aloft::ImuBus& bus = driver->bus();
+  return bus.now_us(bus.context);
+}
+
 }  // namespace aloft_stm32f405

@@ -26,4 +26,7 @@ aloft::Status imu_poll(const aloft::icm42688p::SampleSink<float>& sink);
 // What the driver met since the bring-up.
 const aloft::icm42688p::DriverCounters& imu_counters();
 
+// The MCU's µs clock of the bus the driver was brought up on.
+std::uint64_t imu_bus_now_us();
+
 }  // namespace aloft_stm32f405

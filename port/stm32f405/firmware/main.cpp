@@ -158,22 +158,24 @@ void push_sample(void*, const aloft::ImuSample<float>& sample) {
   report_finished_flights();
 }
 
-// Runs the pipeline until the stream ends; the exit status.
-int run(const aloft::ImuBus& bus) {
+// The driver's sink: in flash, not on the stack under every sample's path.
+constexpr aloft::icm42688p::SampleSink<float> sample_sink{nullptr, push_sample};
+
+// Runs the pipeline until the stream ends; the exit status. The bus is the driver's own
+// copy (imu_bus_now_us), so main's frame, under every sample's path, holds none.
+int run() {
   ReportWriter out;
-  aloft::icm42688p::SampleSink<float> sink;
-  sink.push = push_sample;
-  std::uint64_t last_sample_at_us = bus.now_us(bus.context);
-  while (bus.now_us(bus.context) - last_sample_at_us < stream_end_after_us) {
+  std::uint64_t last_sample_at_us = aloft_stm32f405::imu_bus_now_us();
+  while (aloft_stm32f405::imu_bus_now_us() - last_sample_at_us < stream_end_after_us) {
     samples_this_poll = 0;
-    const aloft::Status polled = aloft_stm32f405::imu_poll(sink);
+    const aloft::Status polled = aloft_stm32f405::imu_poll(sample_sink);
     if (polled == aloft::Status::register_not_kept) {
       out.text("ICM-42688-P on ").text(bus_name).text(": a register lost its setting; rewritten").line();
     } else if (polled != aloft::Status::ok) {
       out.text("ICM-42688-P on ").text(bus_name).text(": ").text(aloft::describe(polled)).line();
       return exit_bus_failed;
     }
-    if (samples_this_poll > 0) last_sample_at_us = bus.now_us(bus.context);
+    if (samples_this_poll > 0) last_sample_at_us = aloft_stm32f405::imu_bus_now_us();
   }
   pipeline->finish();
   report_finished_flights();
@@ -190,12 +192,13 @@ int run(const aloft::ImuBus& bus) {
 // and decomposed when the image was built (flight_settings.hpp).
 ALOFT_COLD void start_pipeline() { pipeline.emplace(flight_inertia(), pipeline_settings()); }
 
-// Set-up: the sensor, the pipeline and the records; 0, or the exit status.
-// Out of line, so that its locals are off the stack before the per-sample path runs, and
-// the deepest path is the flight's, not this one stacked on it (footprint.json's
-// stack_bytes).
-ALOFT_COLD int set_up(const aloft::ImuBus& bus) {
+// Set-up: the board's bus, the sensor, the pipeline and the records; 0, or the exit status.
+// Out of line, so that its locals (the bus among them: the driver keeps its own copy) are
+// off the stack before the per-sample path runs, and the deepest path is the flight's, not
+// this one stacked on it (footprint.json's stack_bytes).
+ALOFT_COLD int set_up() {
   ReportWriter out;
+  const aloft::ImuBus bus = board_imu_bus();
   std::uint8_t who_am_i = 0;
   const aloft::Status found = aloft_stm32f405::imu_bring_up(bus, who_am_i);
   if (found == aloft::Status::sensor_not_found) {
@@ -219,8 +222,7 @@ ALOFT_COLD int set_up(const aloft::ImuBus& bus) {
 // Set-up, then the samples (the per-sample work is in push_sample).
 ALOFT_COLD int main() {
   aloft::port::init();
-  const aloft::ImuBus bus = board_imu_bus();
-  const int set_up_status = set_up(bus);
+  const int set_up_status = set_up();
   if (set_up_status != 0) return set_up_status;
-  return run(bus);
+  return run();
 }
