@@ -138,12 +138,13 @@ struct SampleSink {
 template <typename Scalar>
 class Icm42688pDriver {
  public:
-  // 4 packets (64 B of RAM): a poll takes every whole packet present, in as many bursts as
+  // 3 packets (48 B of RAM): a poll takes every whole packet present, in as many bursts as
   // that needs (the FIFO holds 128), and on a flight controller RAM is the scarcer
   // resource (issue 29: the STM32F405 image's RAM bar; 16 packets were 256 B, 8 were 128 B;
-  // 4 took that image from 8 B under its 4 KiB bar to 72 B under it, with its instructions
-  // per sample and its replay lines unchanged).
-  static constexpr std::uint16_t kBurstPackets = 4;
+  // with the 32-sample history that keeps the ring index a mask, 4 left that image 8 B over
+  // its 4 KiB bar and 3 bring it 8 B under, with its instructions per sample and its replay
+  // lines unchanged). A poll every millisecond at 4 kHz reads two bursts.
+  static constexpr std::uint16_t kBurstPackets = 3;
   static constexpr std::uint16_t kBurstBytes = kBurstPackets * kPacket3Bytes;
 
   Icm42688pDriver(const ImuBus& bus, const DriverSettings& settings)
