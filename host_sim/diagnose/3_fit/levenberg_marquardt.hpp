@@ -44,6 +44,13 @@ struct ArrowProblem {
 // The forward-difference step the fitter takes for a parameter of this value.
 double forward_difference_step(double value);
 
+// One block's residuals and Jacobian, columns [shared | local], as the fitter linearises
+// it: the problem's `jacobian` where it gives one, else forward differences of `residuals`
+// (p + m simulations, one more unless `known`, the residuals at this point, is given).
+void block_jacobian(const ArrowProblem& problem, int block, const Eigen::VectorXd& shared,
+                    const Eigen::VectorXd& local, const Eigen::VectorXd* known, Eigen::VectorXd& residuals,
+                    Eigen::MatrixXd& jacobian);
+
 struct LeastSquaresOptions {
   int max_iterations = 40;
   double relative_tolerance = 1e-7;  // stop when an accepted step gains less than this
