@@ -2,8 +2,9 @@
 # Installs the Debian packages aloft needs, and nothing when they are all present.
 #   scripts/install-deps.sh host   build and run the host program and its tests (gcc, and
 #                                  clang with its sanitizer and libFuzzer runtimes)
-#   scripts/install-deps.sh all    also the ARM cross toolchains and QEMU (target tests:
-#                                  armhf, cortex-m4f, stm32f405 on netduinoplus2)
+#   scripts/install-deps.sh all    also Ceres (a comparison test) and the ARM cross
+#                                  toolchains and QEMU (target tests: armhf, cortex-m4f,
+#                                  stm32f405 on netduinoplus2)
 # Needs root; uses sudo when not root.
 set -euo pipefail
 
@@ -14,6 +15,8 @@ host_packages=(
   clang libclang-rt-dev clang-format
   parallel
 )
+# Tests only, never linked into aloft: the fitter weighed against Ceres (tests/diagnose/ceres/).
+comparison_packages=(libceres-dev)
 target_packages=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib
   g++-arm-linux-gnueabihf qemu-user qemu-system-arm
@@ -21,7 +24,7 @@ target_packages=(
 
 case "${1:-host}" in
   host) packages=("${host_packages[@]}") ;;
-  all) packages=("${host_packages[@]}" "${target_packages[@]}") ;;
+  all) packages=("${host_packages[@]}" "${comparison_packages[@]}" "${target_packages[@]}") ;;
   *) echo "usage: $0 [host|all]" >&2; exit 2 ;;
 esac
 

@@ -12,6 +12,35 @@ namespace aloft::host::diagnose {
 
 double forward_difference_step(double value) { return 1e-7 * std::max(1.0, std::abs(value)); }
 
+void block_jacobian(const ArrowProblem& problem, int block, const Eigen::VectorXd& shared,
+                    const Eigen::VectorXd& local, const Eigen::VectorXd* known, Eigen::VectorXd& residuals,
+                    Eigen::MatrixXd& jacobian) {
+  if (problem.jacobian && problem.jacobian(block, shared, local, residuals, jacobian)) return;
+  if (known != nullptr) {
+    residuals = *known;
+  } else {
+    problem.residuals(block, shared, local, residuals);
+  }
+  const int p = problem.shared_count;
+  const int m = problem.local_count;
+  jacobian.resize(residuals.size(), p + m);
+  Eigen::VectorXd moved;
+  for (int i = 0; i < p; ++i) {
+    Eigen::VectorXd s = shared;
+    const double h = forward_difference_step(s(i));
+    s(i) += h;
+    problem.residuals(block, s, local, moved);
+    jacobian.col(i) = (moved - residuals) / h;
+  }
+  for (int i = 0; i < m; ++i) {
+    Eigen::VectorXd l = local;
+    const double h = forward_difference_step(l(i));
+    l(i) += h;
+    problem.residuals(block, shared, l, moved);
+    jacobian.col(p + i) = (moved - residuals) / h;
+  }
+}
+
 namespace {
 
 struct Point {
@@ -75,35 +104,12 @@ BlockNormal normal_of(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r) {
   return out;
 }
 
-// `known`: the block's residuals at (shared, local) when already computed (nullptr: not).
 BlockNormal block_normal(const ArrowProblem& problem, int block, const Eigen::VectorXd& shared,
                          const Eigen::VectorXd& local, const Eigen::VectorXd* known) {
-  const int p = problem.shared_count;
-  const int m = problem.local_count;
-  Eigen::VectorXd r0, r1;
+  Eigen::VectorXd r;
   Eigen::MatrixXd jac;
-  if (problem.jacobian && problem.jacobian(block, shared, local, r0, jac)) return normal_of(jac, r0);
-  if (known != nullptr) {
-    r0 = *known;
-  } else {
-    problem.residuals(block, shared, local, r0);
-  }
-  jac.resize(r0.size(), p + m);
-  for (int i = 0; i < p; ++i) {
-    Eigen::VectorXd s = shared;
-    const double h = forward_difference_step(s(i));
-    s(i) += h;
-    problem.residuals(block, s, local, r1);
-    jac.col(i) = (r1 - r0) / h;
-  }
-  for (int i = 0; i < m; ++i) {
-    Eigen::VectorXd l = local;
-    const double h = forward_difference_step(l(i));
-    l(i) += h;
-    problem.residuals(block, shared, l, r1);
-    jac.col(p + i) = (r1 - r0) / h;
-  }
-  return normal_of(jac, r0);
+  block_jacobian(problem, block, shared, local, known, r, jac);
+  return normal_of(jac, r);
 }
 
 std::vector<BlockNormal> block_normals(const ArrowProblem& problem, const Eigen::VectorXd& shared,

@@ -6,7 +6,8 @@
 // because that solver wants one dense (or sparse-QR) Jacobian of the whole problem: a
 // 60-flight session has ~180,000 residuals by ~190 parameters, while the normal
 // equations assembled block by block below are only 190 x 190. No Debian-packaged
-// solver other than Ceres (not installed) exploits that structure.
+// solver other than Ceres exploits that structure, and Ceres, weighed on the same fits,
+// reached the same minima in more time (docs/diagnose.md; tests/diagnose/ceres/).
 #pragma once
 
 #include <Eigen/Core>
@@ -43,6 +44,13 @@ struct ArrowProblem {
 
 // The forward-difference step the fitter takes for a parameter of this value.
 double forward_difference_step(double value);
+
+// One block's residuals and Jacobian, columns [shared | local], as the fitter linearises
+// it: the problem's `jacobian` where it gives one, else forward differences of `residuals`
+// (p + m simulations, one more unless `known`, the residuals at this point, is given).
+void block_jacobian(const ArrowProblem& problem, int block, const Eigen::VectorXd& shared,
+                    const Eigen::VectorXd& local, const Eigen::VectorXd* known, Eigen::VectorXd& residuals,
+                    Eigen::MatrixXd& jacobian);
 
 struct LeastSquaresOptions {
   int max_iterations = 40;
