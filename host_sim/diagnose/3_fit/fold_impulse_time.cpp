@@ -9,8 +9,8 @@ namespace {
 // The fold's fit or the all-data solution moved onto the fold, by training cost; the
 // search's own unless it lies outside the window of the other minima (a clearly other
 // basin), so that fits of one basin keep the searched time.
-EffectFit lower_training_cost(const EffectFit& searched, const EffectFit& all_data, const NominalInertia& nominal,
-                              const FlightData& train) {
+EffectFit lower_training_cost(const EffectFit& searched, const EffectFit& all_data,
+                              const NominalInertia& nominal, const FlightData& train) {
   const double all_data_time = all_data.flights[0].impulse_time_s;
   if (searched.flights[0].impulse_time_s == all_data_time) return searched;
   EffectFit moved = refit_from_solution(all_data, nominal, train, all_data_time);
@@ -19,7 +19,8 @@ EffectFit lower_training_cost(const EffectFit& searched, const EffectFit& all_da
 }
 
 // `fit` with its jump in the middle of the gap between the training samples either side.
-EffectFit jump_centred_in_unseen_gap(const EffectFit& fit, const NominalInertia& nominal, const FlightData& train) {
+EffectFit jump_centred_in_unseen_gap(const EffectFit& fit, const NominalInertia& nominal,
+                                     const FlightData& train) {
   const Flight& flight = *train.flight;
   const std::size_t n = flight.size();
   const double jump_s = fit.flights[0].impulse_time_s;
@@ -46,8 +47,8 @@ EffectFit jump_centred_in_unseen_gap(const EffectFit& fit, const NominalInertia&
 
 }  // namespace
 
-EffectFit fold_impulse_fit(const EffectFit& searched, const EffectFit& all_data, const NominalInertia& nominal,
-                           const FlightData& train) {
+EffectFit fold_impulse_fit(const EffectFit& searched, const EffectFit& all_data,
+                           const NominalInertia& nominal, const FlightData& train) {
   return jump_centred_in_unseen_gap(lower_training_cost(searched, all_data, nominal, train), nominal, train);
 }
 

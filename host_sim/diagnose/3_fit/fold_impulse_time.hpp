@@ -38,7 +38,7 @@ namespace aloft::host::diagnose {
 // Gauss-Newton step (effect_fit.hpp, refit_from_solution). The jump stays where a
 // training sample lies next to it on either side, or where the gap reaches the flight's
 // end or its settling time.
-EffectFit fold_impulse_fit(const EffectFit& searched, const EffectFit& all_data, const NominalInertia& nominal,
-                           const FlightData& train);
+EffectFit fold_impulse_fit(const EffectFit& searched, const EffectFit& all_data,
+                           const NominalInertia& nominal, const FlightData& train);
 
 }  // namespace aloft::host::diagnose
