@@ -25,6 +25,8 @@
 // anywhere in the gap alike).
 #pragma once
 
+#include <cstddef>
+
 #include "diagnose/2_model/nominal_inertia.hpp"
 #include "diagnose/3_fit/effect_fit.hpp"
 #include "diagnose/3_fit/flight_data.hpp"
@@ -38,6 +40,14 @@ namespace aloft::host::diagnose {
 // Gauss-Newton step (effect_fit.hpp, refit_from_solution). The jump stays where a
 // training sample lies next to it on either side, or where the gap reaches the flight's
 // end or its settling time.
+// The samples between the training samples of `train` either side of `fit`'s jump,
+// [first, end): none where a training sample lies next to the jump on both sides (the
+// data pin it) or where the gap reaches the flight's end.
+struct SampleRange {
+  std::size_t first = 0, end = 0;
+};
+SampleRange unseen_jump_gap(const EffectFit& fit, const FlightData& train);
+
 EffectFit fold_impulse_fit(const EffectFit& searched, const EffectFit& all_data,
                            const NominalInertia& nominal, const FlightData& train);
 

@@ -1,6 +1,7 @@
 #include "diagnose/5_flow/folds_within_flight.hpp"
 
 #include "diagnose/2_model/effect_descriptor.hpp"
+#include "diagnose/2_model/flight_model.hpp"
 #include "diagnose/3_fit/fold_impulse_time.hpp"
 #include "diagnose/4_judge/tensor_intervals.hpp"
 
@@ -25,6 +26,13 @@ void FoldsWithinFlight::judge_held_out(Candidate& c, const JudgedFlights::FoldFi
       },
       sums));
   set_heldout_gap(c, {sums});
+  if (!has_searched_time(model_of(c.fit, nominal_, 0))) return;
+  std::vector<char> unseen(flight_.all[0].flight->size(), 0);
+  for (std::size_t f = 0; f < c.fold_fits.size(); ++f) {
+    const SampleRange gap = unseen_jump_gap(c.fold_fits[f], flight_.train[0][f]);
+    for (std::size_t k = gap.first; k < gap.end; ++k) unseen[k] = 1;
+  }
+  c.unseen_jump = {std::move(unseen)};
 }
 
 Candidate FoldsWithinFlight::nominal_model() const {
