@@ -34,7 +34,8 @@ Flight impulse_flight(const NominalInertia& nominal) {
 
 }  // namespace
 
-TEST_CASE("fold_impulse_fit: a jump the fold cannot see goes to the middle of its gap", "[fold_impulse_time]") {
+TEST_CASE("fold_impulse_fit: a jump the fold cannot see goes to the middle of its gap",
+          "[fold_impulse_time]") {
   const NominalInertia nominal = NominalInertia::of_tensor(Eigen::Vector3d(0.01, 0.02, 0.03).asDiagonal());
   const Flight flight = impulse_flight(nominal);
   const Folds folds = interleaved_folds(kSamples);
