@@ -551,6 +551,27 @@ EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalIne
   return result_of(setup, minimise(problem, theta, rates), p);
 }
 
+EffectFit refit_from_solution(const EffectFit& fit, const NominalInertia& nominal, const FlightData& data,
+                              double impulse_time_s) {
+  const std::vector<FlightData> flights{data};
+  Setup setup{fit.effect,     &nominal, &flights,         {fit.flights[0].ref},
+              impulse_time_s, fit.base, Eigen::VectorXd()};
+  const ArrowProblem problem = problem_of(setup, static_cast<int>(fit.theta.size()));
+  const std::vector<Eigen::VectorXd> rates{Eigen::VectorXd(fit.flights[0].omega_ref)};
+  const LeastSquaresResult step = gauss_newton_step(problem, fit.theta, rates);
+  EffectFit out = fit;
+  out.theta = step.shared;
+  out.flights[0].omega_ref = Vec3(step.local[0]);
+  out.flights[0].impulse_time_s = impulse_time_s;
+  out.cost = step.cost;
+  out.residual_count = 0;
+  for (std::size_t k = 0; k < data.flight->size(); ++k) {
+    if (data.mask[k] && data.flight->usable[k]) out.residual_count += 3;
+  }
+  out.other_minima.clear();
+  return out;
+}
+
 std::vector<Eigen::VectorXd> leave_one_flight_out(const EffectFit& fit, const NominalInertia& nominal,
                                                   const std::vector<FlightData>& data, unsigned threads) {
   Setup setup{fit.effect, &nominal, &data, {}, 0.0, fit.base, Eigen::VectorXd(), threads};

@@ -75,6 +75,19 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
                             const std::vector<Eigen::VectorXd>& local_start,
                             const LeastSquaresOptions& options = {});
 
+// One Gauss-Newton step from (shared, local) in the directions the normal equations
+// inform (those nearly flat left out: their step rides on the differences' last bits), the
+// point reached and its cost (no normal_matrix). The first iteration of a refit started
+// there: from the solution of a problem that had more residuals than this one, it reaches
+// this one's solution to first order in those directions (exactly when the residuals are
+// linear in the parameters), so the residuals left out do not steer it to that order.
+// Where the step does not lower the cost by more than the last bits could (a parameter
+// the data hardly inform, moved where the model is far from linear), Marquardt-damped
+// steps are tried, more damped each time, and where none pays the point stays: the cost
+// is then at its minimum within what the linearisation resolves.
+LeastSquaresResult gauss_newton_step(const ArrowProblem& problem, const Eigen::VectorXd& shared,
+                                     const std::vector<Eigen::VectorXd>& local);
+
 // Leave-one-block-out: for each block j, the shared parameters after one Gauss-Newton
 // step, from `shared`/`local` (normally the all-blocks solution), on the problem without
 // block j. The normal equations are linearised once; each block's locals are eliminated

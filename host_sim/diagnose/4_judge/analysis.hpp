@@ -90,6 +90,10 @@ struct Candidate {
   std::vector<std::vector<Eigen::Vector3d>> heldout_readings;
   // Per flight only: the fits of the two folds (the next step starts from them).
   std::vector<EffectFit> fold_fits;
+  // Per flight and sample, with an impulse only: judged by a fold that could not see on
+  // which side of the jump the sample lies (3_fit/fold_impulse_time.hpp, the gap between
+  // the fold's training samples either side of its jump); empty without an impulse.
+  std::vector<std::vector<char>> unseen_jump;
 };
 
 // One effect of the final model (SPEC §4 verdict.effects).

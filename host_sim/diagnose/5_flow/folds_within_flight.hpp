@@ -18,8 +18,9 @@ class FoldsWithinFlight : public HeldOutRule {
       : flight_(flight), nominal_(nominal), none_full_(none_full) {}
 
   Candidate nominal_model() const override;
-  // `added` fitted with the model of `base` on all the data (its parameters) and on each
-  // fold (judged on the other), each fit starting from the base model's.
+  // `added` fitted with the model of `base` on all the data (its parameters), then on each
+  // fold (judged on the other): one Gauss-Newton step from the all-data solution, or a
+  // refit from the base model's fold fit where an impulse's time is the fold's own.
   Candidate evaluate(const Candidate& base, Effect added) const override;
   // The fit's own covariance, widened for the residuals' serial correlation.
   bool tensor_report(const Analysis& analysis, TensorReport& report) const override;

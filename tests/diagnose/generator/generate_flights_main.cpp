@@ -4,6 +4,7 @@
 //
 //   aloft_generate_flights --out DIR                 the withheld-effect cases
 //   aloft_generate_flights --out DIR --random 20 --seed 7   20 random flights
+//   aloft_generate_flights --out DIR --compound      the compound (two-effect) cases
 //   aloft_generate_flights --out DIR --phone         the phone-like flights and sessions
 //                                                    (imu.csv is the whole log; the
 //                                                    flights are in segments.csv)
@@ -13,6 +14,7 @@
 #include <iostream>
 
 #include "body_catalogue.hpp"
+#include "compound_effect_cases.hpp"
 #include "common/atomic_file.hpp"
 #include "common/commands.hpp"
 #include "flight_files.hpp"
@@ -77,7 +79,9 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 1;
   int limit = -1;
   bool phone = false;
+  bool compound = false;
   app.add_option("--out", out_dir, "folder to write into")->required();
+  app.add_flag("--compound", compound, "write the compound flights, two effects each (issue 8)");
   app.add_flag("--phone", phone, "write the phone-like flights and sessions (issue 8)");
   app.add_option("--random", random_count,
                  "write this many random flights instead of the "
@@ -95,8 +99,9 @@ int main(int argc, char** argv) {
                                          [&](std::ostream& o) { o << all.dump(1) << '\n'; });
       return 0;
     }
-    std::vector<FlightCase> cases =
-        random_count > 0 ? random_cases(random_count, seed) : withheld_effect_cases();
+    std::vector<FlightCase> cases = random_count > 0 ? random_cases(random_count, seed)
+                                    : compound       ? compound_effect_cases()
+                                                     : withheld_effect_cases();
     if (limit >= 0 && std::size_t(limit) < cases.size()) cases.resize(std::size_t(limit));
     nlohmann::json all = nlohmann::json::object();
     for (const FlightCase& c : cases) {
