@@ -64,9 +64,10 @@ struct EffectHooks {
 constexpr double kLargestSensibleScaleError = 0.30;
 
 // Where the fitter starts an effect whose parameters enter non-linearly and whose
-// neutral model is a limit rather than a point (neutral_at_zero false): each start of a
-// grid gets a few iterations, the best is refined, and the best start that reached
-// another minimum is refined too and reported (3_fit/effect_fit.hpp, OtherMinimum).
+// neutral model is a limit rather than a point (neutral_at_zero false): the cost of each
+// start of a grid is looked at first (one simulation each), the best is refined, and the
+// best other start within the search window is refined too and reported when it reaches
+// another minimum (3_fit/effect_fit.hpp, OtherMinimum).
 struct StartGrid {
   std::vector<Eigen::VectorXd> (*starts)() = nullptr;  // in the order that breaks a tie
   // Two minima are distinct when a parameter differs by more than this (theta units).

@@ -294,6 +294,11 @@ LeastSquaresResult gauss_newton_step(const ArrowProblem& problem, const Eigen::V
   return result;
 }
 
+double cost_at(const ArrowProblem& problem, const Eigen::VectorXd& shared,
+               const std::vector<Eigen::VectorXd>& local) {
+  return evaluate(problem, Point{shared, local}).cost;
+}
+
 std::vector<Eigen::VectorXd> leave_one_block_out(const ArrowProblem& problem, const Eigen::VectorXd& shared,
                                                  const std::vector<Eigen::VectorXd>& local) {
   const int p = problem.shared_count;

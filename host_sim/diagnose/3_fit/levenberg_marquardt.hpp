@@ -88,6 +88,11 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
 LeastSquaresResult gauss_newton_step(const ArrowProblem& problem, const Eigen::VectorXd& shared,
                                      const std::vector<Eigen::VectorXd>& local);
 
+// The sum of squared residuals at one point, without a Jacobian: one simulation of each
+// block. What a search that looks over a whole range before refining pays per point.
+double cost_at(const ArrowProblem& problem, const Eigen::VectorXd& shared,
+               const std::vector<Eigen::VectorXd>& local);
+
 // Leave-one-block-out: for each block j, the shared parameters after one Gauss-Newton
 // step, from `shared`/`local` (normally the all-blocks solution), on the problem without
 // block j. The normal equations are linearised once; each block's locals are eliminated

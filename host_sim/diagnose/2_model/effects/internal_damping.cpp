@@ -48,9 +48,9 @@ Eigen::VectorXd rotor_theta(double fraction, double rate) {
 }
 
 // The rotor's size and coupling enter non-linearly, and "no rotor" is a limit, not a
-// point: a small grid of plausible rotors, each given a few iterations with the initial
-// rate free (a tumbling flight's nominal fit can be far from the rate that suits a damped
-// one).
+// point: a small grid of plausible rotors, each costed with the rigid body's fitted
+// initial rate; the refinement from the best then frees the rate (a tumbling flight's
+// nominal fit can be far from the rate that suits a damped one).
 std::vector<Eigen::VectorXd> plausible_rotors() {
   std::vector<Eigen::VectorXd> starts;
   for (double fraction : {0.03, 0.1, 0.3}) {
