@@ -4,8 +4,9 @@
 //     axial moment changed by h / w_axis, exactly; not with a transverse h, and not
 //     across flights at different axial rates;
 //   - the diagnosis: rotor sessions named a rotor, look-alike sessions (impulses, moments
-//     on bodies of revolution, filtered noise, gyro biases) never (4_judge/told_apart.hpp;
-//     docs/diagnose.md, "A rotor inside").
+//     on bodies of revolution, filtered noise, gyro biases, the stopped wheel: wrong moments
+//     on every body) never, and a rotor with wrong moments named as often as measured
+//     (4_judge/told_apart.hpp; docs/diagnose.md, "A rotor inside").
 #include <catch2/catch.hpp>
 
 #include <algorithm>
