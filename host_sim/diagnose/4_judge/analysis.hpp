@@ -49,6 +49,13 @@ struct Where {
   std::optional<Invariants> invariants;  // per flight only
 };
 
+// One flight's own fit of an effect: its parameters and their covariance (the fit's own,
+// not widened by the flight's noise correlation); empty when the fit gave none.
+struct OwnFit {
+  Eigen::VectorXd theta;
+  Eigen::MatrixXd covariance;
+};
+
 struct Candidate {
   Effect effect = Effect::none;
   // Compound models (stepwise_selection.hpp): the effects fitted with `effect`, and
@@ -86,6 +93,12 @@ struct Candidate {
   std::vector<Alternative> alternatives;
   // Session only: the effect parameters fitted without each flight (leave one flight out).
   std::vector<Eigen::VectorXd> heldout_theta;
+  // Session only, an effect named only when told apart (told_apart.hpp) added to a base:
+  // each flight's own fit of the base and the effect together, the effect's part (the
+  // pooled flights' order). Whether the flights share one value of the effect is judged
+  // on these: fitted alone, the effect would take up part of what the base explains,
+  // differently in each flight (a rotor alone takes up wrong moments by each flight's rate).
+  std::vector<OwnFit> flights_own_fits;
   // Held-out predictions per flight and sample (each from the fold that did not see it).
   std::vector<std::vector<Eigen::Vector3d>> heldout_readings;
   // Per flight only: the fits of the two folds (the next step starts from them).

@@ -16,40 +16,70 @@ const Candidate* own_candidate(const Analysis& a, Effect effect) {
   return nullptr;
 }
 
+// The scatter of the flights' own estimates `theta` (their covariances `covariance`
+// widened already) about their precision-weighted mean; none for fewer than 3.
+std::optional<BetweenFlightScatter> scatter_of(Effect effect, const std::vector<Eigen::VectorXd>& theta,
+                                               const std::vector<Eigen::MatrixXd>& covariance) {
+  const int n = static_cast<int>(theta.size());
+  if (n < 3) return std::nullopt;
+  const Eigen::Index p = theta.front().size();
+  std::vector<Eigen::MatrixXd> precision;
+  Eigen::MatrixXd weight = Eigen::MatrixXd::Zero(p, p);
+  Eigen::VectorXd weighted = Eigen::VectorXd::Zero(p);
+  for (int j = 0; j < n; ++j) {
+    precision.push_back(
+        covariance[static_cast<std::size_t>(j)].completeOrthogonalDecomposition().pseudoInverse());
+    weight += precision.back();
+    weighted += precision.back() * theta[static_cast<std::size_t>(j)];
+  }
+  const Eigen::VectorXd mean = weight.completeOrthogonalDecomposition().solve(weighted);
+  double chi_square = 0.0;
+  for (int j = 0; j < n; ++j) {
+    const Eigen::VectorXd d = theta[static_cast<std::size_t>(j)] - mean;
+    chi_square += d.dot(precision[static_cast<std::size_t>(j)] * d);
+  }
+  BetweenFlightScatter out;
+  out.effect = effect;
+  out.flights = n;
+  out.chi_square_per_dof = chi_square / (static_cast<double>(n - 1) * static_cast<double>(p));
+  return out;
+}
+
 }  // namespace
 
 std::optional<BetweenFlightScatter> between_flight_scatter(Effect effect,
                                                            const std::vector<const Analysis*>& flights) {
   std::vector<Eigen::VectorXd> theta;
-  std::vector<Eigen::MatrixXd> precision;
+  std::vector<Eigen::MatrixXd> covariance;
   std::vector<double> shrinks;
   for (const Analysis* a : flights) {
     const Candidate* c = a ? own_candidate(*a, effect) : nullptr;
     if (!c || c->fit.theta_covariance.rows() != c->fit.theta.size() || c->fit.theta.size() == 0) continue;
-    const Eigen::MatrixXd covariance = c->fit.theta_covariance * a->where.noise_correlation;
     theta.push_back(c->fit.theta);
-    precision.push_back(covariance.completeOrthogonalDecomposition().pseudoInverse());
+    covariance.push_back(c->fit.theta_covariance * a->where.noise_correlation);
     shrinks.push_back(c->shrink);
   }
-  const int n = static_cast<int>(theta.size());
-  if (n < 3) return std::nullopt;
-  const Eigen::Index p = theta.front().size();
-  Eigen::MatrixXd weight = Eigen::MatrixXd::Zero(p, p);
-  Eigen::VectorXd weighted = Eigen::VectorXd::Zero(p);
-  for (int j = 0; j < n; ++j) {
-    weight += precision[j];
-    weighted += precision[j] * theta[j];
-  }
-  const Eigen::VectorXd mean = weight.completeOrthogonalDecomposition().solve(weighted);
-  double chi_square = 0.0;
-  for (int j = 0; j < n; ++j) chi_square += (theta[j] - mean).dot(precision[j] * (theta[j] - mean));
-  BetweenFlightScatter out;
-  out.effect = effect;
-  out.flights = n;
-  out.chi_square_per_dof = chi_square / (static_cast<double>(n - 1) * static_cast<double>(p));
-  std::nth_element(shrinks.begin(), shrinks.begin() + n / 2, shrinks.end());
-  out.median_own_shrink = shrinks[static_cast<std::size_t>(n / 2)];
+  std::optional<BetweenFlightScatter> out = scatter_of(effect, theta, covariance);
+  if (!out) return out;
+  const std::size_t n = shrinks.size();
+  std::nth_element(shrinks.begin(), shrinks.begin() + static_cast<std::ptrdiff_t>(n / 2), shrinks.end());
+  out->median_own_shrink = shrinks[n / 2];
   return out;
+}
+
+std::optional<BetweenFlightScatter> between_flight_scatter(const Candidate& candidate,
+                                                           const std::vector<const Analysis*>& flights) {
+  if (candidate.base.empty()) return between_flight_scatter(candidate.effect, flights);
+  std::vector<Eigen::VectorXd> theta;
+  std::vector<Eigen::MatrixXd> covariance;
+  for (std::size_t j = 0; j < candidate.flights_own_fits.size() && j < flights.size(); ++j) {
+    const OwnFit& own = candidate.flights_own_fits[j];
+    if (own.theta.size() == 0 || own.covariance.rows() != own.theta.size() || !own.theta.allFinite())
+      continue;
+    theta.push_back(own.theta);
+    covariance.push_back(own.covariance * flights[j]->where.noise_correlation);
+  }
+  return scatter_of(candidate.effect, theta, covariance);
 }
 
 std::string between_flight_scatter_note(const BetweenFlightScatter& s, double pooled_shrink) {

@@ -30,6 +30,12 @@ struct BetweenFlightScatter {
 std::optional<BetweenFlightScatter> between_flight_scatter(Effect effect,
                                                            const std::vector<const Analysis*>& flights);
 
+// The same for a session's candidate (`flights`: each flight's own analysis, in the pooled
+// order): added to a base, on the flights' own fits of that base and the effect together
+// (Candidate::flights_own_fits; median_own_shrink then 0, unmeasured); alone, as above.
+std::optional<BetweenFlightScatter> between_flight_scatter(const Candidate& candidate,
+                                                           const std::vector<const Analysis*>& flights);
+
 // The report's note: the pooled shrink beside the flights' own and their scatter.
 std::string between_flight_scatter_note(const BetweenFlightScatter& scatter, double pooled_shrink);
 

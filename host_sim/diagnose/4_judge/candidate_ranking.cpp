@@ -186,7 +186,7 @@ void score_candidates(std::vector<Candidate>& all, const Candidate& reference, c
     }
     judge_physics(c);
     if (describe(c.effect).named_only_when_told_apart && !context.own_analyses.empty()) {
-      const std::string why = flights_disagree_on(c.effect, context.own_analyses);
+      const std::string why = flights_disagree_on(c, context.own_analyses);
       if (!why.empty()) {
         c.physical = false;
         c.note = why;

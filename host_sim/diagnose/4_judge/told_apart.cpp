@@ -6,10 +6,12 @@
 
 namespace aloft::host::diagnose {
 
-std::string flights_disagree_on(Effect effect, const std::vector<const Analysis*>& own) {
-  const auto scatter = between_flight_scatter(effect, own);
+std::string flights_disagree_on(const Candidate& candidate, const std::vector<const Analysis*>& own) {
+  const auto scatter = between_flight_scatter(candidate, own);
   if (!scatter || scatter->chi_square_per_dof <= kFlightsDisagree) return {};
-  return std::string(effect_name(effect)) +
+  std::string on;
+  for (Effect e : candidate.base) on += std::string(on.empty() ? " on " : " + ") + effect_name(e);
+  return std::string(effect_name(candidate.effect)) + on +
          printf_text(
              ": the flights' own fits scatter %.3g x beyond their uncertainty (chi-square per "
              "degree of freedom; at most %.0f for one shared value), so the flights share no one value",

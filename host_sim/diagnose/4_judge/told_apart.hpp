@@ -10,7 +10,11 @@
 //   within their errors (between_flight_scatter.hpp: chi-square per degree of freedom at
 //   most kFlightsDisagree); where they do not, the ranking rules it out. An axial moment
 //   change mimics h_a = dI_a w_a, which differs from flight to flight with the axial rate;
-//   a knock, a bias or the racquet's own motion has no one h either;
+//   a knock, a bias or the racquet's own motion has no one h either. At a later step the
+//   flights' own fits are of the rotor on that step's base (base effects and rotor fitted
+//   per flight): a rotor fitted alone on a body whose moments are also wrong takes up part
+//   of the moment error, differently by each flight's rate, and the flights would
+//   disagree on h though they share one;
 // - and there its held-out score beats the best candidate of every other effect beyond a
 //   tie (confidence.hpp, scores_tie).
 // Within one flight nothing does: the other effect heads the step, and the rotor, where it
@@ -25,10 +29,10 @@
 
 namespace aloft::host::diagnose {
 
-// Why a session rules `effect` out: the flights' own fits of it (`own`: each flight's own
-// analysis) scatter beyond kFlightsDisagree. Empty: they agree, or fewer than three
-// flights have a fit of it.
-std::string flights_disagree_on(Effect effect, const std::vector<const Analysis*>& own);
+// Why a session rules `candidate` out: the flights' own fits of its effect (on its base,
+// between_flight_scatter.hpp; `own`: each flight's own analysis) scatter beyond
+// kFlightsDisagree. Empty: they agree, or fewer than three flights have a fit of it.
+std::string flights_disagree_on(const Candidate& candidate, const std::vector<const Analysis*>& own);
 
 struct NotToldApart {
   std::string why;                 // empty: told apart

@@ -93,6 +93,24 @@ void FlightsLeftOut::judge_leaving_flights_out(Candidate& c) const {
   set_heldout_gap(c, sums);
 }
 
+// Each flight's own fit of c's model (its base and its effect together), started from
+// the pooled fit; the effect's part of it (told_apart.hpp).
+std::vector<OwnFit> FlightsLeftOut::fit_each_flight(const Candidate& base, const Candidate& c) const {
+  std::vector<OwnFit> out(flights_.size());
+  const int count = effect_parameter_count(c.effect);
+  parallel_for(flights_.size(), threads_, [&](std::size_t j) {
+    EffectFit base_j = base.fit;
+    base_j.flights = {base.fit.flights[j]};
+    const EffectFit fit = fit_added_effect(base_j, c.effect, nominal_, {flights_.all[j]}, &c.fit.theta);
+    const int offset = theta_offset(model_of(fit, nominal_, 0), c.effect);
+    if (offset < 0 || offset + count > fit.theta.size() || fit.theta_covariance.rows() != fit.theta.size())
+      return;
+    out[j].theta = fit.theta.segment(offset, count);
+    out[j].covariance = fit.theta_covariance.block(offset, offset, count, count);
+  });
+  return out;
+}
+
 Candidate FlightsLeftOut::evaluate(const Candidate& base, Effect added) const {
   Candidate c;
   c.effect = added;
@@ -105,6 +123,8 @@ Candidate FlightsLeftOut::evaluate(const Candidate& base, Effect added) const {
   c.fit = c.base.empty() ? fit_pooled(added) : fit_added_effect(base.fit, added, nominal_, flights_.all);
   c.params = effect_parameters(model_of(c.fit, nominal_, 0), c.fit.theta);
   judge_leaving_flights_out(c);
+  if (describe(added).named_only_when_told_apart && !c.base.empty())
+    c.flights_own_fits = fit_each_flight(base, c);
   if (!std::isfinite(c.heldout_rms_rel_err)) {
     // Leaving a flight out of a nearly degenerate joint fit (two effects the pool can
     // hardly tell apart) can throw its parameters anywhere: no verdict from that.

@@ -30,7 +30,8 @@ class FlightsLeftOut : public HeldOutRule {
   // put together.
   Candidate nominal_model() const override;
   // The shared parameters fitted to every flight, judged by leaving one flight out; an
-  // impulse is not evaluated.
+  // impulse is not evaluated. An effect named only when told apart, added to a base, also
+  // gets each flight's own fit of the two together (Candidate::flights_own_fits).
   Candidate evaluate(const Candidate& base, Effect added) const override;
   // A jackknife over the flights' leave-one-out fits.
   bool tensor_report(const Analysis& analysis, TensorReport& report) const override;
@@ -38,6 +39,7 @@ class FlightsLeftOut : public HeldOutRule {
  private:
   EffectFit fit_pooled(Effect effect) const;
   void judge_leaving_flights_out(Candidate& c) const;
+  std::vector<OwnFit> fit_each_flight(const Candidate& base, const Candidate& c) const;
 
   const JudgedFlights& flights_;
   const std::vector<const Analysis*>& own_;

@@ -12,7 +12,7 @@ std::vector<SessionCase> rotor_session_cases(RotorSeeds seeds, int per_kind, int
   const auto& bodies = body_names();
   std::vector<SessionCase> out;
   const auto add = [&](const std::string& kind, const std::string& effect, const std::string& body,
-                       double cutoff_hz, int index) {
+                       double cutoff_hz, int index, const std::string& second_effect = "") {
     SessionCase c;
     c.name = kind + "_" + std::to_string(index);
     c.seed = next();
@@ -21,6 +21,7 @@ std::vector<SessionCase> rotor_session_cases(RotorSeeds seeds, int per_kind, int
       spec.effect = effect;
       spec.body = body;
       spec.gyro_cutoff_hz = cutoff_hz;
+      spec.second_effect = second_effect;
       spec.throw_seed = next();
       c.flights.push_back(spec);
     }
@@ -42,6 +43,13 @@ std::vector<SessionCase> rotor_session_cases(RotorSeeds seeds, int per_kind, int
   for (int i = 0; i < per_kind; ++i) {
     add("filtered", "internal_momentum", bodies[static_cast<std::size_t>(i + 4) % bodies.size()], 100.0, i);
     for (FlightSpec& flight : out.back().flights) flight.imu_rate_hz = i % 2 == 0 ? 1000.0 : 4000.0;
+  }
+  // A rotor on a body whose nominal moments are 5-20 % off (a wheel inside a body whose
+  // tensor came from CAD), and the same bodies with the wheel stopped: the moments alone.
+  for (int i = 0; i < per_kind; ++i) {
+    const std::string& body = bodies[static_cast<std::size_t>(i) % bodies.size()];
+    add("rotor_moments", "internal_momentum", body, 0.0, i, "inertia_moments");
+    add("stopped", "inertia_moments", body, 0.0, i);
   }
   return out;
 }

@@ -16,7 +16,10 @@
 //   bias         a gyro bias, which a rotor h = I·b mimics to first order (listed after
 //                the others, whose seeds stay as they were);
 //   filtered     a rotor behind a 100 Hz two-pole low-pass, at 1 kHz and 4 kHz in turn
-//                (listed last, for the same reason).
+//                (listed after those, for the same reason);
+//   rotor_moments a rotor on a body whose nominal moments are also 5-20 % off, every
+//                body in turn (a wheel in a body whose tensor came from CAD);
+//   stopped      the same bodies with the wheel stopped: wrong moments alone.
 #pragma once
 
 #include <cstdint>
