@@ -125,13 +125,17 @@ TEST_CASE("a start grid is complete: starts and a joining start of the effect's 
     CAPTURE(d.name);
     if (d.start_grid == nullptr) continue;
     ++grids;
-    // A grid stands in for a zero start that is no model: only where theta = 0 is not nominal.
-    CHECK_FALSE(d.neutral_at_zero);
     REQUIRE(d.start_grid->starts != nullptr);
     REQUIRE(d.start_grid->joining != nullptr);
     CHECK(d.start_grid->distinct > 0.0);
     const std::vector<Eigen::VectorXd> starts = d.start_grid->starts();
     CHECK(starts.size() >= 2);
+    // Where theta = 0 is the nominal model, the grid starts there first and joins there,
+    // so a flight whose nominal is right starts as it would without a grid.
+    if (d.neutral_at_zero) {
+      CHECK(starts.front().isZero());
+      CHECK(d.start_grid->joining().isZero());
+    }
     for (const Eigen::VectorXd& s : starts) {
       CHECK(s.size() == d.parameter_count);
       CHECK(s.allFinite());
@@ -139,7 +143,7 @@ TEST_CASE("a start grid is complete: starts and a joining start of the effect's 
     CHECK(d.start_grid->joining().size() == d.parameter_count);
     CHECK(d.start_grid->joining().allFinite());
   }
-  CHECK(grids >= 1);                                         // the damping rotor's
+  CHECK(grids >= 2);                                         // the damping rotor's, the moments'
   CHECK_FALSE(describe(Effect::impulse).shared_by_flights);  // a knock belongs to one flight
 }
 

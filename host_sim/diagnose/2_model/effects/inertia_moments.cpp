@@ -3,6 +3,7 @@
 // sum (gyro data and the torque-free equations cannot fix the scale).
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/printf_text.hpp"
@@ -57,6 +58,43 @@ std::string unphysical(const FittedSlice& fit) {
   return "unphysical: fitted moments break the triangle inequality";
 }
 
+// theta of one principal moment scaled by `factor` (the other two kept), before the
+// rescaling to the nominal sum: exp(u) is proportional to (factor, 1, 1) permuted.
+Eigen::VectorXd one_moment_scaled(int axis, double factor) {
+  Eigen::Vector3d u = Eigen::Vector3d::Zero();
+  u(axis) = std::log(factor);
+  u.array() -= u.sum() / 3.0;
+  return u.head<2>();
+}
+
+// The factors a start grid scales one moment by, each up and down: a nominal's moment
+// wrong by a factor of two or four (a missing or misplaced part, a wrong density; T06's
+// Iy x4). Scaling one moment down is scaling the other two up, so the starts are two
+// hexagonal rings around zero in the plane of u, their spacing ln 2 (a 2x change).
+constexpr double kScaleFactors[] = {2.0, 4.0};
+
+// The moments enter the torque-free equations non-linearly, and a fit from the nominal
+// can stop in another basin (practice3/T06 flight 3: u = (0.740, -0.626), cost 1.99e6 on
+// 91 samples, where (0.924, -0.462) reaches 1,186). Zero first, so that a flight whose
+// nominal is right, or barely informs the moments, starts where it did without the grid.
+std::vector<Eigen::VectorXd> scaled_moments() {
+  std::vector<Eigen::VectorXd> starts{Eigen::VectorXd::Zero(2)};
+  for (double factor : kScaleFactors) {
+    for (int axis = 0; axis < 3; ++axis) {
+      starts.push_back(one_moment_scaled(axis, factor));
+      starts.push_back(one_moment_scaled(axis, 1.0 / factor));
+    }
+  }
+  return starts;
+}
+
+// Joining a model: the nominal moments, as without a grid.
+Eigen::VectorXd nominal_moments() { return Eigen::VectorXd::Zero(2); }
+
+// Two fitted moment sets are other minima when a log ratio differs by more than 0.1 (a
+// moment ratio 10 % apart, three times the tolerance).
+constexpr StartGrid kMomentGrid{scaled_moments, 0.1, nominal_moments};
+
 }  // namespace
 
 constexpr EffectDescriptor inertia_moments_effect = [] {
@@ -64,6 +102,7 @@ constexpr EffectDescriptor inertia_moments_effect = [] {
   d.name = "inertia_moments";
   d.parameter_count = 2;
   d.sets_tensor = true;
+  d.start_grid = &kMomentGrid;
   d.hooks = {tolerance, apply, parameters, too_small, no_objection, unphysical};
   return d;
 }();
