@@ -403,6 +403,18 @@ std::optional<Refined> other_grid_minimum(const ArrowProblem& problem, const std
   return Refined{std::move(r), 0.0};
 }
 
+// The window of quick fits round each scanned peak: every third gap within 6 samples
+// (4 fits a peak; the downhill walk goes on from the best). Against 12 samples (8 a
+// peak): case00 714 -> 586 M instructions; over the 65 trials of make_reports.sh no
+// headline, effect or confident flag moved, and of the verdicts' lists of equivalent or
+// indistinguishable candidates one step's (docs/diagnose.md, speed). Sparser or narrower
+// windows saved more but moved more: every 4th or 6th gap within 12 (642, 582 M) also
+// put aero_torque among a racquet flight's indistinguishable candidates; the gaps at 3
+// only (517 M) or the peaks alone (448 M) took practice3/T04's first flight from
+// gyro_scale + impulse to clock_drift.
+constexpr long kTimeWindowRadius = 6;
+constexpr long kTimeWindowStride = 3;
+
 // An effect that acts at one instant (descriptor `searched_parameters`: the impulse): its
 // time is searched over the flight, the rest fitted at each time tried.
 EffectFit fit_with_time_search(Setup& setup, const EffectFit* nominal_fit) {
@@ -435,11 +447,11 @@ EffectFit fit_with_time_search(Setup& setup, const EffectFit* nominal_fit) {
       best_rates = r.local;
     }
   };
-  // Around each scanned peak: every third gap within 12 samples; then downhill from the
+  // Around each scanned peak: every third gap within 6 samples; then downhill from the
   // best of those.
   for (std::size_t peak : scan_impulse_times(setup, rates)) {
     try_time(peak, true);
-    for (long off = -12; off <= 12; off += 3) {
+    for (long off = -kTimeWindowRadius; off <= kTimeWindowRadius; off += kTimeWindowStride) {
       if (off != 0) try_time(static_cast<std::size_t>(std::max(0L, static_cast<long>(peak) + off)), false);
     }
   }
