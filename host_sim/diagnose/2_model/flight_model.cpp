@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
+#include "diagnose/2_model/walk_layout.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -12,9 +13,6 @@ using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using State = Eigen::Matrix<double, 6, 1>;  // body rate, then the rotor's rate (damping only)
 
-// Longest integration step: RK4 at 5 ms keeps the relative error of a 15 rad/s motion
-// near 1e-6 over a second, far below any gyro's noise.
-constexpr double kMaxStep = 0.005;
 // Samples this close share one step, the readings between interpolated (ReadingWalks):
 // 1 kHz data takes one step every 5 samples instead of one a sample (case00: 2.10 G
 // instructions -> 1.33 G). Not for a model with a rotor: the internal damping fits reach
@@ -219,26 +217,18 @@ class FlightDynamics {
     return dx;
   }
 
-  // The steps of at most kMaxStep that cover a span, and their length.
-  static int steps_over(double span) {
-    // One step a sample at kHz rates: no divisions (the same count either way).
-    if (std::abs(span) < kMaxStep) return 1;
-    return std::max(1, static_cast<int>(std::ceil(std::abs(span) / kMaxStep - 1e-9)));
-  }
-  static double step_of(double span, int steps) { return steps == 1 ? span : span / steps; }
-
   // Integrates over [from, to] (either direction) in steps of at most kMaxStep.
   void advance(Motion& x, double from, double to) const {
     const int steps = steps_over(to - from);
-    const double h = step_of(to - from, steps);
+    advance(x, steps, step_of(to - from, steps));
+  }
+  void advance(Motion& x, int steps, double h) const {
     for (int i = 0; i < steps; ++i) rk4(x, h);
   }
 
   // advance() of two independent states, paired (rk4_pair) while both have steps to go:
   // each state gets exactly the steps advance() would give it.
-  void advance_pair(Motion& x, double x_from, double x_to, Motion& y, double y_from, double y_to) const {
-    const int x_steps = steps_over(x_to - x_from), y_steps = steps_over(y_to - y_from);
-    const double hx = step_of(x_to - x_from, x_steps), hy = step_of(y_to - y_from, y_steps);
+  void advance_pair(Motion& x, int x_steps, double hx, Motion& y, int y_steps, double hy) const {
     const int both = std::min(x_steps, y_steps);
     for (int i = 0; i < both; ++i) {
       if (has_rotor()) {
@@ -295,51 +285,17 @@ class FlightDynamics {
   Vec3 scale_ = Vec3::Ones();
 };
 
-// The walks of predict_readings from the reference sample outwards, one segment at a
-// time: a segment is one integration over several samples no further apart than
-// kMaxSegment (the readings between its ends interpolated), or one interval longer than
-// that (integrated in steps of at most kMaxStep), or the one interval the impulse falls in
-// (integrated to the impulse, then on).
+// The walks of predict_readings from the reference sample outwards, one segment of
+// their layout (walk_layout.hpp) at a time.
 class ReadingWalks {
  public:
-  ReadingWalks(const FlightDynamics& dynamics, const EffectModel& model, const Flight& flight,
-               std::size_t ref, std::vector<Vec3>& readings, double max_segment, Vec3* rate_at_impulse)
+  ReadingWalks(const FlightDynamics& dynamics, double jump_time, std::vector<Vec3>& readings,
+               const std::vector<HermiteWeights>& weights, Vec3* rate_at_impulse)
       : d_(dynamics),
-        flight_(flight),
         readings_(readings),
-        t_ref_(flight.time_s[ref]),
-        max_segment_(max_segment),
-        rate_at_impulse_(rate_at_impulse) {
-    has_jump_ = dynamics.has_jump();
-    t_jump_ = has_jump_ ? true_time_of(model.impulse_time_s) : 0.0;
-  }
-
-  // True (simulation) time of sample k; differs from its time stamp only under clock drift.
-  double true_time(std::size_t k) const { return true_time_of(flight_.time_s[k]); }
-
-  // Whether the impulse falls between samples a and b (strictly after the earlier, on or
-  // before the later one).
-  bool crosses(std::size_t a, std::size_t b) const {
-    const double early = true_time(std::min(a, b)), late = true_time(std::max(a, b));
-    return has_jump_ && t_jump_ > early && t_jump_ <= late;
-  }
-
-  // The last sample of the segment that starts at `at`, forwards or backwards. Decided on
-  // the time stamps, not the true times, so that a clock-drift parameter never moves a
-  // segment's end (the readings stay smooth in it).
-  std::size_t segment_end(std::size_t at, bool forwards) const {
-    const std::size_t n = flight_.size();
-    const auto next = [&](std::size_t k) { return forwards ? k + 1 : k - 1; };
-    std::size_t end = next(at);
-    if (crosses(at, end) || d_.has_rotor()) return end;
-    while (forwards ? end + 1 < n : end > 0) {
-      const std::size_t further = next(end);
-      const double span = std::abs(flight_.time_s[further] - flight_.time_s[at]);
-      if (span > max_segment_ * (1.0 + 1e-9) || crosses(end, further)) break;
-      end = further;
-    }
-    return end;
-  }
+        weights_(weights),
+        rate_at_impulse_(rate_at_impulse),
+        t_jump_(jump_time) {}
 
   // A walk at its latest sample: the state there and, when the segment that ended there
   // interpolated, the readings' rate of change there (the next segment starts with it).
@@ -350,13 +306,12 @@ class ReadingWalks {
     Vec3 slope = Vec3::Zero();  // d reading / dt, without the segment's length
   };
 
-  // One segment of a walk, to sample `to`.
-  void step(Walk& walk, std::size_t to) const {
+  // One segment of a walk, on its own.
+  void step(Walk& walk, const WalkSegment& seg) const {
     Motion& x = walk.m;
-    const std::size_t from = walk.at;
-    const double a = true_time(from), b = true_time(to);
-    if (crosses(from, to)) {
-      const bool forwards = to > from;
+    const double a = seg.a, b = seg.b;
+    if (seg.crosses) {
+      const bool forwards = seg.to > seg.from;
       // Forwards: to the impulse, add it, on if it is before b. Backwards: to the impulse
       // if it is before a, take it away, on.
       if (forwards) {
@@ -370,14 +325,14 @@ class ReadingWalks {
         d_.apply_jump(x, -1.0);
         d_.advance(x, t_jump_, b);
       }
-      readings_[to] = d_.reading(x.x);
-      walk.at = to;
+      readings_[seg.to] = d_.reading(x.x);
+      walk.at = seg.to;
       walk.slope_known = false;
       return;
     }
     const Motion start = x;
-    d_.advance(x, a, b);
-    read_segment(start, walk, to);
+    d_.advance(x, seg.steps, seg.h);
+    read_segment(start, walk, seg);
   }
 
   // The readings of a segment integrated from `x_from` at sample `from` to `x_to` at
@@ -387,8 +342,8 @@ class ReadingWalks {
   // ends sum to one, so interpolating the readings with the rate's derivatives mapped
   // as the rate is (sensor_map) is interpolating the rate.
   // `walk` has been integrated to `to` from `x_from`, its state at walk.at.
-  void read_segment(const Motion& x_from, Walk& walk, std::size_t to) const {
-    const std::size_t from = walk.at;
+  void read_segment(const Motion& x_from, Walk& walk, const WalkSegment& seg) const {
+    const std::size_t from = seg.from, to = seg.to;
     walk.at = to;
     readings_[to] = d_.reading(walk.m.x);
     if (to == from + 1 || from == to + 1) {
@@ -398,27 +353,21 @@ class ReadingWalks {
     const Vec3 slope_from = walk.slope_known ? walk.slope : d_.sensor_map(d_.body_rate_derivative(x_from));
     walk.slope = d_.sensor_map(d_.body_rate_derivative(walk.m));
     walk.slope_known = true;
-    const double t0 = true_time(from), h = true_time(to) - t0;
+    const double h = seg.b - seg.a;
     const Vec3 r0 = readings_[from], r1 = readings_[to];
     const Vec3 g0 = slope_from * h, g1 = walk.slope * h;
     const std::size_t lo = std::min(from, to), hi = std::max(from, to);
-    for (std::size_t k = lo + 1; k < hi; ++k) {
-      const double s = (true_time(k) - t0) / h, s2 = s * s, s3 = s2 * s;
-      readings_[k] = (2.0 * s3 - 3.0 * s2 + 1.0) * r0 + (3.0 * s2 - 2.0 * s3) * r1 +
-                     (s3 - 2.0 * s2 + s) * g0 + (s3 - s2) * g1;
+    const HermiteWeights* w = &weights_[seg.weights];
+    for (std::size_t k = lo + 1; k < hi; ++k, ++w) {
+      readings_[k] = (*w)[0] * r0 + (*w)[1] * r1 + (*w)[2] * g0 + (*w)[3] * g1;
     }
   }
 
  private:
-  double true_time_of(double t) const { return t_ref_ + (t - t_ref_) * d_.time_factor(); }
-
   const FlightDynamics& d_;
-  const Flight& flight_;
   std::vector<Vec3>& readings_;
-  double t_ref_ = 0.0;
-  double max_segment_ = kMaxSegment;
+  const std::vector<HermiteWeights>& weights_;
   Vec3* rate_at_impulse_ = nullptr;  // where the walk that meets the impulse reaches it
-  bool has_jump_ = false;
   double t_jump_ = 0.0;
 };
 
@@ -502,31 +451,39 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   if (n == 0) return;
   FlightDynamics dynamics(model_terms(model, theta), flight);
   dynamics.set_impulse_scale(model.nominal.tensor);
-  const ReadingWalks walks(dynamics, model, flight, ref, readings,
-                           stepping == SampleStepping::shared_steps ? kMaxSegment : 0.0, rate_at_impulse);
+  WalkLayoutKey key;
+  key.ref = ref;
+  key.max_segment = stepping == SampleStepping::shared_steps ? kMaxSegment : 0.0;
+  key.single_samples = dynamics.has_rotor();
+  key.has_jump = dynamics.has_jump();
+  key.time_factor = dynamics.time_factor();
+  const double t_ref = flight.time_s[ref];
+  key.jump_time = key.has_jump ? t_ref + (model.impulse_time_s - t_ref) * key.time_factor : 0.0;
+  const WalkLayout& layout = walk_layout(flight.time_s, key);
+  const ReadingWalks walks(dynamics, key.jump_time, readings, layout.weights, rate_at_impulse);
   Motion start;
   start.x.head<3>() = omega_ref;
   start.x.tail<3>() = omega_ref;  // rotor co-rotating at the reference (damping only)
   readings[ref] = dynamics.reading(start.x);
   // Forwards from the reference and backwards from it. The two walks are independent:
-  // while both have samples to go, they step together (advance_pair) where neither
+  // while both have segments to go, they step together (advance_pair) where neither
   // crosses the impulse.
   ReadingWalks::Walk up{start, ref}, down{start, ref};
-  while (up.at + 1 < n && down.at > 0) {
-    const std::size_t up_end = walks.segment_end(up.at, true), down_end = walks.segment_end(down.at, false);
-    if (!walks.crosses(up.at, up.at + 1) && !walks.crosses(down.at, down.at - 1)) {
+  const std::size_t both = std::min(layout.up.size(), layout.down.size());
+  for (std::size_t i = 0; i < both; ++i) {
+    const WalkSegment &u = layout.up[i], &d = layout.down[i];
+    if (!u.crosses && !d.crosses) {
       const Motion up_from = up.m, down_from = down.m;
-      dynamics.advance_pair(up.m, walks.true_time(up.at), walks.true_time(up_end), down.m,
-                            walks.true_time(down.at), walks.true_time(down_end));
-      walks.read_segment(up_from, up, up_end);
-      walks.read_segment(down_from, down, down_end);
+      dynamics.advance_pair(up.m, u.steps, u.h, down.m, d.steps, d.h);
+      walks.read_segment(up_from, up, u);
+      walks.read_segment(down_from, down, d);
     } else {
-      walks.step(up, up_end);
-      walks.step(down, down_end);
+      walks.step(up, u);
+      walks.step(down, d);
     }
   }
-  while (up.at + 1 < n) walks.step(up, walks.segment_end(up.at, true));
-  while (down.at > 0) walks.step(down, walks.segment_end(down.at, false));
+  for (std::size_t i = both; i < layout.up.size(); ++i) walks.step(up, layout.up[i]);
+  for (std::size_t i = both; i < layout.down.size(); ++i) walks.step(down, layout.down[i]);
 }
 
 namespace {
