@@ -42,15 +42,24 @@ Vec3 starting_rate(const FlightData& data, std::size_t ref, const EffectFit* nom
   return body_rate_of_reading(flight, count > 0 ? Vec3(sum / count) : flight.omega[ref]);
 }
 
+// The weighted residuals, every sample written once (no clearing first). Read through
+// plain pointers: writing r through Eigen's made the compiler reload every vector's data
+// at each sample (case00: 35.4 -> 26.7 M instructions here, the same arithmetic).
 void residuals_of(const FlightData& data, const std::vector<Vec3>& readings, Eigen::VectorXd& r) {
   const Flight& flight = *data.flight;
-  r.resize(static_cast<Eigen::Index>(3 * flight.size()));  // each sample written once, no clearing first
-  for (std::size_t k = 0; k < flight.size(); ++k) {
-    auto out = r.segment<3>(static_cast<Eigen::Index>(3 * k));
-    if (!data.mask[k] || !flight.usable[k]) {
-      out.setZero();
+  const std::size_t n = flight.size();
+  r.resize(static_cast<Eigen::Index>(3 * n));
+  const char* const mask = data.mask.data();
+  const char* const usable = flight.usable.data();
+  const Vec3* const predicted = readings.data();
+  const Vec3* const read = flight.omega.data();
+  const Vec3 weight = data.inverse_sigma;
+  double* out = r.data();
+  for (std::size_t k = 0; k < n; ++k, out += 3) {
+    if (!mask[k] || !usable[k]) {
+      out[0] = out[1] = out[2] = 0.0;
     } else {
-      out = (readings[k] - flight.omega[k]).cwiseProduct(data.inverse_sigma);
+      for (int i = 0; i < 3; ++i) out[i] = (predicted[k](i) - read[k](i)) * weight(i);
     }
   }
 }
