@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/walk_layout.hpp"
@@ -106,12 +107,13 @@ class FlightDynamics {
       m.rate_known = true;
       return;
     }
-    State& x = m.x;
-    const State k1 = rate(x);
-    const State k2 = rate(x + 0.5 * h * k1);
-    const State k3 = rate(x + 0.5 * h * k2);
-    const State k4 = rate(x + h * k3);
-    x += (h / 6.0) * (k1 + 2.0 * (k2 + k3) + k4);
+    // The rotor's six rates as rk4_pair's arithmetic in one scalar lane: Eigen's
+    // six-vector code summed the same terms in the same order at about twice the
+    // instructions (case00: 449.6 -> 437.5 M in all).
+    LanesOf<double, 6> w;
+    for (std::size_t i = 0; i < 6; ++i) w[i] = m.x(static_cast<Eigen::Index>(i));
+    const LanesOf<double, 6> next = rk4_lanes(w, rates(w), h);
+    for (std::size_t i = 0; i < 6; ++i) m.x(static_cast<Eigen::Index>(i)) = next[i];
   }
 
   // Two states one rk4 step each, every component in the two lanes of a packed pair: two
@@ -120,8 +122,29 @@ class FlightDynamics {
   // expressions, so each state ends bit for bit where rk4 would take it. N = 3: the rigid
   // body's rate alone (its first stage the known rate, and the rate at the end left known,
   // as rk4 does); N = 6: with the rotor's.
+  template <class L, std::size_t N>
+  using LanesOf = std::array<L, N>;
   template <std::size_t N>
-  using Lanes = std::array<Eigen::Array2d, N>;
+  using Lanes = LanesOf<Eigen::Array2d, N>;
+
+  // One rk4 step of the lanes w (a packed pair, or one scalar lane) whose first stage is k1.
+  template <class L, std::size_t N>
+  [[gnu::always_inline]] LanesOf<L, N> rk4_lanes(const LanesOf<L, N>& w, const LanesOf<L, N>& k1,
+                                                 const L& h) const {
+    const auto along = [](const LanesOf<L, N>& a, const L& s, const LanesOf<L, N>& k) {
+      LanesOf<L, N> out;
+      for (std::size_t i = 0; i < N; ++i) out[i] = a[i] + s * k[i];
+      return out;
+    };
+    const L half = 0.5 * h;
+    const LanesOf<L, N> k2 = rates(along(w, half, k1));
+    const LanesOf<L, N> k3 = rates(along(w, half, k2));
+    const LanesOf<L, N> k4 = rates(along(w, h, k3));
+    const L sixth = h / 6.0;
+    LanesOf<L, N> next;
+    for (std::size_t i = 0; i < N; ++i) next[i] = w[i] + sixth * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
+    return next;
+  }
 
   template <std::size_t N>
   [[gnu::always_inline]] void rk4_pair(Motion& mx, double hx, Motion& my, double hy) const {
@@ -131,19 +154,8 @@ class FlightDynamics {
     for (std::size_t i = 0; i < N; ++i)
       w[i] = Eigen::Array2d(x(static_cast<Eigen::Index>(i)), y(static_cast<Eigen::Index>(i)));
     const Eigen::Array2d h(hx, hy);
-    const auto along = [](const Lanes<N>& a, const Eigen::Array2d& s, const Lanes<N>& k) {
-      Lanes<N> out;
-      for (std::size_t i = 0; i < N; ++i) out[i] = a[i] + s * k[i];
-      return out;
-    };
-    const Lanes<N> k1 = first_stage(mx, my, w);
-    const Lanes<N> k2 = rates(along(w, 0.5 * h, k1));
-    const Lanes<N> k3 = rates(along(w, 0.5 * h, k2));
-    const Lanes<N> k4 = rates(along(w, h, k3));
-    const Eigen::Array2d sixth = h / 6.0;
-    Lanes<N> next;
+    const Lanes<N> next = rk4_lanes(w, first_stage(mx, my, w), h);
     for (std::size_t i = 0; i < N; ++i) {
-      next[i] = w[i] + sixth * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
       x(static_cast<Eigen::Index>(i)) = next[i](0);
       y(static_cast<Eigen::Index>(i)) = next[i](1);
     }
@@ -175,40 +187,49 @@ class FlightDynamics {
 
   // A 3x3 matrix times a vector as Eigen's fixed-size product sums it: rows 0 and 1 as a
   // packet, left to right; row 2 on its own, the last two terms first.
-  [[gnu::always_inline]] static Lanes<3> times(const Mat3& m, const Eigen::Array2d& v0,
-                                               const Eigen::Array2d& v1, const Eigen::Array2d& v2) {
+  template <class L>
+  [[gnu::always_inline]] static LanesOf<L, 3> times(const Mat3& m, const L& v0, const L& v1, const L& v2) {
     return {m(0, 0) * v0 + m(0, 1) * v1 + m(0, 2) * v2, m(1, 0) * v0 + m(1, 1) * v1 + m(1, 2) * v2,
             m(2, 0) * v0 + (m(2, 1) * v1 + m(2, 2) * v2)};
   }
-  static Lanes<3> cross(const Eigen::Array2d* a, const Eigen::Array2d* b) {
+  template <class L>
+  static LanesOf<L, 3> cross(const L* a, const L* b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
   }
+  static double root(double v) { return std::sqrt(v); }
+  static Eigen::Array2d root(const Eigen::Array2d& v) { return v.sqrt(); }
+  template <class L>
+  static L every_lane(double v) {
+    if constexpr (std::is_same_v<L, double>) {
+      return v;
+    } else {
+      return L::Constant(v);
+    }
+  }
 
-  // rate() (N = 6) or rigid_rate() (N = 3) of both lanes.
-  template <std::size_t N>
-  [[gnu::always_inline]] Lanes<N> rates(const Lanes<N>& x) const {
-    const Lanes<3> m = times(shell_, x[0], x[1], x[2]);
-    Lanes<3> torque = cross(m.data(), x.data());
+  // rate() (N = 6) or rigid_rate() (N = 3) of every lane.
+  template <class L, std::size_t N>
+  [[gnu::always_inline]] LanesOf<L, N> rates(const LanesOf<L, N>& x) const {
+    const LanesOf<L, 3> m = times(shell_, x[0], x[1], x[2]);
+    LanesOf<L, 3> torque = cross(m.data(), x.data());
     if (drag_ != 0.0) {
-      const Eigen::Array2d speed = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
+      const L speed = root(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
       for (std::size_t i = 0; i < 3; ++i) torque[i] -= drag_ * speed * x[i];
     }
-    if (has_momentum()) {  // momentum × w, a constant vector's cross with both lanes
-      const Eigen::Array2d h[3] = {Eigen::Array2d::Constant(momentum_(0)),
-                                   Eigen::Array2d::Constant(momentum_(1)),
-                                   Eigen::Array2d::Constant(momentum_(2))};
-      const Lanes<3> gyroscopic = cross(h, x.data());
+    if (has_momentum()) {  // momentum × w, a constant vector's cross with every lane
+      const L h[3] = {every_lane<L>(momentum_(0)), every_lane<L>(momentum_(1)), every_lane<L>(momentum_(2))};
+      const LanesOf<L, 3> gyroscopic = cross(h, x.data());
       for (std::size_t i = 0; i < 3; ++i) torque[i] += gyroscopic[i];
     }
-    Lanes<N> dx;
+    LanesOf<L, N> dx;
     if constexpr (N == 3) {
       dx = times(shell_inverse_, torque[0], torque[1], torque[2]);
     } else {
       const double coupling_rate = rotor_rate_ * rotor_;
-      Lanes<3> body;
+      LanesOf<L, 3> body;
       for (std::size_t i = 0; i < 3; ++i) body[i] = torque[i] + coupling_rate * (x[i + 3] - x[i]);
-      const Lanes<3> spin = times(shell_inverse_, body[0], body[1], body[2]);
-      const Lanes<3> turn = cross(x.data(), x.data() + 3);
+      const LanesOf<L, 3> spin = times(shell_inverse_, body[0], body[1], body[2]);
+      const LanesOf<L, 3> turn = cross(x.data(), x.data() + 3);
       for (std::size_t i = 0; i < 3; ++i) {
         dx[i] = spin[i];
         dx[i + 3] = -turn[i] - rotor_rate_ * (x[i + 3] - x[i]);
