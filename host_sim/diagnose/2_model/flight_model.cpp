@@ -463,6 +463,52 @@ Eigen::Vector3d body_rate_for_reading(const EffectModel& model, const Flight& fl
   return flight.sensor_to_body * w;
 }
 
+namespace {
+
+WalkLayoutKey layout_key(const EffectModel& model, const Flight& flight, std::size_t ref,
+                         SampleStepping stepping, const FlightDynamics& dynamics) {
+  WalkLayoutKey key;
+  key.ref = ref;
+  key.max_segment = stepping == SampleStepping::shared_steps ? kMaxSegment : 0.0;
+  key.single_samples = dynamics.has_rotor();
+  key.has_jump = dynamics.has_jump();
+  key.time_factor = dynamics.time_factor();
+  const double t_ref = flight.time_s[ref];
+  key.jump_time = key.has_jump ? t_ref + (model.impulse_time_s - t_ref) * key.time_factor : 0.0;
+  return key;
+}
+
+Motion start_at(const Eigen::Vector3d& omega_ref) {
+  Motion start;
+  start.x.head<3>() = omega_ref;
+  start.x.tail<3>() = omega_ref;  // rotor co-rotating at the reference (damping only)
+  return start;
+}
+
+// Two independent walks, each through its own segments into its own readings: while both
+// have segments to go, they step together (advance_pair) where neither crosses the impulse.
+void walk_together(const FlightDynamics& dynamics, const ReadingWalks& walks_a, ReadingWalks::Walk& a,
+                   const std::vector<WalkSegment>& segments_a, const ReadingWalks& walks_b,
+                   ReadingWalks::Walk& b, const std::vector<WalkSegment>& segments_b) {
+  const std::size_t both = std::min(segments_a.size(), segments_b.size());
+  for (std::size_t i = 0; i < both; ++i) {
+    const WalkSegment &u = segments_a[i], &d = segments_b[i];
+    if (!u.crosses && !d.crosses) {
+      const Motion a_from = a.m, b_from = b.m;
+      dynamics.advance_pair(a.m, u.steps, u.h, b.m, d.steps, d.h);
+      walks_a.read_segment(a_from, a, u);
+      walks_b.read_segment(b_from, b, d);
+    } else {
+      walks_a.step(a, u);
+      walks_b.step(b, d);
+    }
+  }
+  for (std::size_t i = both; i < segments_a.size(); ++i) walks_a.step(a, segments_a[i]);
+  for (std::size_t i = both; i < segments_b.size(); ++i) walks_b.step(b, segments_b[i]);
+}
+
+}  // namespace
+
 void predict_readings(const EffectModel& model, const Flight& flight, std::size_t ref,
                       const Eigen::Vector3d& omega_ref, const Eigen::VectorXd& theta,
                       std::vector<Eigen::Vector3d>& readings, SampleStepping stepping,
@@ -472,39 +518,41 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   if (n == 0) return;
   FlightDynamics dynamics(model_terms(model, theta), flight);
   dynamics.set_impulse_scale(model.nominal.tensor);
-  WalkLayoutKey key;
-  key.ref = ref;
-  key.max_segment = stepping == SampleStepping::shared_steps ? kMaxSegment : 0.0;
-  key.single_samples = dynamics.has_rotor();
-  key.has_jump = dynamics.has_jump();
-  key.time_factor = dynamics.time_factor();
-  const double t_ref = flight.time_s[ref];
-  key.jump_time = key.has_jump ? t_ref + (model.impulse_time_s - t_ref) * key.time_factor : 0.0;
+  const WalkLayoutKey key = layout_key(model, flight, ref, stepping, dynamics);
   const WalkLayout& layout = walk_layout(flight.time_s, key);
   const ReadingWalks walks(dynamics, key.jump_time, readings, layout.weights, rate_at_impulse);
-  Motion start;
-  start.x.head<3>() = omega_ref;
-  start.x.tail<3>() = omega_ref;  // rotor co-rotating at the reference (damping only)
+  const Motion start = start_at(omega_ref);
   readings[ref] = dynamics.reading(start.x);
-  // Forwards from the reference and backwards from it. The two walks are independent:
-  // while both have segments to go, they step together (advance_pair) where neither
-  // crosses the impulse.
+  // Forwards from the reference and backwards from it, independent of each other.
   ReadingWalks::Walk up{start, ref}, down{start, ref};
-  const std::size_t both = std::min(layout.up.size(), layout.down.size());
-  for (std::size_t i = 0; i < both; ++i) {
-    const WalkSegment &u = layout.up[i], &d = layout.down[i];
-    if (!u.crosses && !d.crosses) {
-      const Motion up_from = up.m, down_from = down.m;
-      dynamics.advance_pair(up.m, u.steps, u.h, down.m, d.steps, d.h);
-      walks.read_segment(up_from, up, u);
-      walks.read_segment(down_from, down, d);
-    } else {
-      walks.step(up, u);
-      walks.step(down, d);
-    }
+  walk_together(dynamics, walks, up, layout.up, walks, down, layout.down);
+}
+
+void predict_readings_pair(const EffectModel& model, const Flight& flight, std::size_t ref,
+                           const Eigen::Vector3d& omega_a, const Eigen::Vector3d& omega_b,
+                           const Eigen::VectorXd& theta, std::vector<Eigen::Vector3d>& readings_a,
+                           std::vector<Eigen::Vector3d>& readings_b) {
+  const std::size_t n = flight.size();
+  if (n == 0 || (ref != 0 && ref + 1 != n)) {
+    predict_readings(model, flight, ref, omega_a, theta, readings_a);
+    predict_readings(model, flight, ref, omega_b, theta, readings_b);
+    return;
   }
-  for (std::size_t i = both; i < layout.up.size(); ++i) walks.step(up, layout.up[i]);
-  for (std::size_t i = both; i < layout.down.size(); ++i) walks.step(down, layout.down[i]);
+  readings_a.resize(n);
+  readings_b.resize(n);
+  FlightDynamics dynamics(model_terms(model, theta), flight);
+  dynamics.set_impulse_scale(model.nominal.tensor);
+  const WalkLayoutKey key = layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics);
+  const WalkLayout& layout = walk_layout(flight.time_s, key);
+  const ReadingWalks walks_a(dynamics, key.jump_time, readings_a, layout.weights, nullptr),
+      walks_b(dynamics, key.jump_time, readings_b, layout.weights, nullptr);
+  const Motion start_a = start_at(omega_a), start_b = start_at(omega_b);
+  readings_a[ref] = dynamics.reading(start_a.x);
+  readings_b[ref] = dynamics.reading(start_b.x);
+  // The one walk of each (the other has no segments), side by side.
+  ReadingWalks::Walk a{start_a, ref}, b{start_b, ref};
+  const std::vector<WalkSegment>& segments = layout.up.empty() ? layout.down : layout.up;
+  walk_together(dynamics, walks_a, a, segments, walks_b, b, segments);
 }
 
 namespace {

@@ -80,6 +80,15 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
                       SampleStepping stepping = SampleStepping::shared_steps,
                       Eigen::Vector3d* rate_at_impulse = nullptr);
 
+// predict_readings of two reference rates under one theta, readings_a for omega_a and
+// readings_b for omega_b, bit for bit the same. Where the reference is the first or last
+// sample (a rotor's release) each prediction has one walk, and the two run side by side
+// in the two lanes of the paired steps; elsewhere they are predicted one after the other.
+void predict_readings_pair(const EffectModel& model, const Flight& flight, std::size_t ref,
+                           const Eigen::Vector3d& omega_a, const Eigen::Vector3d& omega_b,
+                           const Eigen::VectorXd& theta, std::vector<Eigen::Vector3d>& readings_a,
+                           std::vector<Eigen::Vector3d>& readings_b);
+
 // The theta directions (1: yes) along which only the sensor's terms move (bias, scale,
 // rotation): the readings' derivatives along them need no simulation.
 std::vector<char> sensor_directions(const EffectModel& model, const Eigen::VectorXd& theta);

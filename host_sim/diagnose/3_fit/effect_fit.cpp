@@ -130,32 +130,51 @@ void weighted_column(const FlightData& d, const Eigen::MatrixXd& readings_column
 
 // The residuals of one flight and their Jacobian [theta | omega_ref] when some theta
 // directions need no simulation: the sensor's (sensor_reading_derivatives) and the
-// impulse's (impulse_reading_derivatives, from the rate columns). Every other column is
-// differenced exactly as the fitter would (same step, same residuals). False when no
-// direction is either: the fitter then differences every column itself.
+// impulse's (impulse_reading_derivatives, from the rate columns); or when two rate
+// columns can be differenced side by side (predict_readings_pair: a model whose
+// reference is the release sample, the rotor's, has one walk a prediction; case00
+// 437.5 -> 424.6 M instructions). Every other column is differenced exactly as the fitter
+// would (same step, same residuals). False when none of these holds: the fitter then
+// differences every column itself. `r`: on entry the residuals when known, else empty.
 bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta,
                      const Eigen::VectorXd& local, Eigen::VectorXd& r, Eigen::MatrixXd& jacobian) {
   const EffectModel model = setup.model();
   const std::vector<char> sensor = sensor_directions(model, theta),
                           impulse = impulse_directions(model, theta);
   const auto none = [](const std::vector<char>& v) { return std::find(v.begin(), v.end(), 1) == v.end(); };
-  if (none(sensor) && none(impulse)) return false;
   const FlightData& d = (*setup.data)[static_cast<std::size_t>(block)];
   const Flight& flight = *d.flight;
   const std::size_t ref = setup.refs[static_cast<std::size_t>(block)];
-  std::vector<Vec3> readings;
+  const Eigen::Index p = theta.size(), m = local.size();
+  const bool paired_rates = (ref == 0 || ref + 1 == flight.size()) && none(impulse) && m == 3;
+  if (none(sensor) && none(impulse) && !paired_rates) return false;
+  std::vector<Vec3> readings, readings_b;
   Vec3 at_impulse = Vec3::Zero(), moved_at_impulse = Vec3::Zero();
-  predict_readings(model, flight, ref, Vec3(local), theta, readings, SampleStepping::shared_steps,
-                   &at_impulse);
-  residuals_of(d, readings, r);
+  if (!none(sensor) || !none(impulse) || r.size() == 0) {
+    predict_readings(model, flight, ref, Vec3(local), theta, readings, SampleStepping::shared_steps,
+                     &at_impulse);
+    residuals_of(d, readings, r);
+  }
   Eigen::MatrixXd sensor_columns, impulse_columns;
   if (!none(sensor)) sensor_reading_derivatives(model, flight, theta, readings, sensor, sensor_columns);
-  const Eigen::Index p = theta.size(), m = local.size();
   jacobian.resize(r.size(), p + m);
   Eigen::Matrix3d impulse_rate_derivative = Eigen::Matrix3d::Identity();
   Eigen::VectorXd moved;
+  Eigen::Index differenced = p + m;
+  if (paired_rates) {  // the last two rate columns side by side
+    Eigen::VectorXd local_a = local, local_b = local;
+    const double h_a = forward_difference_step(local_a(m - 1)), h_b = forward_difference_step(local_b(m - 2));
+    local_a(m - 1) += h_a;
+    local_b(m - 2) += h_b;
+    predict_readings_pair(model, flight, ref, Vec3(local_a), Vec3(local_b), theta, readings, readings_b);
+    residuals_of(d, readings, moved);
+    jacobian.col(p + m - 1) = (moved - r) / h_a;
+    residuals_of(d, readings_b, moved);
+    jacobian.col(p + m - 2) = (moved - r) / h_b;
+    differenced = p + m - 2;
+  }
   // Differenced columns, the rates' first: the impulse's columns are made from them.
-  for (Eigen::Index i = p + m; i-- > 0;) {
+  for (Eigen::Index i = differenced; i-- > 0;) {
     if (i < p && (sensor[static_cast<std::size_t>(i)] || impulse[static_cast<std::size_t>(i)])) continue;
     Eigen::VectorXd shifted_theta = theta, shifted_local = local;
     double& value = i < p ? shifted_theta(i) : shifted_local(i - p);

@@ -17,7 +17,14 @@ double forward_difference_step(double value) { return 1e-7 * std::max(1.0, std::
 void block_jacobian(const ArrowProblem& problem, int block, const Eigen::VectorXd& shared,
                     const Eigen::VectorXd& local, const Eigen::VectorXd* known, Eigen::VectorXd& residuals,
                     Eigen::MatrixXd& jacobian) {
-  if (problem.jacobian && problem.jacobian(block, shared, local, residuals, jacobian)) return;
+  if (problem.jacobian) {
+    if (known != nullptr) {
+      residuals = *known;
+    } else {
+      residuals.resize(0);
+    }
+    if (problem.jacobian(block, shared, local, residuals, jacobian)) return;
+  }
   if (known != nullptr) {
     residuals = *known;
   } else {

@@ -36,7 +36,8 @@ struct ArrowProblem {
   // differentiates `residuals` by forward differences, as it does when this is empty. The
   // residuals must be `residuals`' (same length, same values), the columns it does not
   // know forward differences with forward_difference_step, and it must be as safe to
-  // call concurrently.
+  // call concurrently. On entry `residuals` holds the residuals at this point when the
+  // fitter has them already (else it is empty), so that they need not be made again.
   std::function<bool(int block, const Eigen::VectorXd& shared, const Eigen::VectorXd& local,
                      Eigen::VectorXd& residuals, Eigen::MatrixXd& jacobian)>
       jacobian;
