@@ -208,3 +208,39 @@ TEST_CASE("the impulse's Jacobian columns, carried by the flow map, agree with c
     }
   }
 }
+
+TEST_CASE("two predictions side by side read bit for bit as each on its own, with a rotor and without",
+          "[flight_model]") {
+  const NominalInertia body = NominalInertia::of_tensor(Eigen::Vector3d(0.0017, 0.0042, 0.0054).asDiagonal());
+  const Flight flight = kilohertz_flight();
+  const Eigen::Vector3d w_a(0.3, 14.0, 0.5), w_b(0.3, 14.0 + 1e-6, 0.5);
+  Eigen::VectorXd damping(2), jump(3);
+  damping << 0.1, 0.3;  // a rotor that turns with the body at release
+  jump << 0.4, -0.2, 0.3;
+  struct Case {
+    EffectModel model;
+    Eigen::VectorXd theta;
+    std::size_t ref;
+  };
+  const std::vector<Case> cases = {
+      {EffectModel(Effect::internal_damping, body), damping, 0},  // one walk, paired
+      {EffectModel(Effect::none, body), Eigen::VectorXd(), 0},    // one walk, shared steps
+      {EffectModel(Effect::impulse, body, 0.6005), jump,
+       flight.size() / 2},  // two walks: one after the other
+  };
+  for (const Case& c : cases) {
+    CAPTURE(effect_name(c.model.effect), c.ref);
+    std::vector<Eigen::Vector3d> alone_a, alone_b, side_a, side_b;
+    predict_readings(c.model, flight, c.ref, w_a, c.theta, alone_a);
+    predict_readings(c.model, flight, c.ref, w_b, c.theta, alone_b);
+    predict_readings_pair(c.model, flight, c.ref, w_a, w_b, c.theta, side_a, side_b);
+    REQUIRE(side_a.size() == flight.size());
+    REQUIRE(side_b.size() == flight.size());
+    bool same = true;
+    for (std::size_t k = 0; k < flight.size(); ++k) {
+      same = same && side_a[k] == alone_a[k] && side_b[k] == alone_b[k];
+    }
+    CHECK(same);
+    CHECK(alone_a[flight.size() - 1] != alone_b[flight.size() - 1]);  // the two differ
+  }
+}
