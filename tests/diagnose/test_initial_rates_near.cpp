@@ -31,15 +31,17 @@ Flight biased_flight(const NominalInertia& nominal, const Eigen::VectorXd& bias)
                    bias, flight.omega);
   for (std::size_t k = 0; k < kSamples; ++k) {
     const double x = static_cast<double>(k);
-    flight.omega[k] += kSigma * Eigen::Vector3d(std::sin(1.7 * x), std::cos(2.3 * x), std::sin(0.9 * x + 1.0));
+    flight.omega[k] +=
+        kSigma * Eigen::Vector3d(std::sin(1.7 * x), std::cos(2.3 * x), std::sin(0.9 * x + 1.0));
   }
   return flight;
 }
 
 }  // namespace
 
-TEST_CASE("fit_initial_rates_near: the fold's rate from the pooled fit's, or the safe fit's where that misses",
-          "[initial_rates_near]") {
+TEST_CASE(
+    "fit_initial_rates_near: the fold's rate from the pooled fit's, or the safe fit's where that misses",
+    "[initial_rates_near]") {
   const NominalInertia nominal = NominalInertia::of_tensor(Eigen::Vector3d(0.01, 0.02, 0.03).asDiagonal());
   const Eigen::VectorXd bias = Eigen::Vector3d(0.02, -0.01, 0.015);
   const Flight flight = biased_flight(nominal, bias);
