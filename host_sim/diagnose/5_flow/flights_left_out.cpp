@@ -87,7 +87,9 @@ void FlightsLeftOut::judge_leaving_flights_out(Candidate& c) const {
     none_j.flights = {none_all_.flights[j]};
     c.heldout_readings[j] = flights_.judge_folds(
         j, nominal_,
-        [&](std::size_t f) { return fit_initial_rates(others, nominal_, {flights_.train[j][f]}, &none_j); },
+        [&](std::size_t f) {
+          return fit_initial_rates_near(others, nominal_, flights_.train[j][f], c.fit, j, &none_j);
+        },
         sums[j]);
   });
   set_heldout_gap(c, sums);
@@ -120,7 +122,8 @@ Candidate FlightsLeftOut::evaluate(const Candidate& base, Effect added) const {
     c.note = "per flight only: an impulse is not shared by the flights of a session";
     return c;
   }
-  c.fit = c.base.empty() ? fit_pooled(added) : fit_added_effect(base.fit, added, nominal_, flights_.all);
+  c.fit = c.base.empty() ? fit_pooled(added)
+                         : fit_added_effect(base.fit, added, nominal_, flights_.all, nullptr, threads_);
   c.params = effect_parameters(model_of(c.fit, nominal_, 0), c.fit.theta);
   judge_leaving_flights_out(c);
   if (describe(added).named_only_when_told_apart && !c.base.empty())
