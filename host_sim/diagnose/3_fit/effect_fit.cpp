@@ -227,10 +227,7 @@ EffectFit result_of(const Setup& setup, const LeastSquaresResult& solution, int 
     state.omega_ref = Vec3(solution.local[i]);
     state.impulse_time_s = setup.impulse_time_s;
     fit.flights.push_back(state);
-    const FlightData& d = (*setup.data)[i];
-    for (std::size_t k = 0; k < d.flight->size(); ++k) {
-      if (d.mask[k] && d.flight->usable[k]) fit.residual_count += 3;
-    }
+    fit.residual_count += (*setup.data)[i].residual_count();
   }
   const int parameters = shared_count + 3 * static_cast<int>(setup.data->size());
   const int dof = std::max(1, fit.residual_count - parameters);
@@ -314,7 +311,7 @@ std::vector<ScanPeak> scan_impulse_times(const Setup& setup, const std::vector<E
   Eigen::Matrix3d m_all = Eigen::Matrix3d::Zero();
   Vec3 v_all = Vec3::Zero();
   for (std::size_t k = 0; k < n; ++k) {
-    if (!data.mask[k] || !flight.usable[k]) continue;
+    if (!data.compared(k)) continue;
     const Eigen::Matrix3d wa = data.inverse_sigma.asDiagonal() * a[k];
     const Vec3 wr = (base[k] - flight.omega[k]).cwiseProduct(data.inverse_sigma);
     m[k] = wa.transpose() * wa;
@@ -536,7 +533,7 @@ double weighted_squares(const FlightData& data, const std::vector<Eigen::Vector3
   int count = 0;
   const Flight& flight = *data.flight;
   for (std::size_t k = 0; k < flight.size(); ++k) {
-    if (!data.mask[k] || !flight.usable[k]) continue;
+    if (!data.compared(k)) continue;
     sum += (readings[k] - flight.omega[k]).cwiseProduct(data.inverse_sigma).squaredNorm();
     count += 3;
   }
@@ -568,9 +565,11 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::ve
     // away from it is costed with the rates the gyro reads (practice3/T06: from the nominal
     // rates the true moments, a start of the grid, cost more than zero on every flight).
     std::vector<Trial> trials;
-    const std::vector<Eigen::VectorXd> read_rates = rates_read_at_reference(setup);
+    const bool neutral_at_zero = describe(effect).neutral_at_zero;
+    const std::vector<Eigen::VectorXd> read_rates =
+        neutral_at_zero ? rates_read_at_reference(setup) : std::vector<Eigen::VectorXd>{};
     for (const Eigen::VectorXd& start : grid->starts()) {
-      const bool away = describe(effect).neutral_at_zero && !start.isZero();
+      const bool away = neutral_at_zero && !start.isZero();
       const std::vector<Eigen::VectorXd>& r = away ? read_rates : rates;
       trials.push_back({trials.size(), cost_at(problem, start, r), start, r});
     }
@@ -635,10 +634,7 @@ EffectFit refit_from_solution(const EffectFit& fit, const NominalInertia& nomina
   out.flights[0].omega_ref = Vec3(step.local[0]);
   out.flights[0].impulse_time_s = impulse_time_s;
   out.cost = step.cost;
-  out.residual_count = 0;
-  for (std::size_t k = 0; k < data.flight->size(); ++k) {
-    if (data.mask[k] && data.flight->usable[k]) out.residual_count += 3;
-  }
+  out.residual_count = data.residual_count();
   out.other_minima.clear();
   return out;
 }

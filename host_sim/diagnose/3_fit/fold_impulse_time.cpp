@@ -39,7 +39,7 @@ SampleRange unseen_jump_gap(const EffectFit& fit, const FlightData& train) {
   const Flight& flight = *train.flight;
   const std::size_t n = flight.size();
   const double jump_s = fit.flights[0].impulse_time_s;
-  const auto seen = [&](std::size_t k) { return train.mask[k] != 0 && flight.usable[k]; };
+  const auto seen = [&](std::size_t k) { return train.compared(k); };
   // The jump lies just before sample `after`: the first sample later than it.
   std::size_t after = 0;
   while (after < n && flight.time_s[after] < jump_s) ++after;

@@ -25,7 +25,7 @@ Flight span_of(const FlightData& data, std::size_t from, std::size_t to) {
   for (std::size_t k = from; k < to; ++k) {
     out.time_s.push_back(f.time_s[k]);
     out.omega.push_back(f.omega[k]);
-    out.usable.push_back(static_cast<char>(f.usable[k] && data.mask[k]));
+    out.usable.push_back(static_cast<char>(data.compared(k)));
   }
   return out;
 }
