@@ -108,6 +108,11 @@ struct EffectDescriptor {
   // beats every other candidate beyond a tie, and in a session the flights' own fits of it
   // agree. For an effect whose few free parameters mimic several others within a flight.
   bool named_only_when_told_apart = false;
+  // For such an effect: the effect whose error it takes up within each flight when fitted
+  // alone, so that a session's flights disagree on it though they share one value; such a
+  // session also tries the two fitted together at its first step
+  // (4_judge/joint_candidates.hpp; none: no such effect).
+  Effect jointly_with = Effect::none;
   // Effects a gyro alone cannot tell from this one whatever the flight (SPEC §4), padded
   // with `none`.
   std::array<Effect, 2> gyro_equivalents{};

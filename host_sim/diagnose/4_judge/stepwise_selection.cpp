@@ -164,24 +164,30 @@ void describe_final_model(Analysis& analysis, const RankingContext& context,
     if (s.added < 0) continue;
     const Candidate& joined = step_number == 1 ? analysis.candidates[static_cast<std::size_t>(s.added)]
                                                : s.candidates[static_cast<std::size_t>(s.added)];
-    VerdictEffect e;
-    e.effect = joined.effect;
-    e.equivalent = s.equivalent;
-    e.indistinguishable = s.indistinguishable;
-    e.step = step_number;
-    e.params =
-        context.nominal != nullptr ? effect_parameters(model, current.fit.theta, e.effect) : joined.params;
-    e.heldout_rms_rel_err_after = s.heldout_rms_rel_err_after;
-    e.heldout_rms_da_after_deg = s.heldout_rms_da_after_deg;
-    e.step_shrink = s.shrink;
-    std::vector<Effect> rest;
-    for (Effect f : final_effects) {
-      if (f != e.effect) rest.push_back(f);
+    // A pair of the first step (joint_candidates.hpp) brings its base with it.
+    const std::vector<Effect> added =
+        step_number == 1 ? effects_of(joined) : std::vector<Effect>{joined.effect};
+    for (Effect effect : added) {
+      VerdictEffect e;
+      e.effect = effect;
+      e.equivalent = effect == joined.effect ? s.equivalent : std::vector<Effect>{effect};
+      if (effect == joined.effect) e.indistinguishable = s.indistinguishable;
+      e.step = step_number;
+      e.params = context.nominal != nullptr ? effect_parameters(model, current.fit.theta, effect)
+                 : effect == joined.effect  ? joined.params
+                                            : EffectParameters();
+      e.heldout_rms_rel_err_after = s.heldout_rms_rel_err_after;
+      e.heldout_rms_da_after_deg = s.heldout_rms_da_after_deg;
+      e.step_shrink = s.shrink;
+      std::vector<Effect> rest;
+      for (Effect f : final_effects) {
+        if (f != effect) rest.push_back(f);
+      }
+      const double without =
+          rest.empty() ? v.heldout_rms_rel_err_before : heldout_rel_err_of(analysis, rest, evaluate);
+      e.shrink = without > 0 ? 1.0 - current.heldout_rms_rel_err / without : 0.0;
+      v.effects.push_back(e);
     }
-    const double without =
-        rest.empty() ? v.heldout_rms_rel_err_before : heldout_rel_err_of(analysis, rest, evaluate);
-    e.shrink = without > 0 ? 1.0 - current.heldout_rms_rel_err / without : 0.0;
-    v.effects.push_back(e);
   }
   // Most important first, by the shrink to 1e-6 (held-out errors agree to 4e-10 between
   // libm builds; docs/diagnose.md, "The same verdict on every CPU"), then by step: the

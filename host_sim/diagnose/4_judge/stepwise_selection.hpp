@@ -1,5 +1,6 @@
 // Compound gaps (SPEC §4 `verdict.effects`): forward stepwise selection. Starting from
-// the single-effect verdict (candidate_ranking.hpp, step 1), each further step fits
+// the single-effect verdict (candidate_ranking.hpp, step 1; in a session that step may
+// name a pair fitted together, joint_candidates.hpp, and then names both), each further step fits
 // every remaining effect jointly with the effects already in the model and judges the
 // result held out; the best addition joins only if it beats the model as it stands by
 // more than kVerdictMargin plus its parameters' penalty (the same rule as step 1, with

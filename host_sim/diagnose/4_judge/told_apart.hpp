@@ -14,7 +14,9 @@
 //   flights' own fits are of the rotor on that step's base (base effects and rotor fitted
 //   per flight): a rotor fitted alone on a body whose moments are also wrong takes up part
 //   of the moment error, differently by each flight's rate, and the flights would
-//   disagree on h though they share one;
+//   disagree on h though they share one. Where that keeps the moments from leading the
+//   first step, the rotor and the moments are also tried there as a pair fitted together
+//   (joint_candidates.hpp);
 // - and there its held-out score beats the best candidate of every other effect beyond a
 //   tie (confidence.hpp, scores_tie).
 // Within one flight nothing does: the other effect heads the step, and the rotor, where it

@@ -1,6 +1,7 @@
 #include "diagnose/5_flow/judge_candidates.hpp"
 
 #include "diagnose/4_judge/confidence.hpp"
+#include "diagnose/4_judge/joint_candidates.hpp"
 #include "diagnose/4_judge/plausibility.hpp"
 #include "diagnose/4_judge/stepwise_selection.hpp"
 
@@ -14,6 +15,8 @@ void judge_candidates(Analysis& analysis, const RankingContext& context, const H
   for (Effect effect : candidate_effects(context.gyro_input)) {
     analysis.candidates.push_back(effect == Effect::none ? nominal_model : evaluate(nominal_model, effect));
   }
+  for (Candidate& pair : joint_candidates(analysis.candidates, context, evaluate))
+    analysis.candidates.push_back(std::move(pair));
   rule_out_senseless(analysis.candidates);
   rank_candidates(analysis, context);
   select_stepwise(analysis, context, evaluate);

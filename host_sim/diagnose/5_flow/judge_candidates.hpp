@@ -1,5 +1,6 @@
 // The one candidate loop of every analysis, a flight's or a session's: the nominal model,
-// each candidate effect against it, the senseless ruled out, the ranking, the stepwise
+// each candidate effect against it (in a session also the pairs of
+// 4_judge/joint_candidates.hpp), the senseless ruled out, the ranking, the stepwise
 // search for a compound model, the tensor report, and the confidence tempered by it. What
 // differs between a flight and a session is only how a model is held out, the rule this
 // loop is given:

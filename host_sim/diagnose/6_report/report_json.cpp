@@ -72,6 +72,9 @@ json steps_json(const Analysis& a) {
         {"heldout_rms_da_before_deg", s.heldout_rms_da_before_deg},
         {"heldout_rms_da_after_deg", s.heldout_rms_da_after_deg},
         {"shrink", s.shrink}};
+    // A pair of the first step (4_judge/joint_candidates.hpp) adds the effects fitted with it.
+    if (s.added >= 0 && !candidates[static_cast<std::size_t>(s.added)].base.empty() && i == 0)
+      step["added_with"] = names(candidates[static_cast<std::size_t>(s.added)].base);
     if (i > 0) {
       json tried = json::array();
       for (const Candidate& c : s.candidates) {
@@ -123,6 +126,8 @@ json candidates_json(const Analysis& a) {
   for (const Candidate& c : a.candidates) {
     json j;
     j["effect"] = effect_name(c.effect);
+    // A pair fitted together (4_judge/joint_candidates.hpp): the effects fitted with it.
+    if (!c.base.empty()) j["with"] = names(c.base);
     j["evaluated"] = c.evaluated;
     if (c.evaluated) {
       j["params"] = params_json(c.effect, c.params);
@@ -132,7 +137,9 @@ json candidates_json(const Analysis& a) {
       j["shrink_da"] = c.shrink_da;
       j["heldout_chi_square_per_residual"] =
           c.heldout_residuals ? c.heldout_chi_square / c.heldout_residuals : 0.0;
-      j["parameter_count"] = effect_penalty_count(c.effect);
+      int parameters = effect_penalty_count(c.effect);
+      for (Effect e : c.base) parameters += effect_penalty_count(e);
+      j["parameter_count"] = parameters;
       j["score"] = c.score;
       j["score_spread"] = c.score_spread;
       j["score_behind"] = c.score_behind;

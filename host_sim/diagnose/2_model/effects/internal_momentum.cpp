@@ -49,6 +49,9 @@ constexpr EffectDescriptor internal_momentum_effect = [] {
   // the withheld imu_impulse_4, three practice2 compound flights and a step of the first
   // real racquet session (docs/diagnose.md, "A rotor inside").
   d.named_only_when_told_apart = true;
+  // Alone on a body whose moments are also wrong, each flight's h takes up part of the
+  // moment error by its own rate (a moment error scales with w², a rotor with w).
+  d.jointly_with = Effect::inertia_moments;
   d.hooks = {tolerance, apply, parameters, too_small, no_objection, no_physics_objection};
   return d;
 }();
