@@ -185,9 +185,11 @@ TEST_CASE("the impulse's Jacobian columns, carried by the flow map, agree with c
       }
       at_impulse_derivative.col(i) = (rate_up - rate_down) / (2.0 * h);
     }
-    Eigen::MatrixXd columns;
-    impulse_reading_derivatives(model, flight, ref, jump, rate_columns, at_impulse_derivative, {1, 1, 1},
-                                columns);
+    Eigen::MatrixXd jacobian(3 * flight.size(), 6);
+    jacobian.rightCols(3) = rate_columns;
+    impulse_reading_derivatives(model, flight, ref, jump, at_impulse_derivative, {1, 1, 1}, jacobian);
+    const Eigen::MatrixXd columns = jacobian.leftCols(3);
+    CHECK(jacobian.rightCols(3) == rate_columns);
     for (Eigen::Index i = 0; i < 3; ++i) {
       Eigen::VectorXd plus = jump, minus = jump;
       plus(i) += h;

@@ -640,11 +640,10 @@ std::vector<char> impulse_directions(const EffectModel& model, const Eigen::Vect
 }
 
 void impulse_reading_derivatives(const EffectModel& model, const Flight& flight, std::size_t ref,
-                                 const Eigen::VectorXd& theta, const Eigen::MatrixXd& rate_columns,
-                                 const Eigen::Matrix3d& impulse_rate_derivative,
-                                 const std::vector<char>& directions, Eigen::MatrixXd& columns) {
+                                 const Eigen::VectorXd& theta, const Eigen::Matrix3d& impulse_rate_derivative,
+                                 const std::vector<char>& directions, Eigen::MatrixXd& jacobian) {
   const std::size_t n = flight.size();
-  columns.setZero(rate_columns.rows(), theta.size());
+  const Eigen::Index rates = theta.size();
   const FlightDynamics at(model_terms(model, theta), flight);
   const double t_ref = flight.time_s[ref];
   const auto true_time = [&](double t) { return t_ref + (t - t_ref) * at.time_factor(); };
@@ -662,9 +661,12 @@ void impulse_reading_derivatives(const EffectModel& model, const Flight& flight,
     for (std::size_t k = 0; k < n; ++k) {
       const double t = true_time(flight.time_s[k]);
       const bool past = sign > 0.0 ? t >= t_jump : t < t_jump;
-      if (!past) continue;
       const Eigen::Index row = static_cast<Eigen::Index>(3 * k);
-      columns.block<3, 1>(row, i) = rate_columns.block<3, 3>(row, 0) * c;
+      if (past) {
+        jacobian.block<3, 1>(row, i) = jacobian.block<3, 3>(row, rates) * c;
+      } else {
+        jacobian.block<3, 1>(row, i).setZero();
+      }
     }
   }
 }

@@ -150,7 +150,7 @@ bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta
                      &at_impulse);
     residuals_of(d, readings, r);
   }
-  Eigen::MatrixXd sensor_columns, impulse_columns;
+  Eigen::MatrixXd sensor_columns;
   if (!none(sensor)) sensor_reading_derivatives(model, flight, theta, readings, sensor, sensor_columns);
   jacobian.resize(r.size(), p + m);
   Eigen::Matrix3d impulse_rate_derivative = Eigen::Matrix3d::Identity();
@@ -182,12 +182,10 @@ bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta
     if (i >= p) impulse_rate_derivative.col(i - p) = (moved_at_impulse - at_impulse) / h;
   }
   if (!none(impulse)) {
-    impulse_reading_derivatives(model, flight, ref, theta, jacobian.rightCols(3), impulse_rate_derivative,
-                                impulse, impulse_columns);
+    impulse_reading_derivatives(model, flight, ref, theta, impulse_rate_derivative, impulse, jacobian);
   }
   for (Eigen::Index i = 0; i < p; ++i) {
     if (sensor[static_cast<std::size_t>(i)]) weighted_column(d, sensor_columns, i, jacobian, i);
-    if (impulse[static_cast<std::size_t>(i)]) jacobian.col(i) = impulse_columns.col(i);
   }
   return true;
 }
