@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <type_traits>
+#include <utility>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/walk_layout.hpp"
@@ -653,15 +654,21 @@ void impulse_reading_derivatives(const EffectModel& model, const Flight& flight,
   // would be, by the flow map: d reading_k / d rate_at_impulse = G_k Phi_j^-1.
   const double sign = t_jump > t_ref ? 1.0 : -1.0;
   const Mat3 carried = impulse_rate_derivative.inverse() * at.shell_inverse() * model.nominal.tensor;
+  // Each marked column's carried change, then each sample once for all of them: which
+  // side of the impulse it is on, and its rate rows read once (case00 408.8 -> 407.1 M
+  // instructions against a pass over the samples per column).
+  std::vector<std::pair<Eigen::Index, Vec3>> marked;
   for (Eigen::Index i = 0; i < theta.size(); ++i) {
     if (!directions[static_cast<std::size_t>(i)]) continue;
     const NudgedTerms t = nudged_terms(model, theta, i);
     const Vec3 d_jump = (t.up.jump - t.down.jump) / (2.0 * t.h);
-    const Vec3 c = sign * (carried * d_jump);
-    for (std::size_t k = 0; k < n; ++k) {
-      const double t = true_time(flight.time_s[k]);
-      const bool past = sign > 0.0 ? t >= t_jump : t < t_jump;
-      const Eigen::Index row = static_cast<Eigen::Index>(3 * k);
+    marked.emplace_back(i, sign * (carried * d_jump));
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const double t = true_time(flight.time_s[k]);
+    const bool past = sign > 0.0 ? t >= t_jump : t < t_jump;
+    const Eigen::Index row = static_cast<Eigen::Index>(3 * k);
+    for (const auto& [i, c] : marked) {
       if (past) {
         jacobian.block<3, 1>(row, i) = jacobian.block<3, 3>(row, rates) * c;
       } else {
