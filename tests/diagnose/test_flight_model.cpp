@@ -130,7 +130,8 @@ TEST_CASE("the sensor's columns of the readings' Jacobian agree with central dif
     REQUIRE(sensor_directions(c.model, c.theta) == c.sensor);
     std::vector<Eigen::Vector3d> readings, up, down;
     predict_readings(c.model, flight, ref, w0, c.theta, readings);
-    Eigen::MatrixXd columns;
+    Eigen::MatrixXd columns =
+        Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(3 * flight.size()), c.theta.size());
     sensor_reading_derivatives(c.model, flight, c.theta, readings, c.sensor, columns);
     for (Eigen::Index i = 0; i < c.theta.size(); ++i) {
       if (!c.sensor[static_cast<std::size_t>(i)]) {

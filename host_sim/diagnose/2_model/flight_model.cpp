@@ -609,7 +609,6 @@ void sensor_reading_derivatives(const EffectModel& model, const Flight& flight, 
                                 const std::vector<Eigen::Vector3d>& readings,
                                 const std::vector<char>& directions, Eigen::MatrixXd& columns) {
   const std::size_t n = flight.size();
-  columns.setZero(static_cast<Eigen::Index>(3 * n), theta.size());
   const FlightDynamics at(model_terms(model, theta), flight);
   std::vector<Vec3> rates(n);
   for (std::size_t k = 0; k < n; ++k) rates[k] = at.rate_of_reading(readings[k]);

@@ -96,8 +96,10 @@ std::vector<char> sensor_directions(const EffectModel& model, const Eigen::Vecto
 // d readings / d theta_i for each direction i that `directions` marks (from
 // sensor_directions), from `readings`, the prediction at theta: the reading is
 // scale (R w) + bias, so the rate w behind each reading is differentiated through the
-// sensor alone. `columns`: 3n rows (sample k at 3k), one column per theta entry, zero
-// where not marked.
+// sensor alone. `columns`: 3n rows (sample k at 3k) and a column per theta entry at
+// least, sized by the caller (the fitter's Jacobian): each marked column is written, the
+// others are left as they are (no matrix of every theta column zeroed: case00
+// 407.1 -> 405.0 M instructions).
 void sensor_reading_derivatives(const EffectModel& model, const Flight& flight, const Eigen::VectorXd& theta,
                                 const std::vector<Eigen::Vector3d>& readings,
                                 const std::vector<char>& directions, Eigen::MatrixXd& columns);
