@@ -130,7 +130,8 @@ TEST_CASE("the sensor's columns of the readings' Jacobian agree with central dif
     REQUIRE(sensor_directions(c.model, c.theta) == c.sensor);
     std::vector<Eigen::Vector3d> readings, up, down;
     predict_readings(c.model, flight, ref, w0, c.theta, readings);
-    Eigen::MatrixXd columns;
+    Eigen::MatrixXd columns =
+        Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(3 * flight.size()), c.theta.size());
     sensor_reading_derivatives(c.model, flight, c.theta, readings, c.sensor, columns);
     for (Eigen::Index i = 0; i < c.theta.size(); ++i) {
       if (!c.sensor[static_cast<std::size_t>(i)]) {
@@ -185,9 +186,11 @@ TEST_CASE("the impulse's Jacobian columns, carried by the flow map, agree with c
       }
       at_impulse_derivative.col(i) = (rate_up - rate_down) / (2.0 * h);
     }
-    Eigen::MatrixXd columns;
-    impulse_reading_derivatives(model, flight, ref, jump, rate_columns, at_impulse_derivative, {1, 1, 1},
-                                columns);
+    Eigen::MatrixXd jacobian(3 * flight.size(), 6);
+    jacobian.rightCols(3) = rate_columns;
+    impulse_reading_derivatives(model, flight, ref, jump, at_impulse_derivative, {1, 1, 1}, jacobian);
+    const Eigen::MatrixXd columns = jacobian.leftCols(3);
+    CHECK(jacobian.rightCols(3) == rate_columns);
     for (Eigen::Index i = 0; i < 3; ++i) {
       Eigen::VectorXd plus = jump, minus = jump;
       plus(i) += h;

@@ -111,14 +111,14 @@ struct Setup {
   EffectModel model() const { return EffectModel{effect, *nominal, impulse_time_s, base}; }
 };
 
-// Rows of a Jacobian column for the samples the fit uses, weighted as the residuals are.
-void weighted_column(const FlightData& d, const Eigen::MatrixXd& readings_column, Eigen::Index source,
-                     Eigen::MatrixXd& jacobian, Eigen::Index column) {
+// A Jacobian column of reading derivatives weighted in place as the residuals are: zero
+// for the samples the fit leaves out.
+void weight_column(const FlightData& d, Eigen::MatrixXd& jacobian, Eigen::Index column) {
   for (std::size_t k = 0; k < d.flight->size(); ++k) {
     const Eigen::Index row = static_cast<Eigen::Index>(3 * k);
     jacobian.block<3, 1>(row, column) =
         d.mask[k] && d.flight->usable[k]
-            ? Vec3(readings_column.block<3, 1>(row, source).cwiseProduct(d.inverse_sigma))
+            ? Vec3(jacobian.block<3, 1>(row, column).cwiseProduct(d.inverse_sigma))
             : Vec3::Zero();
   }
 }
@@ -150,9 +150,8 @@ bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta
                      &at_impulse);
     residuals_of(d, readings, r);
   }
-  Eigen::MatrixXd sensor_columns, impulse_columns;
-  if (!none(sensor)) sensor_reading_derivatives(model, flight, theta, readings, sensor, sensor_columns);
   jacobian.resize(r.size(), p + m);
+  if (!none(sensor)) sensor_reading_derivatives(model, flight, theta, readings, sensor, jacobian);
   Eigen::Matrix3d impulse_rate_derivative = Eigen::Matrix3d::Identity();
   Eigen::VectorXd moved;
   Eigen::Index differenced = p + m;
@@ -182,12 +181,10 @@ bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta
     if (i >= p) impulse_rate_derivative.col(i - p) = (moved_at_impulse - at_impulse) / h;
   }
   if (!none(impulse)) {
-    impulse_reading_derivatives(model, flight, ref, theta, jacobian.rightCols(3), impulse_rate_derivative,
-                                impulse, impulse_columns);
+    impulse_reading_derivatives(model, flight, ref, theta, impulse_rate_derivative, impulse, jacobian);
   }
   for (Eigen::Index i = 0; i < p; ++i) {
-    if (sensor[static_cast<std::size_t>(i)]) weighted_column(d, sensor_columns, i, jacobian, i);
-    if (impulse[static_cast<std::size_t>(i)]) jacobian.col(i) = impulse_columns.col(i);
+    if (sensor[static_cast<std::size_t>(i)]) weight_column(d, jacobian, i);
   }
   return true;
 }

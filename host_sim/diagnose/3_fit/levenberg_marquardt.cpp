@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "common/parallel_for.hpp"
+#include "diagnose/3_fit/column_products.hpp"
 
 namespace aloft::host::diagnose {
 
@@ -109,21 +110,9 @@ struct BlockNormal {
   double cost = 0.0;
 };
 
-// J^T J of a tall, narrow Jacobian, one column dot product per entry of the lower half,
-// mirrored: half the work of the general product (and none of its packing), which for
-// p + m <= 12 columns by thousands of rows spent more copying the blocks than multiplying.
-Eigen::MatrixXd gram(const Eigen::MatrixXd& jac) {
-  const Eigen::Index k = jac.cols();
-  Eigen::MatrixXd out(k, k);
-  for (Eigen::Index i = 0; i < k; ++i) {
-    for (Eigen::Index j = 0; j <= i; ++j) out(i, j) = out(j, i) = jac.col(i).dot(jac.col(j));
-  }
-  return out;
-}
-
 BlockNormal normal_of(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r) {
   BlockNormal out;
-  out.jtj = gram(jac);
+  out.jtj = column_products(jac);
   out.jtr = jac.transpose() * r;
   out.cost = r.squaredNorm();
   return out;
