@@ -1,7 +1,5 @@
 #include "diagnose/3_fit/effect_fit.hpp"
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,6 +11,7 @@
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/3_fit/initial_state_fit.hpp"
 #include "diagnose/3_fit/levenberg_marquardt.hpp"
+#include "diagnose/3_fit/parameter_errors.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -62,40 +61,6 @@ void residuals_of(const FlightData& data, const std::vector<Vec3>& readings, Eig
       for (int i = 0; i < 3; ++i) out[i] = (predicted[k](i) - read[k](i)) * weight(i);
     }
   }
-}
-
-// The covariance of the first `count` parameters (initial rates marginalised) over the
-// directions the data informs, and their marginal standard errors: infinite where a
-// parameter reaches into a direction the data do not inform. One eigen-decomposition of
-// the whole normal matrix serves both (two cost 10-14 % of a 200-flight log).
-struct ParameterErrors {
-  Eigen::VectorXd standard_error;
-  Eigen::MatrixXd covariance;
-};
-ParameterErrors parameter_errors(const Eigen::MatrixXd& normal, int count, double variance) {
-  ParameterErrors out{Eigen::VectorXd::Constant(count, std::numeric_limits<double>::infinity()),
-                      Eigen::MatrixXd::Zero(count, count)};
-  if (count == 0 || normal.rows() == 0) return out;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(normal);
-  const Eigen::VectorXd& values = solver.eigenvalues();
-  const double cutoff = 1e-12 * std::max(values.maxCoeff(), 1e-300);
-  std::vector<bool> informed(static_cast<std::size_t>(count), true);
-  for (int k = 0; k < values.size(); ++k) {
-    const Eigen::VectorXd v = solver.eigenvectors().col(k).head(count);
-    if (values(k) <= cutoff) {
-      for (int i = 0; i < count; ++i) {
-        if (std::abs(v(i)) > 1e-6) informed[static_cast<std::size_t>(i)] = false;
-      }
-      continue;
-    }
-    out.covariance += v * v.transpose() / values(k);
-  }
-  for (int i = 0; i < count; ++i) {
-    if (informed[static_cast<std::size_t>(i)])
-      out.standard_error(i) = std::sqrt(out.covariance(i, i) * variance);
-  }
-  out.covariance *= variance;
-  return out;
 }
 
 struct Setup {
@@ -229,7 +194,7 @@ EffectFit result_of(const Setup& setup, const LeastSquaresResult& solution, int 
   const int parameters = shared_count + 3 * static_cast<int>(setup.data->size());
   const int dof = std::max(1, fit.residual_count - parameters);
   ParameterErrors errors =
-      parameter_errors(solution.normal_matrix, shared_count, std::max(fit.cost / dof, 1e-12));
+      parameter_errors(solution.normal_matrix, shared_count, 3, std::max(fit.cost / dof, 1e-12));
   fit.theta_standard_error = std::move(errors.standard_error);
   fit.theta_covariance = std::move(errors.covariance);
   return fit;
