@@ -46,7 +46,8 @@ void require_same(const ParameterErrors& a, const ParameterErrors& b) {
 
 }  // namespace
 
-TEST_CASE("parameter_errors through the Schur complement equals the full decomposition", "[parameter_errors]") {
+TEST_CASE("parameter_errors through the Schur complement equals the full decomposition",
+          "[parameter_errors]") {
   const Eigen::MatrixXd normal = arrow_normal([](int, Eigen::MatrixXd&) {});
   const ParameterErrors arrow = parameter_errors(normal, kShared, kLocal, 2.5);
   REQUIRE(arrow.through_schur);

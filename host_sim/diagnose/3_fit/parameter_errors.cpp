@@ -51,7 +51,8 @@ std::optional<Eigen::MatrixXd> schur_inverse(const Eigen::MatrixXd& normal, int 
   Eigen::MatrixXd schur = normal.topLeftCorner(count, count);
   double largest_block_inverse = 0.0, coupling = 0.0;  // max ||D_i^-1||, ||B D^-1||_F^2
   for (Eigen::Index start = count; start < size; start += local_count) {
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> block(normal.block(start, start, local_count, local_count));
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> block(
+        normal.block(start, start, local_count, local_count));
     const double smallest = block.eigenvalues().minCoeff();
     if (!(smallest > 0.0)) return std::nullopt;
     largest_block_inverse = std::max(largest_block_inverse, 1.0 / smallest);
