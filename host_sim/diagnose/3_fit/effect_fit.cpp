@@ -82,9 +82,7 @@ void weight_column(const FlightData& d, Eigen::MatrixXd& jacobian, Eigen::Index 
   for (std::size_t k = 0; k < d.flight->size(); ++k) {
     const Eigen::Index row = static_cast<Eigen::Index>(3 * k);
     jacobian.block<3, 1>(row, column) =
-        d.mask[k] && d.flight->usable[k]
-            ? Vec3(jacobian.block<3, 1>(row, column).cwiseProduct(d.inverse_sigma))
-            : Vec3::Zero();
+        d.compared(k) ? Vec3(jacobian.block<3, 1>(row, column).cwiseProduct(d.inverse_sigma)) : Vec3::Zero();
   }
 }
 

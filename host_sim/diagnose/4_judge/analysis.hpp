@@ -109,6 +109,14 @@ struct Candidate {
   std::vector<std::vector<char>> unseen_jump;
 };
 
+// The parameters a candidate's score is penalised for: its effect's and its base's
+// (effect_penalty_count; the nominal model, `none`, has none).
+inline int penalty_count(const Candidate& c) {
+  int parameters = effect_penalty_count(c.effect);
+  for (Effect e : c.base) parameters += effect_penalty_count(e);
+  return parameters;
+}
+
 // One effect of the final model (SPEC §4 verdict.effects).
 struct VerdictEffect {
   Effect effect = Effect::none;

@@ -167,10 +167,7 @@ void score_candidates(std::vector<Candidate>& all, const Candidate& reference, c
       c.score = 1e300;
       continue;
     }
-    int parameters = 0;
-    for (Effect e : c.base) parameters += effect_penalty_count(e);
-    if (!c.reference || c.effect != Effect::none) parameters += effect_penalty_count(c.effect);
-    c.score = c.heldout_chi_square / dispersion + kPenaltyPerParameter * parameters;
+    c.score = c.heldout_chi_square / dispersion + kPenaltyPerParameter * penalty_count(c);
     c.shrink =
         reference.heldout_rms_rel_err > 0 ? 1.0 - c.heldout_rms_rel_err / reference.heldout_rms_rel_err : 0.0;
     c.reference_rms_rel_err = reference.heldout_rms_rel_err;

@@ -137,9 +137,7 @@ json candidates_json(const Analysis& a) {
       j["shrink_da"] = c.shrink_da;
       j["heldout_chi_square_per_residual"] =
           c.heldout_residuals ? c.heldout_chi_square / c.heldout_residuals : 0.0;
-      int parameters = effect_penalty_count(c.effect);
-      for (Effect e : c.base) parameters += effect_penalty_count(e);
-      j["parameter_count"] = parameters;
+      j["parameter_count"] = penalty_count(c);
       j["score"] = c.score;
       j["score_spread"] = c.score_spread;
       j["score_behind"] = c.score_behind;
