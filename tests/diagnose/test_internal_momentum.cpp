@@ -198,7 +198,31 @@ struct KindTally {
   bool rotor = false;  // a rotor is in every flight
   int sessions = 0, named = 0, h_right = 0, confident = 0;
   int flights = 0, flights_listed = 0;
+  // Sessions with a tensor report; its 95 % intervals hold the truth; its ratios within 1 % of it.
+  int tensors = 0, tensors_covered = 0, tensors_close = 0;
 };
+
+// The true moment ratios (tensor_report.hpp's: I2/I1 and I3/I1 in body order along the
+// nominal principal axes) of a generated flight.
+Eigen::Vector2d true_ratios(const aloft::generator::GeneratedFlight& flight, const NominalInertia& nominal) {
+  const Eigen::Matrix3d axes = nominal.principal_axes.toRotationMatrix();
+  const Eigen::Vector3d moments = (axes.transpose() * flight.true_inertia_kg_m2 * axes).diagonal();
+  const Eigen::Vector3i order = principal_axis_order(nominal);
+  return Eigen::Vector2d(moments(order(1)) / moments(order(0)), moments(order(2)) / moments(order(0)));
+}
+
+// The tensor report's ratios against the truth, and whether its 95 % intervals hold it.
+std::string tensor_against_truth(const TensorReport& t, const Eigen::Vector2d& truth, KindTally& tally) {
+  bool covered = true;
+  for (int i = 0; i < 2; ++i) covered = covered && truth(i) >= t.ratio_low(i) && truth(i) <= t.ratio_high(i);
+  ++tally.tensors;
+  tally.tensors_covered += covered;
+  tally.tensors_close +=
+      (t.ratio_best.cwiseQuotient(truth) - Eigen::Vector2d::Ones()).cwiseAbs().maxCoeff() <= 0.01;
+  return printf_text("; tensor ratios %+.2f %+.2f %% off the truth",
+                     100.0 * (t.ratio_best(0) / truth(0) - 1.0), 100.0 * (t.ratio_best(1) / truth(1) - 1.0)) +
+         (covered ? ", inside its 95 % intervals" : ", OUTSIDE its 95 % intervals");
+}
 
 // The rotor fitted with other effects in a session (`own`: its flights' own analyses):
 // with the moments at the first step (joint_candidates.hpp: its flights' scatter, its score
@@ -241,7 +265,8 @@ void judge_session(const aloft::generator::SessionCase& c, KindTally& tally) {
     flights.push_back(flight_from_imu(generated.back().imu, generated.back().body, -INFINITY, INFINITY,
                                       c.name + "_" + std::to_string(flights.size())));
   }
-  const SessionDiagnosis d = diagnose_session(flights, NominalInertia::of(generated.front().body.inertia), 2);
+  const NominalInertia nominal = NominalInertia::of(generated.front().body.inertia);
+  const SessionDiagnosis d = diagnose_session(flights, nominal, 2);
   tally.rotor = c.flights.front().effect == "internal_momentum";
   const VerdictEffect* named = named_rotor(d.pooled.verdict);
   int flights_listed = 0;
@@ -263,6 +288,8 @@ void judge_session(const aloft::generator::SessionCase& c, KindTally& tally) {
     detail = printf_text(" |h| %+.1f %%, direction %.1f deg", 100.0 * size, turn);
     const auto& why = d.pooled.verdict.could_not_judge;
     if (!why.empty()) detail += " (not confident: " + why.front() + ")";
+    if (d.pooled.tensor)
+      detail += tensor_against_truth(*d.pooled.tensor, true_ratios(generated.front(), nominal), tally);
   }
   std::vector<const Analysis*> own;
   for (const FlightDiagnosis& f : d.flights) own.push_back(&f.analysis);
@@ -297,12 +324,20 @@ TEST_CASE("rotor sessions are named a rotor, look-alike sessions never", "[rotor
   int rotor_sessions = 0, rotor_named = 0, h_right = 0, look_alikes_named = 0;
   for (const auto& [kind, t] : tallies) {
     std::printf(
-        "%-14s sessions naming a rotor %d of %d (confident %d; |h| within 10 %% and 10 deg on %d); "
-        "flights listing a rotor %d of %d\n",
-        kind.c_str(), t.named, t.sessions, t.confident, t.h_right, t.flights_listed, t.flights);
+        "%-14s sessions naming a rotor %d of %d (confident %d; |h| within 10 %% and 10 deg on %d; tensor "
+        "intervals hold the truth on %d, ratios within 1 %% on %d, of %d); flights listing a rotor %d of "
+        "%d\n",
+        kind.c_str(), t.named, t.sessions, t.confident, t.h_right, t.tensors_covered, t.tensors_close,
+        t.tensors, t.flights_listed, t.flights);
     if (kind == "rotor_moments") {
       CHECK(t.named >= kRotorWithWrongMomentsNamed * t.sessions);
       CHECK(t.h_right == t.named);  // a rotor named beside wrong moments has the right h
+      // The moments read from the pair's fit, not from the moments alone, which the rotor
+      // pulls off (tensor_intervals.cpp, moments_fit). Measured: ratios within 0.01 % of the
+      // truth, every interval holding it; read from the moments alone, 1.8 to 8.4 % off and
+      // one interval of five missing it.
+      CHECK(t.tensors_covered >= kRotorWithWrongMomentsNamed * t.tensors);
+      CHECK(t.tensors_close == t.tensors);
     } else if (t.rotor) {
       rotor_sessions += t.sessions;
       rotor_named += t.named;

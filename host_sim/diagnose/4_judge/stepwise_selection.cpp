@@ -148,6 +148,26 @@ bool next_step(Analysis& a, const RankingContext& context, const CandidateEvalua
   return joins;
 }
 
+// The candidate that brought `effect` into the model: the first step's pair when the
+// effect joined in one (joint_candidates.hpp), so that the verdict is judged on the fit
+// that holds it (a rotor's moments fitted alone can hold out worse than the nominal
+// model); else the effect's own candidate at the first step (-1: none).
+int candidate_that_brought(const Analysis& analysis, Effect effect) {
+  const int first = analysis.steps.empty() ? -1 : analysis.steps.front().added;
+  if (first >= 0) {
+    const Candidate& joined = analysis.candidates[static_cast<std::size_t>(first)];
+    const std::vector<Effect> effects = effects_of(joined);
+    if (!joined.base.empty() && std::find(effects.begin(), effects.end(), effect) != effects.end())
+      return first;
+  }
+  int chosen = -1;
+  for (std::size_t i = 0; i < analysis.candidates.size(); ++i) {
+    if (analysis.candidates[i].effect == effect && analysis.candidates[i].base.empty())
+      chosen = static_cast<int>(i);
+  }
+  return chosen;
+}
+
 // The final model's effects, each with its step, its parameters and what the model
 // loses without it; most important (largest loss) first.
 // Sets the verdict from them (its effect, class, chosen candidate and held-out error after).
@@ -200,10 +220,7 @@ void describe_final_model(Analysis& analysis, const RankingContext& context,
   v.effect = v.effects.front().effect;
   v.equivalent = v.effects.front().equivalent;
   v.indistinguishable = v.effects.front().indistinguishable;
-  for (std::size_t i = 0; i < analysis.candidates.size(); ++i) {
-    if (analysis.candidates[i].effect == v.effect && analysis.candidates[i].base.empty())
-      v.chosen = static_cast<int>(i);
-  }
+  if (const int brought = candidate_that_brought(analysis, v.effect); brought >= 0) v.chosen = brought;
   v.heldout_rms_rel_err_after = current.heldout_rms_rel_err;
   v.heldout_rms_da_after_deg = current.heldout_rms_da_deg;
   if (!current.identifiable && final_effects.size() > 1) {

@@ -6,6 +6,9 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+
+#include "diagnose/3_fit/effect_fit.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -29,6 +32,41 @@ const Candidate* find(const Analysis& a, Effect e) {
     if (c.effect == e && c.evaluated) return &c;
   }
   return nullptr;
+}
+
+// The moments as one candidate fitted them: their principal values (nominal principal
+// order), the covariance of their two free log parameters, and (a session) those two
+// fitted without each flight.
+struct MomentsFit {
+  const Candidate* candidate = nullptr;
+  Eigen::Vector3d principal_kg_m2 = Eigen::Vector3d::Zero();
+  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
+  std::vector<Eigen::Vector2d> heldout;
+};
+
+// The candidate the moments are read from: the first step's pair when one that holds the
+// moments joined the model (4_judge/joint_candidates.hpp: a rotor beside wrong moments),
+// since fitted alone the moments take up part of what the other effect does; else the
+// moments fitted alone. Nothing when neither has a covariance of the moments.
+std::optional<MomentsFit> moments_fit(const Analysis& a, const NominalInertia& nominal) {
+  const Candidate* c = find(a, Effect::inertia_moments);
+  if (!a.steps.empty() && a.steps.front().added >= 0) {
+    const Candidate& joined = a.candidates[static_cast<std::size_t>(a.steps.front().added)];
+    if (std::find(joined.base.begin(), joined.base.end(), Effect::inertia_moments) != joined.base.end())
+      c = &joined;
+  }
+  if (c == nullptr || c->fit.flights.empty()) return std::nullopt;
+  const EffectModel model = model_of(c->fit, nominal, 0);
+  const int at = theta_offset(model, Effect::inertia_moments);
+  if (at < 0 || c->fit.theta_covariance.rows() < at + 2) return std::nullopt;
+  MomentsFit m;
+  m.candidate = c;
+  m.principal_kg_m2 = c->effect == Effect::inertia_moments
+                          ? c->params.principal_kg_m2
+                          : effect_parameters(model, c->fit.theta, Effect::inertia_moments).principal_kg_m2;
+  m.covariance = c->fit.theta_covariance.block<2, 2>(at, at);
+  for (const Eigen::VectorXd& t : c->heldout_theta) m.heldout.push_back(t.segment<2>(at));
+  return m;
 }
 
 // d(log moment k)/d(theta) for the ascending principal moments (flight_model.hpp: u0, u1
@@ -69,10 +107,10 @@ double serial_inflation(const Candidate& c, const std::vector<const Flight*>& fl
   return (1.0 + rho) / (1.0 - rho);
 }
 
-TensorReport base_report(const Candidate& moments, const NominalInertia& nominal) {
+TensorReport base_report(const MomentsFit& moments, const NominalInertia& nominal) {
   TensorReport r;
   r.axis_order = principal_axis_order(nominal);
-  r.ratio_best = ratios_of(moments.params.principal_kg_m2, r.axis_order);
+  r.ratio_best = ratios_of(moments.principal_kg_m2, r.axis_order);
   r.ratio_nominal = ratios_of(nominal.principal_moments, r.axis_order);
   return r;
 }
@@ -92,7 +130,7 @@ void set_intervals(TensorReport& r, const Eigen::Vector2d& log_se, double quanti
 
 // The pairs of body axes whose moments' ratio has a 95 % interval holding 1, from the
 // log ratios' covariance (body order: log I2/I1, log I3/I1) and the interval's quantile.
-void find_unresolved_planes(TensorReport& r, const Candidate& moments, const Eigen::Matrix2d& log_cov,
+void find_unresolved_planes(TensorReport& r, const MomentsFit& moments, const Eigen::Matrix2d& log_cov,
                             double quantile) {
   const Eigen::Vector2d l(std::log(r.ratio_best(0)), std::log(r.ratio_best(1)));
   struct Pair {
@@ -106,7 +144,7 @@ void find_unresolved_planes(TensorReport& r, const Candidate& moments, const Eig
     if (std::abs(p.log_ratio) <= quantile * std::sqrt(std::max(p.variance, 0.0)))
       r.unresolved_planes.push_back({p.a, p.b});
   }
-  for (int b = 0; b < 3; ++b) r.moments_kg_m2(b) = moments.params.principal_kg_m2(r.axis_order(b));
+  for (int b = 0; b < 3; ++b) r.moments_kg_m2(b) = moments.principal_kg_m2(r.axis_order(b));
 }
 
 // The axes bound: the fitted rotation plus the 95 % radius of its error ellipsoid. None
@@ -128,12 +166,12 @@ Eigen::Matrix3d model_covariance_3(const Candidate& c, double inflation) {
 
 bool flight_tensor_report(const Analysis& analysis, const std::vector<const Flight*>& flights,
                           const NominalInertia& nominal, TensorReport& report) {
-  const Candidate* moments = find(analysis, Effect::inertia_moments);
-  if (moments == nullptr || moments->fit.theta_covariance.rows() != 2) return false;
+  const std::optional<MomentsFit> moments = moments_fit(analysis, nominal);
+  if (!moments) return false;
   TensorReport r = base_report(*moments, nominal);
-  const double inflation = serial_inflation(*moments, flights);
+  const double inflation = serial_inflation(*moments->candidate, flights);
   const Eigen::Matrix2d g = log_ratio_gradient(r.axis_order);
-  const Eigen::Matrix2d cov = g * moments->fit.theta_covariance * g.transpose() * inflation;
+  const Eigen::Matrix2d cov = g * moments->covariance * g.transpose() * inflation;
   set_intervals(r, cov.diagonal().cwiseMax(0.0).cwiseSqrt(), kNormal975);
   find_unresolved_planes(r, *moments, cov, kNormal975);
   const Candidate* axes = find(analysis, Effect::inertia_axes);
@@ -146,22 +184,19 @@ bool flight_tensor_report(const Analysis& analysis, const std::vector<const Flig
 
 bool pooled_tensor_report(const Analysis& pooled, const std::vector<const Flight*>& flights,
                           const NominalInertia& nominal, TensorReport& report) {
-  const Candidate* moments = find(pooled, Effect::inertia_moments);
+  const std::optional<MomentsFit> moments = moments_fit(pooled, nominal);
   const std::size_t n = flights.size();
-  if (moments == nullptr || moments->fit.theta_covariance.rows() != 2 || moments->heldout_theta.size() != n ||
-      n < 2) {
-    return false;
-  }
+  if (!moments || moments->heldout.size() != n || n < 2) return false;
   TensorReport r = base_report(*moments, nominal);
   const Eigen::Matrix2d g = log_ratio_gradient(r.axis_order);
   const Eigen::Matrix2d model =
-      g * moments->fit.theta_covariance * g.transpose() * serial_inflation(*moments, flights);
+      g * moments->covariance * g.transpose() * serial_inflation(*moments->candidate, flights);
   // Jackknife over flights: (n-1)/n times the spread of the leave-one-out estimates.
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-  for (const Eigen::VectorXd& t : moments->heldout_theta) mean += g * t;
+  for (const Eigen::Vector2d& t : moments->heldout) mean += g * t;
   mean /= static_cast<double>(n);
   Eigen::Vector2d spread = Eigen::Vector2d::Zero();
-  for (const Eigen::VectorXd& t : moments->heldout_theta) spread += (g * t - mean).cwiseAbs2();
+  for (const Eigen::Vector2d& t : moments->heldout) spread += (g * t - mean).cwiseAbs2();
   const Eigen::Vector2d jackknife = spread * (static_cast<double>(n) - 1.0) / static_cast<double>(n);
   const double t = student_t_975(static_cast<int>(n) - 1);
   const Eigen::Vector2d variance = jackknife.cwiseMax(model.diagonal().cwiseMax(0.0));
