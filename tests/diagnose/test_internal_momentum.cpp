@@ -342,6 +342,9 @@ TEST_CASE("rotor sessions are named a rotor, look-alike sessions never", "[rotor
       rotor_sessions += t.sessions;
       rotor_named += t.named;
       h_right += t.h_right;
+      // A rotor alone: the moments read beside it (tensor_intervals.cpp). Measured: within
+      // 0.07 % of the true ratios; read alone, 0.05 to 98 % off.
+      CHECK(t.tensors_close == t.tensors);
     } else {
       look_alikes_named += t.named;
     }

@@ -1,8 +1,9 @@
 // The tensor report's intervals (tensor_report.hpp) from a judged analysis.
 //
 // How the intervals are made (docs/diagnose.md, "Is my tensor right?", argues the choice):
-// - The ratios come from the inertia_moments candidate (or, where the first step named the
-//   moments in a pair with a rotor, from the pair's fit), whose parameters are log moments,
+// - The ratios come from the inertia_moments candidate (or, where the verdict holds a
+//   rotor, from the moments fitted beside it: tensor_intervals.cpp, moments_fit), whose
+//   parameters are log moments,
 //   so a log ratio is linear in them and its error follows from theirs exactly.
 // - One flight: the fit's own covariance (noise taken from the residuals, cost/dof), widened
 //   for the residuals' serial correlation (a low-passed gyro's noise is not white): the
