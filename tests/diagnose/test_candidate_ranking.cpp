@@ -127,6 +127,26 @@ TEST_CASE("rank_step: a class that ties exactly is headed by the registry's firs
   }
 }
 
+TEST_CASE("rank_step: a class that ties is listed in the registry's order, whichever fit ended lower",
+          "[candidate_ranking][ties]") {
+  const double gain = kVerdictMargin + penalty(Effect::inertia_axes) + 50.0;
+  for (double last_bits : {-0.3, -1e-9, 0.0, 1e-9, 0.3}) {
+    const Analysis a = ranked({candidate(Effect::none, 2900.0, 0.10),
+                               candidate(Effect::sensor_misalignment, 2900.0 - gain - last_bits, 0.05),
+                               candidate(Effect::inertia_axes, 2900.0 - gain, 0.05)});
+    REQUIRE(a.candidates.size() == 3);
+    CHECK(a.candidates[0].effect == Effect::inertia_axes);
+    CHECK(a.candidates[1].effect == Effect::sensor_misalignment);
+    CHECK(a.candidates[2].effect == Effect::none);
+    CHECK(a.candidates[static_cast<std::size_t>(a.verdict.chosen)].effect == a.verdict.effect);
+  }
+  // Beyond the rounding tolerance the scores order them.
+  const Analysis apart = ranked({candidate(Effect::none, 2900.0, 0.10),
+                                 candidate(Effect::sensor_misalignment, 2900.0 - gain - 2.0, 0.05),
+                                 candidate(Effect::inertia_axes, 2900.0 - gain, 0.05)});
+  CHECK(apart.candidates[0].effect == Effect::sensor_misalignment);
+}
+
 TEST_CASE("rank_step: a class member clearly ahead keeps the headline", "[candidate_ranking][ties]") {
   const double gain = kVerdictMargin + penalty(Effect::inertia_axes) + 50.0;
   const Analysis a = ranked({candidate(Effect::none, 2900.0, 0.10),

@@ -244,6 +244,35 @@ std::size_t fixed_order_headline(const std::vector<Candidate>& all, std::size_t 
   return head;
 }
 
+// Members of one class both ways (always_equivalent) whose scores lie within the rounding
+// tolerance of each other are listed in the registry's order, as fixed_order_headline
+// names them: which of them a fit left a bit lower is the last bits of its path, not the
+// data (practice3 T06's second step: inertia_axes and sensor_misalignment, 3307.7514 both,
+// swapped places when the fold refits changed their start). Keeps `out`'s indices on
+// their candidates.
+void list_ties_in_registry_order(std::vector<Candidate>& all, StepRanking& out, bool gyro_input) {
+  const auto swaps = [&](const Candidate& a, const Candidate& b) {
+    return b.effect < a.effect && a.base == b.base &&
+           std::abs(a.score - b.score) <= kScoreRoundingTolerance &&
+           contains(always_equivalent(a.effect, gyro_input), b.effect) &&
+           contains(always_equivalent(b.effect, gyro_input), a.effect);
+  };
+  for (bool swapped = true; swapped;) {
+    swapped = false;
+    for (std::size_t i = 0; i + 1 < all.size(); ++i) {
+      if (!swaps(all[i], all[i + 1])) continue;
+      std::swap(all[i], all[i + 1]);
+      for (int* index : {&out.best, &out.reference}) {
+        if (*index == static_cast<int>(i))
+          *index = static_cast<int>(i + 1);
+        else if (*index == static_cast<int>(i + 1))
+          *index = static_cast<int>(i);
+      }
+      swapped = true;
+    }
+  }
+}
+
 // The best eligible candidate of an effect other than all[head]'s, or -1.
 int best_other(const std::vector<Candidate>& all, std::size_t head) {
   for (std::size_t i = 0; i < all.size(); ++i) {
@@ -329,6 +358,7 @@ StepRanking rank_step(std::vector<Candidate>& all, const RankingContext& context
   }
   std::sort(out.tied.begin(), out.tied.end());
   if (out.beats_reference) mark_indistinguishable(all, out);
+  list_ties_in_registry_order(all, out, context.gyro_input);
   return out;
 }
 
