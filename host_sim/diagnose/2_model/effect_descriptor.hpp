@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "diagnose/1_input/flight.hpp"
 #include "diagnose/2_model/effect.hpp"
 #include "diagnose/2_model/effect_parameters.hpp"
 #include "diagnose/2_model/model_terms.hpp"
@@ -104,6 +105,10 @@ struct EffectDescriptor {
   bool shared_by_flights = true;
   // Not started at zero but from a grid (nullptr: zero, or the caller's start).
   const StartGrid* start_grid = nullptr;
+  // A start read off the readings, for a fit from zero that can stop in another minimum
+  // (3_fit/effect_fit.cpp, lower_from_readings; nullptr: none). Its flights, their
+  // nominal tensor; returns the effect's theta.
+  Eigen::VectorXd (*start_from_readings)(const std::vector<const Flight*>&, const NominalInertia&) = nullptr;
   // Named only where the data tell it from its look-alikes (4_judge/told_apart.hpp): it
   // beats every other candidate beyond a tie, and in a session the flights' own fits of it
   // agree. For an effect whose few free parameters mimic several others within a flight.

@@ -501,6 +501,29 @@ double weighted_squares(const FlightData& data, const std::vector<Eigen::Vector3
   return sum;
 }
 
+namespace {
+
+// Where the effect has a start read off the readings (descriptor `start_from_readings`: a
+// rotor) and that start, with the rates the gyro reads, already costs less than where the
+// fit ended (one simulation), the fit stopped in another minimum: it is fitted again from
+// there and the lower end kept. A fit that reached its minimum is kept as it is. `base`:
+// the base effects' fitted parameters, which head theta and the start (compound models).
+LeastSquaresResult lower_from_readings(const Setup& setup, const ArrowProblem& problem,
+                                       LeastSquaresResult fitted, const Eigen::VectorXd& base) {
+  const auto read_off = describe(setup.effect).start_from_readings;
+  if (read_off == nullptr) return fitted;
+  std::vector<const Flight*> flights;
+  for (const FlightData& d : *setup.data) flights.push_back(d.flight);
+  Eigen::VectorXd start(fitted.shared.size());
+  start << base, read_off(flights, *setup.nominal);
+  const std::vector<Eigen::VectorXd> rates = rates_read_at_reference(setup);
+  if (!(cost_at(problem, start, rates) < fitted.cost)) return fitted;
+  LeastSquaresResult again = minimise(problem, start, rates);
+  return again.cost < fitted.cost ? again : fitted;
+}
+
+}  // namespace
+
 EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::vector<FlightData>& data,
                      const EffectFit* nominal_fit, const Eigen::VectorXd* theta_start, unsigned threads) {
   Setup setup{effect, &nominal, &data, {}, 0.0, {}, Eigen::VectorXd(), threads};
@@ -540,7 +563,9 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::ve
     std::optional<Refined> other = other_grid_minimum(problem, trials, best, chosen.result.shared, *grid);
     return keep_lower(setup, p, std::move(chosen), std::move(other));
   }
-  return result_of(setup, minimise(problem, theta, rates), p);
+  LeastSquaresResult fitted = minimise(problem, theta, rates);
+  if (!seeded) fitted = lower_from_readings(setup, problem, std::move(fitted), Eigen::VectorXd());
+  return result_of(setup, fitted, p);
 }
 
 EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalInertia& nominal,
@@ -572,13 +597,16 @@ EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalIne
   }
   Eigen::VectorXd theta = Eigen::VectorXd::Zero(p);
   theta.head(base.theta.size()) = base.theta;
-  if (theta_start != nullptr && theta_start->size() == p) {
+  const bool seeded = theta_start != nullptr && theta_start->size() == p;
+  if (seeded) {
     theta = *theta_start;
   } else if (const StartGrid* grid = describe(added).start_grid) {
     const Eigen::VectorXd joining = grid->joining();
     theta.tail(joining.size()) = joining;
   }
-  return result_of(setup, minimise(problem, theta, rates), p);
+  LeastSquaresResult fitted = minimise(problem, theta, rates);
+  if (!seeded) fitted = lower_from_readings(setup, problem, std::move(fitted), base.theta);
+  return result_of(setup, fitted, p);
 }
 
 EffectFit refit_from_solution(const EffectFit& fit, const NominalInertia& nominal, const FlightData& data,

@@ -232,7 +232,8 @@ InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, con
                 {"duration_s", e.physics.impulse_duration_s}};
   } else if (effect == "internal_momentum") {
     const double typical_l = p.moments.mean() * 10.0;
-    e.physics.internal_momentum_N_m_s = rng.uniform(0.005, 0.10) * typical_l * rng.unit_vector();
+    e.physics.internal_momentum_N_m_s =
+        rng.uniform(spec.rotor_fraction_low, spec.rotor_fraction_high) * typical_l * rng.unit_vector();
     e.params = {{"h_N_m_s", to_json(e.physics.internal_momentum_N_m_s)},
                 {"h_fraction_of_L", e.physics.internal_momentum_N_m_s.norm() / l0.norm()}};
   } else if (effect == "gyro_bias") {

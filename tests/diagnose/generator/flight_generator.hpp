@@ -99,6 +99,9 @@ struct FlightSpec {
   bool occlusions = true;
 
   double impulse_duration_s = 0.003;  // 0: an instantaneous jump of angular momentum
+  // internal_momentum: |h| drawn in this range of a typical |L| (10 rad/s about the mean
+  // moment), in any direction.
+  double rotor_fraction_low = 0.005, rotor_fraction_high = 0.10;
 
   // A compound flight: a second effect at the same time (empty or "none": one effect).
   // Its magnitude is drawn as for a flight of its own; truth.params then holds each

@@ -51,6 +51,15 @@ std::vector<SessionCase> rotor_session_cases(RotorSeeds seeds, int per_kind, int
     add("rotor_moments", "internal_momentum", body, 0.0, i, "inertia_moments");
     add("stopped", "inertia_moments", body, 0.0, i);
   }
+  // Large rotors, 40-100 % of |L| (a reaction wheel idling fast in a slowly thrown body),
+  // where a rotor's fit from zero stops in another minimum on about one flight in four.
+  for (int i = 0; i < per_kind; ++i) {
+    add("large_rotor", "internal_momentum", bodies[static_cast<std::size_t>(i + 1) % bodies.size()], 0.0, i);
+    for (FlightSpec& flight : out.back().flights) {
+      flight.rotor_fraction_low = 0.4;
+      flight.rotor_fraction_high = 1.0;
+    }
+  }
   return out;
 }
 

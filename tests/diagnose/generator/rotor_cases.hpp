@@ -19,7 +19,9 @@
 //                (listed after those, for the same reason);
 //   rotor_moments a rotor on a body whose nominal moments are also 5-20 % off, every
 //                body in turn (a wheel in a body whose tensor came from CAD);
-//   stopped      the same bodies with the wheel stopped: wrong moments alone.
+//   stopped      the same bodies with the wheel stopped: wrong moments alone;
+//   large_rotor  a rotor of 40-100 % of |L| (listed last), where a fit from zero can stop
+//                in another minimum.
 #pragma once
 
 #include <cstdint>

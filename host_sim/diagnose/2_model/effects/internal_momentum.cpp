@@ -10,6 +10,7 @@
 // (4_judge/momentum_moment_equivalence.hpp): flights thrown at different axial rates part
 // the two, so a session is where a rotor can be named (`named_only_when_told_apart`).
 #include "diagnose/2_model/effect_descriptor.hpp"
+#include "diagnose/2_model/momentum_from_readings.hpp"
 #include "diagnose/2_model/printf_text.hpp"
 
 namespace aloft::host::diagnose {
@@ -52,6 +53,10 @@ constexpr EffectDescriptor internal_momentum_effect = [] {
   // Alone on a body whose moments are also wrong, each flight's h takes up part of the
   // moment error by its own rate (a moment error scales with w², a rotor with w).
   d.jointly_with = Effect::inertia_moments;
+  // From zero, a rotor of 15-40 % of |L| stopped in another minimum on 6 of 40 generated
+  // flights (at 1e4-1e5 times the true minimum's cost); from the balance of the Euler
+  // equations it does not (docs/diagnose.md, "A rotor inside").
+  d.start_from_readings = momentum_theta_from_readings;
   d.hooks = {tolerance, apply, parameters, too_small, no_objection, no_physics_objection};
   return d;
 }();
