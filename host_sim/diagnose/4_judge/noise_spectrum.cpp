@@ -63,14 +63,17 @@ std::vector<double> without_quadratic(const std::vector<double>& y) {
   return std::vector<double>(r.data(), r.data() + r.size());
 }
 
-// The longest power of two that gives at least six half-overlapping segments (n >= 3.5
-// lengths), so that the median over segments passes over the one or two an impulse's
-// step lies in; kShortestSegment for short data (four segments at kShortestSpectrum,
-// whose median, the mean of the middle two, passes over one such segment but is raised by
-// a second: an impulse flight's floor comes out high there, a noise-only one's is not).
+// The longest power of two that gives at least four half-overlapping segments (n >= 2.5
+// lengths; 4 to 9 segments). The window's main lobe spans +-4 bins, so the bins' width
+// decides how far above the tumble's harmonics their smear reaches: at 8 kHz a flight of
+// 0.82 s in 1024-sample segments (7.8 Hz bins, at least six segments as before) smeared
+// them to 31-47 Hz, past a 20 Hz low-pass's knee, whose cutoff, fitted on the roll-off
+// alone, came out 15.6 Hz for 20 on half of the noise-only runs; in 2048 (3.9 Hz) the
+// knee shows above them. An impulse's step, in one or two of these fewer segments, is
+// taken out by without_outlying_segments before the cutoff is fitted.
 std::size_t segment_length(std::size_t n) {
   std::size_t length = static_cast<std::size_t>(kShortestSegment);
-  while (7 * length <= n) length *= 2;
+  while (5 * length <= n) length *= 2;
   return length;
 }
 
@@ -101,6 +104,44 @@ double expected_median_of_unit_exponentials(std::size_t m) {
   return 0.5 * (expected_order_statistic(m / 2, m) + expected_order_statistic(m / 2 + 1, m));
 }
 
+// The window's power response |W(f)|^2 near 0 (zero-padded to kResponseSteps points a
+// bin), normalised to sum 1.
+std::vector<double> window_response(const std::vector<double>& window) {
+  const std::size_t steps = static_cast<std::size_t>(kResponseSteps);
+  std::vector<std::complex<double>> padded(window.size() * steps, 0.0);
+  for (std::size_t k = 0; k < window.size(); ++k) padded[k] = window[k];
+  fft(padded);
+  const std::size_t reach = static_cast<std::size_t>(kResponseBins) * steps;
+  std::vector<double> response(2 * reach + 1);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < response.size(); ++i) {
+    const std::size_t at = (padded.size() + i - reach) % padded.size();
+    response[i] = std::norm(padded[at]);
+    sum += response[i];
+  }
+  for (double& r : response) r /= sum;
+  return response;
+}
+
+// Each bin's median over the kept segments, over its expected value for a unit mean.
+std::vector<Eigen::Vector3d> median_density(const std::vector<std::vector<Eigen::Vector3d>>& segment_power,
+                                            const std::vector<char>& kept) {
+  const std::size_t count = static_cast<std::size_t>(std::count(kept.begin(), kept.end(), 1));
+  const double median_over_mean = expected_median_of_unit_exponentials(count);
+  const std::size_t bins = segment_power.front().size();
+  std::vector<Eigen::Vector3d> density(bins, Eigen::Vector3d::Zero());
+  std::vector<double> values;
+  for (Eigen::Index a = 0; a < 3; ++a) {
+    for (std::size_t j = 0; j < bins; ++j) {
+      values.clear();
+      for (std::size_t m = 0; m < segment_power.size(); ++m)
+        if (kept[m]) values.push_back(segment_power[m][j](a));
+      density[j](a) = median_of(values) / median_over_mean;
+    }
+  }
+  return density;
+}
+
 }  // namespace
 
 NoiseSpectrum welch_spectrum(const std::vector<Eigen::Vector3d>& readings, double sample_hz) {
@@ -112,13 +153,13 @@ NoiseSpectrum welch_spectrum(const std::vector<Eigen::Vector3d>& readings, doubl
   double window_power = 0.0;
   for (double w : window) window_power += w * w;
   s.sample_hz = sample_hz;
+  s.response = window_response(window);
   s.bin_hz = sample_hz / static_cast<double>(length);
   const std::size_t bins = length / 2 + 1;
-  // Each bin's power in each segment, per axis: [axis][bin][segment].
-  std::array<std::vector<std::vector<double>>, 3> power;
-  for (auto& axis : power) axis.assign(bins, {});
   std::vector<std::complex<double>> x(length);
+  // Each segment's power in each bin, per axis.
   for (std::size_t start = 0; start + length <= n; start += length / 2) {
+    std::vector<Eigen::Vector3d> power(bins, Eigen::Vector3d::Zero());
     for (std::size_t a = 0; a < 3; ++a) {
       std::vector<double> y(length);
       for (std::size_t k = 0; k < length; ++k) y[k] = readings[start + k](static_cast<Eigen::Index>(a));
@@ -127,19 +168,33 @@ NoiseSpectrum welch_spectrum(const std::vector<Eigen::Vector3d>& readings, doubl
       fft(x);
       for (std::size_t j = 0; j < bins; ++j) {
         const double one_sided = (j == 0 || j == length / 2) ? 1.0 : 2.0;
-        power[a][j].push_back(one_sided * std::norm(x[j]) / (sample_hz * window_power));
+        power[j](static_cast<Eigen::Index>(a)) = one_sided * std::norm(x[j]) / (sample_hz * window_power);
       }
     }
-    ++s.segments;
+    s.segment_power.push_back(std::move(power));
   }
-  // The median over segments, over its expected value for a unit mean.
-  const double median_over_mean = expected_median_of_unit_exponentials(static_cast<std::size_t>(s.segments));
-  s.density.assign(bins, Eigen::Vector3d::Zero());
-  for (std::size_t a = 0; a < 3; ++a) {
-    for (std::size_t j = 0; j < bins; ++j)
-      s.density[j](static_cast<Eigen::Index>(a)) = median_of(power[a][j]) / median_over_mean;
-  }
+  s.segments = static_cast<int>(s.segment_power.size());
+  s.density = median_density(s.segment_power, std::vector<char>(s.segment_power.size(), 1));
   return s;
+}
+
+NoiseSpectrum without_outlying_segments(const NoiseSpectrum& s, std::size_t first, std::size_t last) {
+  std::vector<double> band(s.segment_power.size(), 0.0);
+  for (std::size_t m = 0; m < band.size(); ++m) {
+    for (std::size_t j = first; j < last; ++j) band[m] += s.segment_power[m][j].sum();
+  }
+  const double typical = median_of(band);
+  std::vector<char> kept(band.size(), 0);
+  std::size_t count = 0;
+  for (std::size_t m = 0; m < band.size(); ++m) {
+    kept[m] = band[m] <= kOutlyingBandPower * typical;
+    count += static_cast<std::size_t>(kept[m]);
+  }
+  NoiseSpectrum out = s;
+  if (count == band.size() || count < static_cast<std::size_t>(kFewestKeptSegments)) return out;
+  out.density = median_density(s.segment_power, kept);
+  out.segments = static_cast<int>(count);
+  return out;
 }
 
 }  // namespace aloft::host::diagnose
