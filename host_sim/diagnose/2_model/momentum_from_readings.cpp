@@ -23,20 +23,22 @@ constexpr double kLongestSpan = 1.5;
 constexpr double kRidge = 1e-9;
 
 // The normal equations of one flight's balance, added to (a, b).
-void add_flight(const Flight& flight, const Eigen::Matrix3d& inertia, Eigen::Matrix3d& a, Eigen::Vector3d& b) {
+void add_flight(const Flight& flight, const Eigen::Matrix3d& inertia, Eigen::Matrix3d& a,
+                Eigen::Vector3d& b) {
   const std::size_t n = flight.size();
   if (n < 3) return;
   const double step_s = (flight.time_s.back() - flight.time_s.front()) / static_cast<double>(n - 1);
   if (!(step_s > 0.0)) return;
-  const std::size_t d = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(kDerivativeHalfSpan_s / step_s)));
+  const std::size_t d =
+      std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(kDerivativeHalfSpan_s / step_s)));
   for (std::size_t k = d; k + d < n; ++k) {
     if (!flight.usable[k - d] || !flight.usable[k] || !flight.usable[k + d]) continue;
     const double span_s = flight.time_s[k + d] - flight.time_s[k - d];
     if (!(span_s > 0.0) || span_s > kLongestSpan * 2.0 * static_cast<double>(d) * step_s) continue;
     const Eigen::Vector3d w = body_rate_of_reading(flight, flight.omega[k]);
-    const Eigen::Vector3d dw =
-        (body_rate_of_reading(flight, flight.omega[k + d]) - body_rate_of_reading(flight, flight.omega[k - d])) /
-        span_s;
+    const Eigen::Vector3d dw = (body_rate_of_reading(flight, flight.omega[k + d]) -
+                                body_rate_of_reading(flight, flight.omega[k - d])) /
+                               span_s;
     const Eigen::Vector3d r = -(inertia * dw + w.cross(inertia * w));
     a += w.squaredNorm() * Eigen::Matrix3d::Identity() - w * w.transpose();
     b += r.cross(w);
