@@ -10,10 +10,12 @@ namespace {
 // search's own unless it lies outside the window of the other minima (a clearly other
 // basin), so that fits of one basin keep the searched time.
 EffectFit lower_training_cost(const EffectFit& searched, const EffectFit& all_data,
-                              const NominalInertia& nominal, const FlightData& train) {
+                              const NominalInertia& nominal, const FlightData& train,
+                              SharedLinearisation* at_all_data) {
   const double all_data_time = all_data.flights[0].impulse_time_s;
   if (searched.flights[0].impulse_time_s == all_data_time) return searched;
-  EffectFit moved = refit_from_solution(all_data, nominal, train, all_data_time);
+  EffectFit moved = refit_from_solution(all_data, nominal, train, all_data_time,
+                                        at_all_data != nullptr ? at_all_data->at(all_data_time) : nullptr);
   const double window = std::max(kOtherMinimumWindow, kOtherMinimumWindowShare * moved.cost);
   return searched.cost - moved.cost > window ? moved : searched;
 }
@@ -54,8 +56,10 @@ SampleRange unseen_jump_gap(const EffectFit& fit, const FlightData& train) {
 }
 
 EffectFit fold_impulse_fit(const EffectFit& searched, const EffectFit& all_data,
-                           const NominalInertia& nominal, const FlightData& train) {
-  return jump_centred_in_unseen_gap(lower_training_cost(searched, all_data, nominal, train), nominal, train);
+                           const NominalInertia& nominal, const FlightData& train,
+                           SharedLinearisation* at_all_data) {
+  return jump_centred_in_unseen_gap(lower_training_cost(searched, all_data, nominal, train, at_all_data),
+                                    nominal, train);
 }
 
 }  // namespace aloft::host::diagnose

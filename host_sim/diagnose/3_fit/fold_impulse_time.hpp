@@ -48,7 +48,9 @@ struct SampleRange {
 };
 SampleRange unseen_jump_gap(const EffectFit& fit, const FlightData& train);
 
+// `at_all_data` (optional): `all_data` linearised at its solution for the folds to share.
 EffectFit fold_impulse_fit(const EffectFit& searched, const EffectFit& all_data,
-                           const NominalInertia& nominal, const FlightData& train);
+                           const NominalInertia& nominal, const FlightData& train,
+                           SharedLinearisation* at_all_data = nullptr);
 
 }  // namespace aloft::host::diagnose

@@ -38,8 +38,10 @@ void FoldsWithinFlight::judge_held_out(Candidate& c, const JudgedFlights::FoldFi
 Candidate FoldsWithinFlight::nominal_model() const {
   Candidate c;
   c.fit = none_full_;
-  judge_held_out(
-      c, [&](std::size_t f) { return refit_from_solution(none_full_, nominal_, flight_.train[0][f], 0.0); });
+  SharedLinearisation at_solution(none_full_, nominal_, flight_.all[0]);
+  judge_held_out(c, [&](std::size_t f) {
+    return refit_from_solution(none_full_, nominal_, flight_.train[0][f], 0.0, at_solution.at(0.0));
+  });
   return c;
 }
 
@@ -57,17 +59,19 @@ Candidate FoldsWithinFlight::evaluate(const Candidate& base, Effect added) const
   // all-data time, the all-data solution is no near start (practice2/A02's second step
   // held out 0.07-0.08 by one step where the refit reached 0.03), so the fold is refitted.
   const bool searched = describe(added).searched_parameters > 0;
+  // The folds' steps from the all-data solution share its Jacobian (one, not two).
+  SharedLinearisation at_solution(c.fit, nominal_, flight_.all[0]);
   judge_held_out(c, [&](std::size_t f) {
     const FlightData& train = flight_.train[0][f];
     const double fold_time = base.fold_fits[f].flights[0].impulse_time_s;
     if (searched) {
       return fold_impulse_fit(fit_added_effect(base.fold_fits[f], added, nominal_, {train}, &c.fit.theta),
-                              c.fit, nominal_, train);
+                              c.fit, nominal_, train, &at_solution);
     }
     if (fold_time != c.fit.flights[0].impulse_time_s) {
       return fit_added_effect(base.fold_fits[f], added, nominal_, {train}, &c.fit.theta);
     }
-    return refit_from_solution(c.fit, nominal_, train, fold_time);
+    return refit_from_solution(c.fit, nominal_, train, fold_time, at_solution.at(fold_time));
   });
   return c;
 }
