@@ -199,7 +199,26 @@ EffectFit result_of(const Setup& setup, const LeastSquaresResult& solution, int 
       parameter_errors(solution.normal_matrix, shared_count, 3, std::max(fit.cost / dof, 1e-12));
   fit.theta_standard_error = std::move(errors.standard_error);
   fit.theta_covariance = std::move(errors.covariance);
+  if (solution.block_jacobians.size() == 1) {
+    auto kept = std::make_shared<SolutionLinearisation>();
+    kept->data = (*setup.data)[0];
+    kept->impulse_time_s = setup.impulse_time_s;
+    kept->theta = solution.shared;
+    kept->omega_ref = solution.local[0];
+    kept->residuals = solution.block_residuals[0];
+    kept->jacobian = solution.block_jacobians[0];
+    fit.linearisation = std::move(kept);
+  }
   return fit;
+}
+
+// A fit's options: a single flight's fit without an impulse keeps its residuals and
+// Jacobian at the solution (EffectFit::linearisation); an impulse's columns need the
+// rate at the jump as well, which the fitter does not keep.
+LeastSquaresOptions solution_options(const Setup& setup) {
+  LeastSquaresOptions options;
+  options.keep_jacobian = setup.data->size() == 1 && !has_searched_time(setup.model());
+  return options;
 }
 
 // Each flight's starting rate: the guess of starting_rate, refined with `theta` held by
@@ -391,14 +410,14 @@ bool distinct_minima(const Eigen::VectorXd& a, const Eigen::VectorXd& b, const S
 // refined, when it came within the window and stayed distinct.
 std::optional<Refined> other_grid_minimum(const ArrowProblem& problem, const std::vector<Trial>& trials,
                                           const Trial& best, const Eigen::VectorXd& chosen,
-                                          const StartGrid& grid) {
+                                          const StartGrid& grid, const LeastSquaresOptions& options) {
   const Trial* other = nullptr;
   for (const Trial& t : trials) {
     if (&t == &best || !distinct_minima(t.theta, best.theta, grid)) continue;
     if (other == nullptr || t.cost < other->cost) other = &t;
   }
   if (other == nullptr || !within_window(other->cost, best.cost)) return std::nullopt;
-  LeastSquaresResult r = minimise(problem, other->theta, other->rates);
+  LeastSquaresResult r = minimise(problem, other->theta, other->rates, options);
   if (!distinct_minima(r.shared, chosen, grid)) return std::nullopt;
   return Refined{std::move(r), 0.0};
 }
@@ -522,7 +541,7 @@ LeastSquaresResult lower_from_readings(const Setup& setup, const ArrowProblem& p
   start << base, read_off(flights, *setup.nominal);
   const std::vector<Eigen::VectorXd> rates = rates_read_at_reference(setup);
   if (!(cost_at(problem, start, rates) < fitted.cost)) return fitted;
-  LeastSquaresResult again = minimise(problem, start, rates);
+  LeastSquaresResult again = minimise(problem, start, rates, solution_options(setup));
   return again.cost < fitted.cost ? again : fitted;
 }
 
@@ -563,11 +582,12 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::ve
     // The first of equal costs: the grid's order, not the last bits, breaks a tie.
     const Trial& best = *std::min_element(trials.begin(), trials.end(),
                                           [](const Trial& a, const Trial& b) { return a.cost < b.cost; });
-    Refined chosen{minimise(problem, best.theta, best.rates), 0.0};
-    std::optional<Refined> other = other_grid_minimum(problem, trials, best, chosen.result.shared, *grid);
+    Refined chosen{minimise(problem, best.theta, best.rates, solution_options(setup)), 0.0};
+    std::optional<Refined> other =
+        other_grid_minimum(problem, trials, best, chosen.result.shared, *grid, solution_options(setup));
     return keep_lower(setup, p, std::move(chosen), std::move(other));
   }
-  LeastSquaresResult fitted = minimise(problem, theta, rates);
+  LeastSquaresResult fitted = minimise(problem, theta, rates, solution_options(setup));
   if (!seeded) fitted = lower_from_readings(setup, problem, std::move(fitted), Eigen::VectorXd());
   return result_of(setup, fitted, p);
 }
@@ -608,7 +628,7 @@ EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalIne
     const Eigen::VectorXd joining = grid->joining();
     theta.tail(joining.size()) = joining;
   }
-  LeastSquaresResult fitted = minimise(problem, theta, rates);
+  LeastSquaresResult fitted = minimise(problem, theta, rates, solution_options(setup));
   if (!seeded) fitted = lower_from_readings(setup, problem, std::move(fitted), base.theta);
   return result_of(setup, fitted, p);
 }
@@ -629,13 +649,13 @@ bool same_values(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 // time and weights, and every sample `data` compares compared there too.
 bool serves(const SolutionLinearisation& shared, const FlightData& data, double impulse_time_s,
             const Eigen::VectorXd& theta, const Eigen::VectorXd& local) {
-  if (shared.impulse_time_s != impulse_time_s || shared.data->flight != data.flight ||
-      !(shared.data->inverse_sigma.array() == data.inverse_sigma.array()).all() ||
+  if (shared.impulse_time_s != impulse_time_s || shared.data.flight != data.flight ||
+      !(shared.data.inverse_sigma.array() == data.inverse_sigma.array()).all() ||
       !same_values(shared.theta, theta) || !same_values(shared.omega_ref, local)) {
     return false;
   }
   for (std::size_t k = 0; k < data.mask.size(); ++k) {
-    if (data.compared(k) && !shared.data->compared(k)) return false;
+    if (data.compared(k) && !shared.data.compared(k)) return false;
   }
   return true;
 }
@@ -668,7 +688,7 @@ SolutionLinearisation linearise_at_solution(const EffectFit& fit, const NominalI
   const std::vector<FlightData> flights{data};
   const Setup setup = solution_setup(fit, nominal, flights, impulse_time_s);
   SolutionLinearisation out;
-  out.data = &data;
+  out.data = data;
   out.impulse_time_s = impulse_time_s;
   out.theta = fit.theta;
   out.omega_ref = fit.flights[0].omega_ref;
@@ -706,6 +726,7 @@ EffectFit refit_from_solution(const EffectFit& fit, const NominalInertia& nomina
   out.cost = step.cost;
   out.residual_count = data.residual_count();
   out.other_minima.clear();
+  out.linearisation.reset();  // the all-samples fit's, at another point
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <utility>
 
 #include "common/parallel_for.hpp"
 #include "diagnose/3_fit/column_products.hpp"
@@ -108,22 +109,18 @@ struct BlockNormal {
   Eigen::MatrixXd jtj;
   Eigen::VectorXd jtr;
   double cost = 0.0;
+  Eigen::VectorXd residuals;  // what they were made of
+  Eigen::MatrixXd jacobian;
 };
-
-BlockNormal normal_of(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r) {
-  BlockNormal out;
-  out.jtj = column_products(jac);
-  out.jtr = jac.transpose() * r;
-  out.cost = r.squaredNorm();
-  return out;
-}
 
 BlockNormal block_normal(const ArrowProblem& problem, int block, const Eigen::VectorXd& shared,
                          const Eigen::VectorXd& local, const Eigen::VectorXd* known) {
-  Eigen::VectorXd r;
-  Eigen::MatrixXd jac;
-  block_jacobian(problem, block, shared, local, known, r, jac);
-  return normal_of(jac, r);
+  BlockNormal out;
+  block_jacobian(problem, block, shared, local, known, out.residuals, out.jacobian);
+  out.jtj = column_products(out.jacobian);
+  out.jtr = out.jacobian.transpose() * out.residuals;
+  out.cost = out.residuals.squaredNorm();
+  return out;
 }
 
 std::vector<BlockNormal> block_normals(const ArrowProblem& problem, const Eigen::VectorXd& shared,
@@ -137,17 +134,33 @@ std::vector<BlockNormal> block_normals(const ArrowProblem& problem, const Eigen:
   return blocks;
 }
 
+// Each block's residuals and Jacobian, as the last linearise() made them.
+struct BlockJacobians {
+  std::vector<Eigen::VectorXd> residuals;
+  std::vector<Eigen::MatrixXd> jacobians;
+};
+
 // J^T J and J^T r of the whole problem at x, assembled block by block. `known`: the
-// residuals at x, when evaluated already.
+// residuals at x, when evaluated already; `kept` (optional): where the blocks' residuals
+// and Jacobians go.
 double linearise(const ArrowProblem& problem, const Point& x, Eigen::MatrixXd& normal,
-                 Eigen::VectorXd& gradient, const Evaluation* known = nullptr) {
+                 Eigen::VectorXd& gradient, const Evaluation* known = nullptr,
+                 BlockJacobians* kept = nullptr) {
   const int p = problem.shared_count;
   const int m = problem.local_count;
   const int size = p + m * problem.block_count;
   normal.setZero(size, size);
   gradient.setZero(size);
   double cost = 0.0;
-  const std::vector<BlockNormal> blocks = block_normals(problem, x.shared, x.local, known);
+  std::vector<BlockNormal> blocks = block_normals(problem, x.shared, x.local, known);
+  if (kept != nullptr) {
+    kept->residuals.resize(blocks.size());
+    kept->jacobians.resize(blocks.size());
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+      kept->residuals[b] = std::move(blocks[b].residuals);
+      kept->jacobians[b] = std::move(blocks[b].jacobian);
+    }
+  }
   for (int b = 0; b < problem.block_count; ++b) {
     const BlockNormal& block = blocks[static_cast<std::size_t>(b)];
     cost += block.cost;
@@ -183,7 +196,10 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
   Point x{shared_start, local_start};
   Eigen::MatrixXd normal;
   Eigen::VectorXd gradient;
-  double cost = linearise(problem, x, normal, gradient);
+  // x is linearised whenever it moves (normal_at_solution), so the last kept is x's.
+  BlockJacobians at_x;
+  BlockJacobians* const kept = options.keep_jacobian && options.normal_at_solution ? &at_x : nullptr;
+  double cost = linearise(problem, x, normal, gradient, nullptr, kept);
   // Damping relative to each parameter's own curvature (Marquardt), so lambda is unitless.
   double lambda = 1e-3;
   double growth = 2.0;
@@ -216,7 +232,7 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
       if ((converged || iteration + 1 >= options.max_iterations) && !options.normal_at_solution) {
         cost = evaluation.cost;  // the last step: nothing needs the Jacobian here
       } else {
-        cost = linearise(problem, x, normal, gradient, &evaluation);
+        cost = linearise(problem, x, normal, gradient, &evaluation, kept);
       }
       if (converged) {
         ++iteration;
@@ -234,6 +250,8 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
   result.cost = cost;
   result.iterations = iteration;
   result.normal_matrix = normal;
+  result.block_residuals = std::move(at_x.residuals);
+  result.block_jacobians = std::move(at_x.jacobians);
   return result;
 }
 

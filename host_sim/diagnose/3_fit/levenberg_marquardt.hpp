@@ -59,6 +59,9 @@ struct LeastSquaresOptions {
   // false: the caller wants only the solution and its cost, not normal_matrix, so the
   // last accepted point is not linearised (one Jacobian fewer; the solution is the same).
   bool normal_at_solution = true;
+  // With normal_at_solution: each block's residuals and Jacobian at the solution too, in
+  // the result (a single flight's folds step from them: effect_fit.hpp).
+  bool keep_jacobian = false;
 };
 
 struct LeastSquaresResult {
@@ -67,6 +70,10 @@ struct LeastSquaresResult {
   double cost = 0.0;  // sum of squared residuals at the solution
   int iterations = 0;
   Eigen::MatrixXd normal_matrix;  // J^T J at the solution, [shared | local_0 | local_1 ...]
+  // Each block's residuals and Jacobian [shared | its locals] at the solution, when
+  // options.keep_jacobian (else empty).
+  std::vector<Eigen::VectorXd> block_residuals;
+  std::vector<Eigen::MatrixXd> block_jacobians;
 };
 
 // Minimises the sum of squared residuals from the given start. Derivatives are the

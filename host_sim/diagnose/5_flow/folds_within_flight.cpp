@@ -73,6 +73,9 @@ Candidate FoldsWithinFlight::evaluate(const Candidate& base, Effect added) const
     }
     return refit_from_solution(c.fit, nominal_, train, fold_time, at_solution.at(fold_time));
   });
+  // The folds are fitted: the Jacobians need not outlive them (a few hundred kB each).
+  c.fit.linearisation.reset();
+  for (EffectFit& fold : c.fold_fits) fold.linearisation.reset();
   return c;
 }
 
