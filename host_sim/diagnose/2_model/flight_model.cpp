@@ -312,12 +312,13 @@ class FlightDynamics {
 class ReadingWalks {
  public:
   ReadingWalks(const FlightDynamics& dynamics, double jump_time, std::vector<Vec3>& readings,
-               const std::vector<HermiteWeights>& weights, Vec3* rate_at_impulse)
+               const std::vector<HermiteWeights>& weights, Vec3* rate_at_impulse, ReadSamples read)
       : d_(dynamics),
         readings_(readings),
         weights_(weights),
         rate_at_impulse_(rate_at_impulse),
-        t_jump_(jump_time) {}
+        t_jump_(jump_time),
+        read_(read) {}
 
   // A walk at its latest sample: the state there and, when the segment that ended there
   // interpolated, the readings' rate of change there (the next segment starts with it).
@@ -379,10 +380,23 @@ class ReadingWalks {
     const Vec3 r0 = readings_[from], r1 = readings_[to];
     const Vec3 g0 = slope_from * h, g1 = walk.slope * h;
     const std::size_t lo = std::min(from, to), hi = std::max(from, to);
+    if (!wanted_between(lo, hi)) {
+      for (std::size_t k = lo + 1; k < hi; ++k) readings_[k].setZero();
+      return;
+    }
     const HermiteWeights* w = &weights_[seg.weights];
     for (std::size_t k = lo + 1; k < hi; ++k, ++w) {
       readings_[k] = (*w)[0] * r0 + (*w)[1] * r1 + (*w)[2] * g0 + (*w)[3] * g1;
     }
+  }
+
+  // Some sample strictly between lo and hi is wanted (read_): a segment lies nearly always
+  // wholly inside a fold's chunk or outside it, so it is interpolated whole or not at all.
+  bool wanted_between(std::size_t lo, std::size_t hi) const {
+    for (std::size_t k = lo + 1; k < hi; ++k) {
+      if (read_.wanted(k)) return true;
+    }
+    return false;
   }
 
  private:
@@ -391,6 +405,7 @@ class ReadingWalks {
   const std::vector<HermiteWeights>& weights_;
   Vec3* rate_at_impulse_ = nullptr;  // where the walk that meets the impulse reaches it
   double t_jump_ = 0.0;
+  ReadSamples read_;  // the samples between steps worth interpolating
 };
 
 }  // namespace
@@ -513,7 +528,7 @@ void walk_together(const FlightDynamics& dynamics, const ReadingWalks& walks_a, 
 void predict_readings(const EffectModel& model, const Flight& flight, std::size_t ref,
                       const Eigen::Vector3d& omega_ref, const Eigen::VectorXd& theta,
                       std::vector<Eigen::Vector3d>& readings, SampleStepping stepping,
-                      Eigen::Vector3d* rate_at_impulse) {
+                      Eigen::Vector3d* rate_at_impulse, ReadSamples read) {
   const std::size_t n = flight.size();
   readings.resize(n);
   if (n == 0) return;
@@ -521,7 +536,7 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   dynamics.set_impulse_scale(model.nominal.tensor);
   const WalkLayoutKey key = layout_key(model, flight, ref, stepping, dynamics);
   const WalkLayout& layout = walk_layout(flight.time_s, key);
-  const ReadingWalks walks(dynamics, key.jump_time, readings, layout.weights, rate_at_impulse);
+  const ReadingWalks walks(dynamics, key.jump_time, readings, layout.weights, rate_at_impulse, read);
   const Motion start = start_at(omega_ref);
   readings[ref] = dynamics.reading(start.x);
   // Forwards from the reference and backwards from it, independent of each other.
@@ -532,11 +547,13 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
 void predict_readings_pair(const EffectModel& model, const Flight& flight, std::size_t ref,
                            const Eigen::Vector3d& omega_a, const Eigen::Vector3d& omega_b,
                            const Eigen::VectorXd& theta, std::vector<Eigen::Vector3d>& readings_a,
-                           std::vector<Eigen::Vector3d>& readings_b) {
+                           std::vector<Eigen::Vector3d>& readings_b, ReadSamples read) {
   const std::size_t n = flight.size();
   if (n == 0 || (ref != 0 && ref + 1 != n)) {
-    predict_readings(model, flight, ref, omega_a, theta, readings_a);
-    predict_readings(model, flight, ref, omega_b, theta, readings_b);
+    predict_readings(model, flight, ref, omega_a, theta, readings_a, SampleStepping::shared_steps, nullptr,
+                     read);
+    predict_readings(model, flight, ref, omega_b, theta, readings_b, SampleStepping::shared_steps, nullptr,
+                     read);
     return;
   }
   readings_a.resize(n);
@@ -545,8 +562,8 @@ void predict_readings_pair(const EffectModel& model, const Flight& flight, std::
   dynamics.set_impulse_scale(model.nominal.tensor);
   const WalkLayoutKey key = layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics);
   const WalkLayout& layout = walk_layout(flight.time_s, key);
-  const ReadingWalks walks_a(dynamics, key.jump_time, readings_a, layout.weights, nullptr),
-      walks_b(dynamics, key.jump_time, readings_b, layout.weights, nullptr);
+  const ReadingWalks walks_a(dynamics, key.jump_time, readings_a, layout.weights, nullptr, read),
+      walks_b(dynamics, key.jump_time, readings_b, layout.weights, nullptr, read);
   const Motion start_a = start_at(omega_a), start_b = start_at(omega_b);
   readings_a[ref] = dynamics.reading(start_a.x);
   readings_b[ref] = dynamics.reading(start_b.x);

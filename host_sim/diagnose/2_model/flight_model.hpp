@@ -70,15 +70,27 @@ std::size_t compound_reference_index(const EffectModel& model, const Flight& fli
 // kept as the benchmark's peer and the tests' reference).
 enum class SampleStepping { shared_steps, step_per_sample };
 
+// The samples whose readings a caller reads: those whose flag is set in both arrays (a
+// fit's training mask and the flight's usable flags, one entry a sample). A prediction
+// leaves the others between its steps at zero instead of interpolating them (a fold fit
+// compares half the samples: case00 380.7 -> 377.0 M instructions); the steps, and so every
+// reading it does make, are the same. Null: every sample.
+struct ReadSamples {
+  const char* mask = nullptr;
+  const char* usable = nullptr;
+  bool wanted(std::size_t k) const { return mask == nullptr || (mask[k] != 0 && usable[k] != 0); }
+};
+
 // Readings predicted at every sample of `flight`, in the frame of flight.omega, for the
 // body rate `omega_ref` (body axes) at sample `ref` and effect parameters `theta`.
 // `rate_at_impulse` (optional): set to the body rate where the walk from the reference
-// meets the impulse, before it is applied (left alone when no walk meets it).
+// meets the impulse, before it is applied (left alone when no walk meets it). `read`:
+// the samples wanted (ReadSamples), by default all.
 void predict_readings(const EffectModel& model, const Flight& flight, std::size_t ref,
                       const Eigen::Vector3d& omega_ref, const Eigen::VectorXd& theta,
                       std::vector<Eigen::Vector3d>& readings,
                       SampleStepping stepping = SampleStepping::shared_steps,
-                      Eigen::Vector3d* rate_at_impulse = nullptr);
+                      Eigen::Vector3d* rate_at_impulse = nullptr, ReadSamples read = {});
 
 // predict_readings of two reference rates under one theta, readings_a for omega_a and
 // readings_b for omega_b, bit for bit the same. Where the reference is the first or last
@@ -87,7 +99,7 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
 void predict_readings_pair(const EffectModel& model, const Flight& flight, std::size_t ref,
                            const Eigen::Vector3d& omega_a, const Eigen::Vector3d& omega_b,
                            const Eigen::VectorXd& theta, std::vector<Eigen::Vector3d>& readings_a,
-                           std::vector<Eigen::Vector3d>& readings_b);
+                           std::vector<Eigen::Vector3d>& readings_b, ReadSamples read = {});
 
 // The theta directions (1: yes) along which only the sensor's terms move (bias, scale,
 // rotation): the readings' derivatives along them need no simulation.

@@ -63,6 +63,9 @@ void residuals_of(const FlightData& data, const std::vector<Vec3>& readings, Eig
   }
 }
 
+// The samples whose readings residuals_of reads: the compared ones.
+ReadSamples compared_samples(const FlightData& d) { return {d.mask.data(), d.flight->usable.data()}; }
+
 struct Setup {
   Effect effect;
   const NominalInertia* nominal;
@@ -111,9 +114,10 @@ bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta
   if (none(sensor) && none(impulse) && !paired_rates) return false;
   std::vector<Vec3> readings, readings_b;
   Vec3 at_impulse = Vec3::Zero(), moved_at_impulse = Vec3::Zero();
+  const ReadSamples read = compared_samples(d);
   if (!none(sensor) || !none(impulse) || r.size() == 0) {
     predict_readings(model, flight, ref, Vec3(local), theta, readings, SampleStepping::shared_steps,
-                     &at_impulse);
+                     &at_impulse, read);
     residuals_of(d, readings, r);
   }
   jacobian.resize(r.size(), p + m);
@@ -126,7 +130,8 @@ bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta
     const double h_a = forward_difference_step(local_a(m - 1)), h_b = forward_difference_step(local_b(m - 2));
     local_a(m - 1) += h_a;
     local_b(m - 2) += h_b;
-    predict_readings_pair(model, flight, ref, Vec3(local_a), Vec3(local_b), theta, readings, readings_b);
+    predict_readings_pair(model, flight, ref, Vec3(local_a), Vec3(local_b), theta, readings, readings_b,
+                          read);
     residuals_of(d, readings, moved);
     jacobian.col(p + m - 1) = (moved - r) / h_a;
     residuals_of(d, readings_b, moved);
@@ -141,7 +146,7 @@ bool flight_jacobian(const Setup& setup, int block, const Eigen::VectorXd& theta
     const double h = forward_difference_step(value);
     value += h;
     predict_readings(model, flight, ref, Vec3(shifted_local), shifted_theta, readings,
-                     SampleStepping::shared_steps, &moved_at_impulse);
+                     SampleStepping::shared_steps, &moved_at_impulse, read);
     residuals_of(d, readings, moved);
     jacobian.col(i) = (moved - r) / h;
     if (i >= p) impulse_rate_derivative.col(i - p) = (moved_at_impulse - at_impulse) / h;
@@ -168,7 +173,7 @@ ArrowProblem problem_of(const Setup& setup, int shared_count) {
     const EffectModel model = setup.model();
     std::vector<Vec3> readings;
     predict_readings(model, *d.flight, setup.refs[static_cast<std::size_t>(block)], Vec3(local), shared,
-                     readings);
+                     readings, SampleStepping::shared_steps, nullptr, compared_samples(d));
     residuals_of(d, readings, r);
   };
   problem.jacobian = [&setup](int block, const Eigen::VectorXd& shared, const Eigen::VectorXd& local,
