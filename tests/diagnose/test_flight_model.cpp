@@ -247,3 +247,45 @@ TEST_CASE("two predictions side by side read bit for bit as each on its own, wit
     CHECK(alone_a[flight.size() - 1] != alone_b[flight.size() - 1]);  // the two differ
   }
 }
+
+TEST_CASE("two predictions of different theta side by side read bit for bit as each on its own",
+          "[flight_model]") {
+  // predict_readings_two: a rotor's differenced theta columns, each lane with its own
+  // body's terms; a rigid body with drag from the release sample (the three-rate lanes);
+  // and two walks a prediction (one after the other).
+  const NominalInertia body = NominalInertia::of_tensor(Eigen::Vector3d(0.0017, 0.0042, 0.0054).asDiagonal());
+  const Flight flight = kilohertz_flight();
+  const Eigen::Vector3d w_a(0.3, 14.0, 0.5), w_b(0.3, 14.0 + 1e-6, 0.5);
+  Eigen::VectorXd damping_a(2), damping_b(2), drag_a(1), drag_b(1), jump_a(3), jump_b(3);
+  damping_a << 0.1, 0.3;
+  damping_b << 0.1, 0.3 + 1e-7;
+  drag_a << 0.002;
+  drag_b << 0.002 + 1e-9;
+  jump_a << 0.4, -0.2, 0.3;
+  jump_b << 0.4, -0.2 + 1e-7, 0.3;
+  struct Case {
+    EffectModel model;
+    Eigen::VectorXd theta_a, theta_b;
+    std::size_t ref;
+  };
+  const std::vector<Case> cases = {
+      {EffectModel(Effect::internal_damping, body), damping_a, damping_b, 0},
+      {EffectModel(Effect::aero_torque, body), drag_a, drag_b, 0},
+      {EffectModel(Effect::impulse, body, 0.6005), jump_a, jump_b, flight.size() / 2},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(effect_name(c.model.effect), c.ref);
+    std::vector<Eigen::Vector3d> alone_a, alone_b, side_a, side_b;
+    predict_readings(c.model, flight, c.ref, w_a, c.theta_a, alone_a);
+    predict_readings(c.model, flight, c.ref, w_b, c.theta_b, alone_b);
+    predict_readings_two(c.model, flight, c.ref, w_a, c.theta_a, w_b, c.theta_b, side_a, side_b);
+    REQUIRE(side_a.size() == flight.size());
+    REQUIRE(side_b.size() == flight.size());
+    bool same = true;
+    for (std::size_t k = 0; k < flight.size(); ++k) {
+      same = same && side_a[k] == alone_a[k] && side_b[k] == alone_b[k];
+    }
+    CHECK(same);
+    CHECK(alone_a[flight.size() - 1] != alone_b[flight.size() - 1]);  // the two differ
+  }
+}

@@ -1,6 +1,7 @@
 #include "diagnose/2_model/flight_model.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <type_traits>
 #include <utility>
@@ -65,6 +66,7 @@ class FlightDynamics {
   }
 
   bool has_rotor() const { return rotor_ > 0.0; }
+  bool has_drag() const { return drag_ != 0.0; }
   bool has_jump() const { return has_jump_; }
   bool has_momentum() const { return has_momentum_; }
   double time_factor() const { return time_factor_; }
@@ -132,15 +134,20 @@ class FlightDynamics {
   template <class L, std::size_t N>
   [[gnu::always_inline]] LanesOf<L, N> rk4_lanes(const LanesOf<L, N>& w, const LanesOf<L, N>& k1,
                                                  const L& h) const {
+    return rk4_lanes_with(*this, w, k1, h);
+  }
+  template <class T, class L, std::size_t N>
+  [[gnu::always_inline]] static LanesOf<L, N> rk4_lanes_with(const T& t, const LanesOf<L, N>& w,
+                                                             const LanesOf<L, N>& k1, const L& h) {
     const auto along = [](const LanesOf<L, N>& a, const L& s, const LanesOf<L, N>& k) {
       LanesOf<L, N> out;
       for (std::size_t i = 0; i < N; ++i) out[i] = a[i] + s * k[i];
       return out;
     };
     const L half = 0.5 * h;
-    const LanesOf<L, N> k2 = rates(along(w, half, k1));
-    const LanesOf<L, N> k3 = rates(along(w, half, k2));
-    const LanesOf<L, N> k4 = rates(along(w, h, k3));
+    const LanesOf<L, N> k2 = rates_with(t, along(w, half, k1));
+    const LanesOf<L, N> k3 = rates_with(t, along(w, half, k2));
+    const LanesOf<L, N> k4 = rates_with(t, along(w, h, k3));
     const L sixth = h / 6.0;
     LanesOf<L, N> next;
     for (std::size_t i = 0; i < N; ++i) next[i] = w[i] + sixth * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
@@ -149,19 +156,23 @@ class FlightDynamics {
 
   template <std::size_t N>
   [[gnu::always_inline]] void rk4_pair(Motion& mx, double hx, Motion& my, double hy) const {
+    rk4_pair_with<N>(*this, mx, hx, my, hy);
+  }
+  template <std::size_t N, class T>
+  [[gnu::always_inline]] static void rk4_pair_with(const T& t, Motion& mx, double hx, Motion& my, double hy) {
     State& x = mx.x;
     State& y = my.x;
     Lanes<N> w;
     for (std::size_t i = 0; i < N; ++i)
       w[i] = Eigen::Array2d(x(static_cast<Eigen::Index>(i)), y(static_cast<Eigen::Index>(i)));
     const Eigen::Array2d h(hx, hy);
-    const Lanes<N> next = rk4_lanes(w, first_stage(mx, my, w), h);
+    const Lanes<N> next = rk4_lanes_with(t, w, first_stage_with(t, mx, my, w), h);
     for (std::size_t i = 0; i < N; ++i) {
       x(static_cast<Eigen::Index>(i)) = next[i](0);
       y(static_cast<Eigen::Index>(i)) = next[i](1);
     }
     if constexpr (N == 3) {
-      const Lanes<N> end = rates(next);
+      const Lanes<N> end = rates_with(t, next);
       for (std::size_t i = 0; i < N; ++i) {
         mx.rate(static_cast<Eigen::Index>(i)) = end[i](0);
         my.rate(static_cast<Eigen::Index>(i)) = end[i](1);
@@ -171,8 +182,9 @@ class FlightDynamics {
   }
 
   // rk4_pair's first stage: the known rates of both states, else rates() of both.
-  template <std::size_t N>
-  [[gnu::always_inline]] Lanes<N> first_stage(const Motion& mx, const Motion& my, const Lanes<N>& w) const {
+  template <class T, std::size_t N>
+  [[gnu::always_inline]] static Lanes<N> first_stage_with(const T& t, const Motion& mx, const Motion& my,
+                                                          const Lanes<N>& w) {
     if constexpr (N == 3) {
       if (mx.rate_known && my.rate_known) {
         Lanes<N> k1;
@@ -183,13 +195,13 @@ class FlightDynamics {
         return k1;
       }
     }
-    return rates(w);
+    return rates_with(t, w);
   }
 
   // A 3x3 matrix times a vector as Eigen's fixed-size product sums it: rows 0 and 1 as a
   // packet, left to right; row 2 on its own, the last two terms first.
-  template <class L>
-  [[gnu::always_inline]] static LanesOf<L, 3> times(const Mat3& m, const L& v0, const L& v1, const L& v2) {
+  template <class M, class L>
+  [[gnu::always_inline]] static LanesOf<L, 3> times(const M& m, const L& v0, const L& v1, const L& v2) {
     return {m(0, 0) * v0 + m(0, 1) * v1 + m(0, 2) * v2, m(1, 0) * v0 + m(1, 1) * v1 + m(1, 2) * v2,
             m(2, 0) * v0 + (m(2, 1) * v1 + m(2, 2) * v2)};
   }
@@ -207,33 +219,44 @@ class FlightDynamics {
       return L::Constant(v);
     }
   }
+  template <class L>
+  static L every_lane(const Eigen::Array2d& v) {  // each lane's own already
+    return v;
+  }
 
   // rate() (N = 6) or rigid_rate() (N = 3) of every lane.
   template <class L, std::size_t N>
   [[gnu::always_inline]] LanesOf<L, N> rates(const LanesOf<L, N>& x) const {
-    const LanesOf<L, 3> m = times(shell_, x[0], x[1], x[2]);
+    return rates_with(*this, x);
+  }
+  // The same with the terms of `t`: this body's (a number for every lane), or LaneTerms
+  // (each lane its own body), the same arithmetic either way.
+  template <class T, class L, std::size_t N>
+  [[gnu::always_inline]] static LanesOf<L, N> rates_with(const T& t, const LanesOf<L, N>& x) {
+    const LanesOf<L, 3> m = times(t.shell_, x[0], x[1], x[2]);
     LanesOf<L, 3> torque = cross(m.data(), x.data());
-    if (drag_ != 0.0) {
+    if (t.has_drag()) {
       const L speed = root(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-      for (std::size_t i = 0; i < 3; ++i) torque[i] -= drag_ * speed * x[i];
+      for (std::size_t i = 0; i < 3; ++i) torque[i] -= t.drag_ * speed * x[i];
     }
-    if (has_momentum()) {  // momentum × w, a constant vector's cross with every lane
-      const L h[3] = {every_lane<L>(momentum_(0)), every_lane<L>(momentum_(1)), every_lane<L>(momentum_(2))};
+    if (t.has_momentum()) {  // momentum × w, a constant vector's cross with every lane
+      const L h[3] = {every_lane<L>(t.momentum_(0)), every_lane<L>(t.momentum_(1)),
+                      every_lane<L>(t.momentum_(2))};
       const LanesOf<L, 3> gyroscopic = cross(h, x.data());
       for (std::size_t i = 0; i < 3; ++i) torque[i] += gyroscopic[i];
     }
     LanesOf<L, N> dx;
     if constexpr (N == 3) {
-      dx = times(shell_inverse_, torque[0], torque[1], torque[2]);
+      dx = times(t.shell_inverse_, torque[0], torque[1], torque[2]);
     } else {
-      const double coupling_rate = rotor_rate_ * rotor_;
+      const auto coupling_rate = t.rotor_rate_ * t.rotor_;
       LanesOf<L, 3> body;
       for (std::size_t i = 0; i < 3; ++i) body[i] = torque[i] + coupling_rate * (x[i + 3] - x[i]);
-      const LanesOf<L, 3> spin = times(shell_inverse_, body[0], body[1], body[2]);
+      const LanesOf<L, 3> spin = times(t.shell_inverse_, body[0], body[1], body[2]);
       const LanesOf<L, 3> turn = cross(x.data(), x.data() + 3);
       for (std::size_t i = 0; i < 3; ++i) {
         dx[i] = spin[i];
-        dx[i + 3] = -turn[i] - rotor_rate_ * (x[i + 3] - x[i]);
+        dx[i + 3] = -turn[i] - t.rotor_rate_ * (x[i + 3] - x[i]);
       }
     }
     return dx;
@@ -286,6 +309,66 @@ class FlightDynamics {
   Vec3 body_rate_derivative(const Motion& m) const {
     if (m.rate_known) return m.rate;
     return has_rotor() ? Vec3(rate(m.x).head<3>()) : rigid_rate(m.x.head<3>());
+  }
+
+  // Two bodies' terms, each in its own lane of a packed pair: what rates_with() reads
+  // where two predictions of different theta step side by side (predict_readings_two).
+  // Both must have the same kind of terms (drag, momentum and rotor each in both or in
+  // neither), so that each lane does the arithmetic its body's rk4 does.
+  struct LaneTerms {
+    struct Matrix {
+      std::array<Eigen::Array2d, 9> e;
+      const Eigen::Array2d& operator()(int i, int j) const { return e[static_cast<std::size_t>(3 * i + j)]; }
+    };
+    struct Vector {
+      std::array<Eigen::Array2d, 3> e;
+      const Eigen::Array2d& operator()(int i) const { return e[static_cast<std::size_t>(i)]; }
+    };
+    Matrix shell_, shell_inverse_;
+    Eigen::Array2d drag_, rotor_, rotor_rate_;
+    Vector momentum_;
+    bool drag = false, momentum = false, rotor = false;
+
+    bool has_drag() const { return drag; }
+    bool has_momentum() const { return momentum; }
+  };
+  static bool same_kind(const FlightDynamics& a, const FlightDynamics& b) {
+    return a.has_drag() == b.has_drag() && a.has_momentum() == b.has_momentum() &&
+           a.has_rotor() == b.has_rotor();
+  }
+  static LaneTerms lane_terms(const FlightDynamics& a, const FlightDynamics& b) {
+    LaneTerms t;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        const std::size_t e = static_cast<std::size_t>(3 * i + j);
+        t.shell_.e[e] = Eigen::Array2d(a.shell_(i, j), b.shell_(i, j));
+        t.shell_inverse_.e[e] = Eigen::Array2d(a.shell_inverse_(i, j), b.shell_inverse_(i, j));
+      }
+      t.momentum_.e[static_cast<std::size_t>(i)] = Eigen::Array2d(a.momentum_(i), b.momentum_(i));
+    }
+    t.drag_ = Eigen::Array2d(a.drag_, b.drag_);
+    t.rotor_ = Eigen::Array2d(a.rotor_, b.rotor_);
+    t.rotor_rate_ = Eigen::Array2d(a.rotor_rate_, b.rotor_rate_);
+    t.drag = a.has_drag();
+    t.momentum = a.has_momentum();
+    t.rotor = a.has_rotor();
+    return t;
+  }
+  // advance_pair() of x under body `a` and y under body `b` (same_kind), their terms
+  // `lanes` (lane_terms(a, b)): each state gets exactly the steps a.advance() and
+  // b.advance() would give it.
+  static void advance_two(const LaneTerms& lanes, const FlightDynamics& a, Motion& x, int x_steps, double hx,
+                          const FlightDynamics& b, Motion& y, int y_steps, double hy) {
+    const int both = std::min(x_steps, y_steps);
+    for (int i = 0; i < both; ++i) {
+      if (lanes.rotor) {
+        rk4_pair_with<6>(lanes, x, hx, y, hy);
+      } else {
+        rk4_pair_with<3>(lanes, x, hx, y, hy);
+      }
+    }
+    for (int i = both; i < x_steps; ++i) a.rk4(x, hx);
+    for (int i = both; i < y_steps; ++i) b.rk4(y, hy);
   }
 
  private:
@@ -502,8 +585,10 @@ Motion start_at(const Eigen::Vector3d& omega_ref) {
 }
 
 // Two independent walks, each through its own segments into its own readings: while both
-// have segments to go, they step together (advance_pair) where neither crosses the impulse.
-void walk_together(const FlightDynamics& dynamics, const ReadingWalks& walks_a, ReadingWalks::Walk& a,
+// have segments to go, they step together (advance_pair(a, a_steps, a_h, b, b_steps, b_h):
+// FlightDynamics::advance_pair or advance_two) where neither crosses the impulse.
+template <class AdvancePair>
+void walk_together(const AdvancePair& advance_pair, const ReadingWalks& walks_a, ReadingWalks::Walk& a,
                    const std::vector<WalkSegment>& segments_a, const ReadingWalks& walks_b,
                    ReadingWalks::Walk& b, const std::vector<WalkSegment>& segments_b) {
   const std::size_t both = std::min(segments_a.size(), segments_b.size());
@@ -511,7 +596,7 @@ void walk_together(const FlightDynamics& dynamics, const ReadingWalks& walks_a, 
     const WalkSegment &u = segments_a[i], &d = segments_b[i];
     if (!u.crosses && !d.crosses) {
       const Motion a_from = a.m, b_from = b.m;
-      dynamics.advance_pair(a.m, u.steps, u.h, b.m, d.steps, d.h);
+      advance_pair(a.m, u.steps, u.h, b.m, d.steps, d.h);
       walks_a.read_segment(a_from, a, u);
       walks_b.read_segment(b_from, b, d);
     } else {
@@ -521,6 +606,13 @@ void walk_together(const FlightDynamics& dynamics, const ReadingWalks& walks_a, 
   }
   for (std::size_t i = both; i < segments_a.size(); ++i) walks_a.step(a, segments_a[i]);
   for (std::size_t i = both; i < segments_b.size(); ++i) walks_b.step(b, segments_b[i]);
+}
+
+// FlightDynamics::advance_pair of one body, for walk_together.
+auto paired_steps(const FlightDynamics& dynamics) {
+  return [&dynamics](Motion& x, int x_steps, double hx, Motion& y, int y_steps, double hy) {
+    dynamics.advance_pair(x, x_steps, hx, y, y_steps, hy);
+  };
 }
 
 }  // namespace
@@ -541,7 +633,7 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   readings[ref] = dynamics.reading(start.x);
   // Forwards from the reference and backwards from it, independent of each other.
   ReadingWalks::Walk up{start, ref}, down{start, ref};
-  walk_together(dynamics, walks, up, layout.up, walks, down, layout.down);
+  walk_together(paired_steps(dynamics), walks, up, layout.up, walks, down, layout.down);
 }
 
 void predict_readings_pair(const EffectModel& model, const Flight& flight, std::size_t ref,
@@ -570,7 +662,48 @@ void predict_readings_pair(const EffectModel& model, const Flight& flight, std::
   // The one walk of each (the other has no segments), side by side.
   ReadingWalks::Walk a{start_a, ref}, b{start_b, ref};
   const std::vector<WalkSegment>& segments = layout.up.empty() ? layout.down : layout.up;
-  walk_together(dynamics, walks_a, a, segments, walks_b, b, segments);
+  walk_together(paired_steps(dynamics), walks_a, a, segments, walks_b, b, segments);
+}
+
+void predict_readings_two(const EffectModel& model, const Flight& flight, std::size_t ref,
+                          const Eigen::Vector3d& omega_a, const Eigen::VectorXd& theta_a,
+                          const Eigen::Vector3d& omega_b, const Eigen::VectorXd& theta_b,
+                          std::vector<Eigen::Vector3d>& readings_a, std::vector<Eigen::Vector3d>& readings_b,
+                          ReadSamples read) {
+  if (theta_a.size() == theta_b.size() && (theta_a.array() == theta_b.array()).all()) {
+    predict_readings_pair(model, flight, ref, omega_a, omega_b, theta_a, readings_a, readings_b, read);
+    return;
+  }
+  const std::size_t n = flight.size();
+  FlightDynamics dynamics_a(model_terms(model, theta_a), flight),
+      dynamics_b(model_terms(model, theta_b), flight);
+  dynamics_a.set_impulse_scale(model.nominal.tensor);
+  dynamics_b.set_impulse_scale(model.nominal.tensor);
+  const WalkLayoutKey key = layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics_a);
+  if (n == 0 || (ref != 0 && ref + 1 != n) || !FlightDynamics::same_kind(dynamics_a, dynamics_b) ||
+      !(layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics_b) == key)) {
+    predict_readings(model, flight, ref, omega_a, theta_a, readings_a, SampleStepping::shared_steps, nullptr,
+                     read);
+    predict_readings(model, flight, ref, omega_b, theta_b, readings_b, SampleStepping::shared_steps, nullptr,
+                     read);
+    return;
+  }
+  readings_a.resize(n);
+  readings_b.resize(n);
+  const WalkLayout& layout = walk_layout(flight.time_s, key);
+  const ReadingWalks walks_a(dynamics_a, key.jump_time, readings_a, layout.weights, nullptr, read),
+      walks_b(dynamics_b, key.jump_time, readings_b, layout.weights, nullptr, read);
+  const Motion start_a = start_at(omega_a), start_b = start_at(omega_b);
+  readings_a[ref] = dynamics_a.reading(start_a.x);
+  readings_b[ref] = dynamics_b.reading(start_b.x);
+  // The one walk of each, side by side, each lane with its own body's terms.
+  ReadingWalks::Walk a{start_a, ref}, b{start_b, ref};
+  const std::vector<WalkSegment>& segments = layout.up.empty() ? layout.down : layout.up;
+  const FlightDynamics::LaneTerms lanes = FlightDynamics::lane_terms(dynamics_a, dynamics_b);
+  const auto advance_two = [&](Motion& x, int x_steps, double hx, Motion& y, int y_steps, double hy) {
+    FlightDynamics::advance_two(lanes, dynamics_a, x, x_steps, hx, dynamics_b, y, y_steps, hy);
+  };
+  walk_together(advance_two, walks_a, a, segments, walks_b, b, segments);
 }
 
 namespace {

@@ -101,6 +101,17 @@ void predict_readings_pair(const EffectModel& model, const Flight& flight, std::
                            const Eigen::VectorXd& theta, std::vector<Eigen::Vector3d>& readings_a,
                            std::vector<Eigen::Vector3d>& readings_b, ReadSamples read = {});
 
+// predict_readings of (omega_a, theta_a) and of (omega_b, theta_b), bit for bit the same.
+// Where the reference is the first or last sample and the two bodies have the same kind
+// of terms (a rotor's differenced theta columns), the two walks run side by side in the
+// two lanes of the paired steps, each lane with its own body's terms; else as
+// predict_readings_pair (one theta) or one after the other.
+void predict_readings_two(const EffectModel& model, const Flight& flight, std::size_t ref,
+                          const Eigen::Vector3d& omega_a, const Eigen::VectorXd& theta_a,
+                          const Eigen::Vector3d& omega_b, const Eigen::VectorXd& theta_b,
+                          std::vector<Eigen::Vector3d>& readings_a, std::vector<Eigen::Vector3d>& readings_b,
+                          ReadSamples read = {});
+
 // The theta directions (1: yes) along which only the sensor's terms move (bias, scale,
 // rotation): the readings' derivatives along them need no simulation.
 std::vector<char> sensor_directions(const EffectModel& model, const Eigen::VectorXd& theta);
