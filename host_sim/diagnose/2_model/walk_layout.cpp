@@ -19,6 +19,12 @@ class LayoutBuilder {
 
   WalkLayout build() const {
     WalkLayout layout;
+    // At most a segment and a sample's weights a sample: grown once, not doubling (a time
+    // search makes a layout for every impulse time it tries: case00 367.9 -> 366.2 M).
+    const std::size_t n = time_s_.size();
+    layout.weights.reserve(n);
+    layout.up.reserve(n - key_.ref);
+    layout.down.reserve(key_.ref);
     walk(layout, layout.up, true);
     walk(layout, layout.down, false);
     return layout;
