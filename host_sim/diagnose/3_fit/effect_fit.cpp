@@ -401,6 +401,29 @@ struct Trial {
   std::vector<Eigen::VectorXd> rates;
 };
 
+// Each trial's cost as it stands (cost_at); of one flight, two trials at a time side by
+// side (predict_readings_two: the damping grid's rotors, one walk a prediction, in the
+// paired steps; case00 366.2 -> 362.5 M), the cost summed as the fitter sums it.
+void grid_costs(const Setup& setup, const ArrowProblem& problem, std::vector<Trial>& trials) {
+  std::size_t next = 0;
+  for (; setup.data->size() == 1 && next + 1 < trials.size(); next += 2) {
+    const FlightData& d = (*setup.data)[0];
+    Trial &a = trials[next], &b = trials[next + 1];
+    std::vector<Vec3> readings_a, readings_b;
+    predict_readings_two(setup.model(), *d.flight, setup.refs[0], Vec3(a.rates[0]), a.theta, Vec3(b.rates[0]),
+                         b.theta, readings_a, readings_b, compared_samples(d));
+    Eigen::VectorXd r;
+    for (Trial* t : {&a, &b}) {
+      residuals_of(d, t == &a ? readings_a : readings_b, r);
+      t->cost = 0.0;
+      t->cost += r.squaredNorm();
+      if (!std::isfinite(t->cost)) t->cost = std::numeric_limits<double>::infinity();
+    }
+  }
+  for (; next < trials.size(); ++next)
+    trials[next].cost = cost_at(problem, trials[next].theta, trials[next].rates);
+}
+
 bool within_window(double cost, double best_cost) {
   return cost - best_cost <= std::max(kOtherMinimumWindow, kOtherMinimumWindowShare * best_cost);
 }
@@ -610,9 +633,9 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::ve
         neutral_at_zero ? rates_read_at_reference(setup) : std::vector<Eigen::VectorXd>{};
     for (const Eigen::VectorXd& start : grid->starts()) {
       const bool away = neutral_at_zero && !start.isZero();
-      const std::vector<Eigen::VectorXd>& r = away ? read_rates : rates;
-      trials.push_back({trials.size(), cost_at(problem, start, r), start, r});
+      trials.push_back({trials.size(), 0.0, start, away ? read_rates : rates});
     }
+    grid_costs(setup, problem, trials);
     // The first of equal costs: the grid's order, not the last bits, breaks a tie.
     const Trial& best = *std::min_element(trials.begin(), trials.end(),
                                           [](const Trial& a, const Trial& b) { return a.cost < b.cost; });
