@@ -125,12 +125,19 @@ std::size_t end_of_motion_band(const NoiseSpectrum& s) {
 // A digital 2nd-order Butterworth low-pass's power gain (bilinear transform, as a MEMS
 // gyro's and the generator's): 1 / (1 + (tan(pi f / fs) / tan(pi fc / fs))^4); 1 for no
 // filter (cutoff_hz <= 0).
+// Split in two so that a search over cutoffs takes each frequency's tangent once.
+constexpr double kPi = 3.14159265358979323846;
+double frequency_tangent(double f_hz, double sample_hz) {
+  return std::tan(kPi * std::min(f_hz, 0.4999 * sample_hz) / sample_hz);
+}
+double cutoff_tangent(double cutoff_hz, double sample_hz) { return std::tan(kPi * cutoff_hz / sample_hz); }
+double gain_of_tangents(double frequency_tangent, double cutoff_tangent) {
+  const double r = frequency_tangent / cutoff_tangent;
+  return 1.0 / (1.0 + r * r * r * r);
+}
 double low_pass_gain(double f_hz, double cutoff_hz, double sample_hz) {
   if (cutoff_hz <= 0.0) return 1.0;
-  const double pi = 3.14159265358979323846;
-  const double r =
-      std::tan(pi * std::min(f_hz, 0.4999 * sample_hz) / sample_hz) / std::tan(pi * cutoff_hz / sample_hz);
-  return 1.0 / (1.0 + r * r * r * r);
+  return gain_of_tangents(frequency_tangent(f_hz, sample_hz), cutoff_tangent(cutoff_hz, sample_hz));
 }
 
 // The bins the noise's shape is fitted on: from the motion band's end down to
@@ -180,9 +187,14 @@ double fitted_cutoff(const NoiseSpectrum& s, std::size_t edge) {
   }
   double best_cutoff = 0.0, best_misfit = -1.0;
   const double low = kLowestCutoffBins * s.bin_hz, high = 0.5 * s.sample_hz;
+  std::vector<double> tangents = response_frequencies(s, first, last), fine(tangents.size());
+  for (double& f : tangents) f = frequency_tangent(f, s.sample_hz);
   for (int i = 0; i <= 64; ++i) {
     const double cutoff = i == 64 ? 0.0 : low * std::pow(high / low, i / 63.0);
-    const std::vector<double> gain = gain_in_bins(s, first, last, cutoff);
+    const double at_cutoff = cutoff_tangent(cutoff, s.sample_hz);
+    for (std::size_t k = 0; k < fine.size(); ++k)
+      fine[k] = cutoff <= 0.0 ? 1.0 : gain_of_tangents(tangents[k], at_cutoff);
+    const std::vector<double> gain = densities_seen(s, fine);
     double mean = 0.0, squares = 0.0;
     for (std::size_t j : bins) {
       const double r = std::log(s.density[j].sum() / gain[j - first]);

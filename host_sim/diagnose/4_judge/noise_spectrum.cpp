@@ -144,6 +144,28 @@ std::vector<Eigen::Vector3d> median_density(const std::vector<std::vector<Eigen:
 
 }  // namespace
 
+std::vector<double> response_frequencies(const NoiseSpectrum& s, std::size_t first, std::size_t last) {
+  const std::ptrdiff_t steps = kResponseSteps, reach = static_cast<std::ptrdiff_t>(s.response.size() / 2);
+  const std::ptrdiff_t from = static_cast<std::ptrdiff_t>(first) * steps - reach;
+  std::vector<double> fine(
+      static_cast<std::size_t>(static_cast<std::ptrdiff_t>(last - first) * steps + 2 * reach));
+  for (std::size_t i = 0; i < fine.size(); ++i) {
+    const double bins = static_cast<double>(from + static_cast<std::ptrdiff_t>(i)) / kResponseSteps;
+    fine[i] = std::abs(bins) * s.bin_hz;
+  }
+  return fine;
+}
+
+std::vector<double> densities_seen(const NoiseSpectrum& s, const std::vector<double>& true_density) {
+  const std::size_t steps = static_cast<std::size_t>(kResponseSteps);
+  std::vector<double> out((true_density.size() - 2 * (s.response.size() / 2)) / steps, 0.0);
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    const std::size_t centre = j * steps;
+    for (std::size_t i = 0; i < s.response.size(); ++i) out[j] += s.response[i] * true_density[centre + i];
+  }
+  return out;
+}
+
 NoiseSpectrum welch_spectrum(const std::vector<Eigen::Vector3d>& readings, double sample_hz) {
   NoiseSpectrum s;
   const std::size_t n = readings.size();

@@ -48,26 +48,23 @@ struct NoiseSpectrum {
 constexpr int kResponseSteps = 8;
 constexpr int kResponseBins = 5;
 
+// The frequencies (Hz) at which a true one-sided density enters the expected densities of
+// bins first .. last - 1: kResponseSteps a bin, reaching kResponseBins past each end, as
+// |f| (the density is even in f, so the response's reach below 0 Hz folds back).
+std::vector<double> response_frequencies(const NoiseSpectrum& s, std::size_t first, std::size_t last);
+
+// The expected densities of those bins from the true density's values at
+// response_frequencies (in its order): each bin the response-weighted sum about it.
+std::vector<double> densities_seen(const NoiseSpectrum& s, const std::vector<double>& true_density);
+
 // The expected densities of bins first .. last - 1 for a true one-sided density
-// `true_density(f_hz)` (even in f, so the response's reach below 0 Hz folds back). The
-// true density is evaluated once per response step, not once per bin and step.
+// `true_density(f_hz)`, evaluated once per response step, not once per bin and step.
 template <typename Density>
 std::vector<double> expected_densities(const NoiseSpectrum& s, std::size_t first, std::size_t last,
                                        const Density& true_density) {
-  const std::ptrdiff_t steps = kResponseSteps, reach = static_cast<std::ptrdiff_t>(s.response.size() / 2);
-  const std::ptrdiff_t from = static_cast<std::ptrdiff_t>(first) * steps - reach;
-  std::vector<double> fine(
-      static_cast<std::size_t>(static_cast<std::ptrdiff_t>(last - first) * steps + 2 * reach));
-  for (std::size_t i = 0; i < fine.size(); ++i) {
-    const double bins = static_cast<double>(from + static_cast<std::ptrdiff_t>(i)) / kResponseSteps;
-    fine[i] = true_density(std::abs(bins) * s.bin_hz);
-  }
-  std::vector<double> out(last - first, 0.0);
-  for (std::size_t j = 0; j < out.size(); ++j) {
-    const std::size_t centre = j * static_cast<std::size_t>(steps);
-    for (std::size_t i = 0; i < s.response.size(); ++i) out[j] += s.response[i] * fine[centre + i];
-  }
-  return out;
+  std::vector<double> fine = response_frequencies(s, first, last);
+  for (double& f : fine) f = true_density(f);
+  return densities_seen(s, fine);
 }
 
 // The spectrum of readings sampled evenly at `sample_hz`; empty (no bins) when there are
