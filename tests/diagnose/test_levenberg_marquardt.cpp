@@ -245,3 +245,36 @@ TEST_CASE("gauss_newton_step on a linear problem is the exact refit of the resid
   REQUIRE(moved > 1e-2);
   CHECK(missed < 1e-6 * moved);  // measured: 3.4e-9 (4.8e-10 of 0.14)
 }
+
+TEST_CASE("minimise stops where no step can gain more than the last bits, and not before",
+          "[levenberg_marquardt]") {
+  std::mt19937 random(7);
+  std::normal_distribution<double> noise(0.0, 0.02);
+  std::vector<double> t, y;
+  for (int i = 0; i < 60; ++i) {
+    t.push_back(0.05 * i);
+    y.push_back(2.0 * std::exp(-1.3 * t.back()) + 0.5 + noise(random));
+  }
+  const std::vector<char> all(t.size(), 1);
+  ArrowProblem problem = curve_on(exponential, t, y, all);
+  const std::vector<Eigen::VectorXd> start{Eigen::VectorXd::Zero(1)};
+  const LeastSquaresResult exact = minimise(problem, Eigen::Vector2d(1.0, -1.0), start, tight());
+  // With the default tolerance: within 1e-9 of the exact minimum's cost.
+  const LeastSquaresResult fitted = minimise(problem, Eigen::Vector2d(1.0, -1.0), start);
+  CHECK(fitted.cost >= exact.cost);
+  CHECK(fitted.cost <= (1.0 + 1e-9) * exact.cost);
+  // Started at the minimum: the one linearisation there (3 differenced columns and the
+  // point) and no step, where rejected and tiny steps used to follow until the damping
+  // ran out.
+  int evaluations = 0;
+  const auto residuals = problem.residuals;
+  problem.residuals = [&](int block, const Eigen::VectorXd& s, const Eigen::VectorXd& l, Eigen::VectorXd& r) {
+    ++evaluations;
+    residuals(block, s, l, r);
+  };
+  const LeastSquaresResult again = minimise(problem, exact.shared, exact.local);
+  INFO("evaluations " << evaluations);
+  CHECK(evaluations == 4);
+  CHECK(again.iterations == 0);
+  CHECK(again.cost == exact.cost);
+}

@@ -67,7 +67,8 @@ constexpr double kStepDamping[] = {1e-3, 1e-2, 1e-1, 1.0, 10.0, 100.0};
 // The last bits of libm move a flight's costs by about 1e-11 of themselves (the held-out
 // errors of diagnose_same_verdict_every_cpu's CPUs); a step that gains less than that was
 // taken on one CPU and refused on another (imu_aero_torque_2's inertia_axes, a score 218
-// apart), so a gain must clear it by a wide margin.
+// apart), so a gain must clear it by a wide margin. minimise stops where no step is
+// predicted to gain this much.
 constexpr double kStepGain = 1e-9;
 
 struct Point {
@@ -188,6 +189,21 @@ Point moved(const ArrowProblem& problem, const Point& x, const Eigen::VectorXd& 
   return y;
 }
 
+// The gain the linear model at x predicts for a step damped only as lightly as
+// minimise's first (kLightDamping): about the most any step from x can gain, whatever
+// damping the rejected steps before have piled up. `predicted`: the gain of the step at
+// `lambda`, which is that step when lambda is that light already.
+constexpr double kLightDamping = 1e-3;
+double lightly_damped_gain(const Eigen::MatrixXd& normal, const Eigen::VectorXd& gradient, double floor,
+                           double lambda, double predicted) {
+  if (lambda <= kLightDamping) return predicted;
+  Eigen::MatrixXd damped = normal;
+  damped.diagonal() += kLightDamping * (normal.diagonal().array() + floor).matrix();
+  const Eigen::VectorXd light = damped.ldlt().solve(-gradient);
+  if (!light.allFinite()) return predicted;
+  return -(2.0 * gradient.dot(light) + light.dot(normal * light));
+}
+
 }  // namespace
 
 LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& shared_start,
@@ -201,7 +217,7 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
   BlockJacobians* const kept = options.keep_jacobian && options.normal_at_solution ? &at_x : nullptr;
   double cost = linearise(problem, x, normal, gradient, nullptr, kept);
   // Damping relative to each parameter's own curvature (Marquardt), so lambda is unitless.
-  double lambda = 1e-3;
+  double lambda = kLightDamping;
   double growth = 2.0;
   int small_gains = 0;
   int iteration = 0;
@@ -213,11 +229,17 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
     damped.diagonal() += lambda * (normal.diagonal().array() + floor).matrix();
     const Eigen::VectorXd delta = damped.ldlt().solve(-gradient);
     if (!delta.allFinite()) break;
+    // Gain predicted by the linear model: -(2 g.d + d.H.d) for cost = |r|^2.
+    const double predicted = -(2.0 * gradient.dot(delta) + delta.dot(normal * delta));
+    // Converged, too, when no step could gain more than the last bits move the cost
+    // (kStepGain), or than the caller's tolerance where it asks for less: what the dance
+    // of rejected and tiny steps round the minimum cost (case00 366.9 -> 274.8 M
+    // instructions, docs/diagnose.md).
+    const double least_gain = std::min(kStepGain, options.relative_tolerance) * cost;
+    if (lightly_damped_gain(normal, gradient, floor, lambda, predicted) < least_gain) break;
     const Point candidate = moved(problem, x, delta);
     const Evaluation evaluation = evaluate(problem, candidate);
     const double new_cost = evaluation.cost;
-    // Gain predicted by the linear model: -(2 g.d + d.H.d) for cost = |r|^2.
-    const double predicted = -(2.0 * gradient.dot(delta) + delta.dot(normal * delta));
     const double rho = predicted > 0.0 ? (cost - new_cost) / predicted : -1.0;
     if (std::isfinite(new_cost) && new_cost < cost) {
       const double gain = (cost - new_cost) / std::max(cost, 1e-300);

@@ -55,7 +55,9 @@ void block_jacobian(const ArrowProblem& problem, int block, const Eigen::VectorX
 
 struct LeastSquaresOptions {
   int max_iterations = 40;
-  double relative_tolerance = 1e-7;  // stop when an accepted step gains less than this
+  // Stop when two accepted steps in a row gain less than this share of the cost, or when
+  // no step is predicted to gain more than the smaller of this and 1e-9 (the last bits).
+  double relative_tolerance = 1e-7;
   // false: the caller wants only the solution and its cost, not normal_matrix, so the
   // last accepted point is not linearised (one Jacobian fewer; the solution is the same).
   bool normal_at_solution = true;
