@@ -636,33 +636,59 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   walk_together(paired_steps(dynamics), walks, up, layout.up, walks, down, layout.down);
 }
 
+namespace {
+
+// predict_readings of (omega_a, theta_a), then of (omega_b, theta_b): where the two
+// cannot step side by side.
+void predict_one_after_the_other(const EffectModel& model, const Flight& flight, std::size_t ref,
+                                 const Eigen::Vector3d& omega_a, const Eigen::VectorXd& theta_a,
+                                 const Eigen::Vector3d& omega_b, const Eigen::VectorXd& theta_b,
+                                 std::vector<Eigen::Vector3d>& readings_a,
+                                 std::vector<Eigen::Vector3d>& readings_b, ReadSamples read) {
+  predict_readings(model, flight, ref, omega_a, theta_a, readings_a, SampleStepping::shared_steps, nullptr,
+                   read);
+  predict_readings(model, flight, ref, omega_b, theta_b, readings_b, SampleStepping::shared_steps, nullptr,
+                   read);
+}
+
+// The one walk of each of two predictions from `ref`, the first or last sample (the
+// layout's other direction has no segments), side by side: advance_pair steps them
+// together (walk_together), each in its own body's terms.
+template <class AdvancePair>
+void one_walks_side_by_side(const AdvancePair& advance_pair, const FlightDynamics& dynamics_a,
+                            const FlightDynamics& dynamics_b, const WalkLayout& layout, double jump_time,
+                            std::size_t ref, const Eigen::Vector3d& omega_a, const Eigen::Vector3d& omega_b,
+                            std::vector<Eigen::Vector3d>& readings_a,
+                            std::vector<Eigen::Vector3d>& readings_b, std::size_t n, ReadSamples read) {
+  readings_a.resize(n);
+  readings_b.resize(n);
+  const ReadingWalks walks_a(dynamics_a, jump_time, readings_a, layout.weights, nullptr, read),
+      walks_b(dynamics_b, jump_time, readings_b, layout.weights, nullptr, read);
+  const Motion start_a = start_at(omega_a), start_b = start_at(omega_b);
+  readings_a[ref] = dynamics_a.reading(start_a.x);
+  readings_b[ref] = dynamics_b.reading(start_b.x);
+  ReadingWalks::Walk a{start_a, ref}, b{start_b, ref};
+  const std::vector<WalkSegment>& segments = layout.up.empty() ? layout.down : layout.up;
+  walk_together(advance_pair, walks_a, a, segments, walks_b, b, segments);
+}
+
+}  // namespace
+
 void predict_readings_pair(const EffectModel& model, const Flight& flight, std::size_t ref,
                            const Eigen::Vector3d& omega_a, const Eigen::Vector3d& omega_b,
                            const Eigen::VectorXd& theta, std::vector<Eigen::Vector3d>& readings_a,
                            std::vector<Eigen::Vector3d>& readings_b, ReadSamples read) {
   const std::size_t n = flight.size();
   if (n == 0 || (ref != 0 && ref + 1 != n)) {
-    predict_readings(model, flight, ref, omega_a, theta, readings_a, SampleStepping::shared_steps, nullptr,
-                     read);
-    predict_readings(model, flight, ref, omega_b, theta, readings_b, SampleStepping::shared_steps, nullptr,
-                     read);
+    predict_one_after_the_other(model, flight, ref, omega_a, theta, omega_b, theta, readings_a, readings_b,
+                                read);
     return;
   }
-  readings_a.resize(n);
-  readings_b.resize(n);
   FlightDynamics dynamics(model_terms(model, theta), flight);
   dynamics.set_impulse_scale(model.nominal.tensor);
   const WalkLayoutKey key = layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics);
-  const WalkLayout& layout = walk_layout(flight.time_s, key);
-  const ReadingWalks walks_a(dynamics, key.jump_time, readings_a, layout.weights, nullptr, read),
-      walks_b(dynamics, key.jump_time, readings_b, layout.weights, nullptr, read);
-  const Motion start_a = start_at(omega_a), start_b = start_at(omega_b);
-  readings_a[ref] = dynamics.reading(start_a.x);
-  readings_b[ref] = dynamics.reading(start_b.x);
-  // The one walk of each (the other has no segments), side by side.
-  ReadingWalks::Walk a{start_a, ref}, b{start_b, ref};
-  const std::vector<WalkSegment>& segments = layout.up.empty() ? layout.down : layout.up;
-  walk_together(paired_steps(dynamics), walks_a, a, segments, walks_b, b, segments);
+  one_walks_side_by_side(paired_steps(dynamics), dynamics, dynamics, walk_layout(flight.time_s, key),
+                         key.jump_time, ref, omega_a, omega_b, readings_a, readings_b, n, read);
 }
 
 void predict_readings_two(const EffectModel& model, const Flight& flight, std::size_t ref,
@@ -682,28 +708,17 @@ void predict_readings_two(const EffectModel& model, const Flight& flight, std::s
   const WalkLayoutKey key = layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics_a);
   if (n == 0 || (ref != 0 && ref + 1 != n) || !FlightDynamics::same_kind(dynamics_a, dynamics_b) ||
       !(layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics_b) == key)) {
-    predict_readings(model, flight, ref, omega_a, theta_a, readings_a, SampleStepping::shared_steps, nullptr,
-                     read);
-    predict_readings(model, flight, ref, omega_b, theta_b, readings_b, SampleStepping::shared_steps, nullptr,
-                     read);
+    predict_one_after_the_other(model, flight, ref, omega_a, theta_a, omega_b, theta_b, readings_a,
+                                readings_b, read);
     return;
   }
-  readings_a.resize(n);
-  readings_b.resize(n);
-  const WalkLayout& layout = walk_layout(flight.time_s, key);
-  const ReadingWalks walks_a(dynamics_a, key.jump_time, readings_a, layout.weights, nullptr, read),
-      walks_b(dynamics_b, key.jump_time, readings_b, layout.weights, nullptr, read);
-  const Motion start_a = start_at(omega_a), start_b = start_at(omega_b);
-  readings_a[ref] = dynamics_a.reading(start_a.x);
-  readings_b[ref] = dynamics_b.reading(start_b.x);
-  // The one walk of each, side by side, each lane with its own body's terms.
-  ReadingWalks::Walk a{start_a, ref}, b{start_b, ref};
-  const std::vector<WalkSegment>& segments = layout.up.empty() ? layout.down : layout.up;
+  // Each lane with its own body's terms.
   const FlightDynamics::LaneTerms lanes = FlightDynamics::lane_terms(dynamics_a, dynamics_b);
   const auto advance_two = [&](Motion& x, int x_steps, double hx, Motion& y, int y_steps, double hy) {
     FlightDynamics::advance_two(lanes, dynamics_a, x, x_steps, hx, dynamics_b, y, y_steps, hy);
   };
-  walk_together(advance_two, walks_a, a, segments, walks_b, b, segments);
+  one_walks_side_by_side(advance_two, dynamics_a, dynamics_b, walk_layout(flight.time_s, key), key.jump_time,
+                         ref, omega_a, omega_b, readings_a, readings_b, n, read);
 }
 
 namespace {
