@@ -212,6 +212,26 @@ TEST_CASE("the impulse's Jacobian columns, carried by the flow map, agree with c
   }
 }
 
+namespace {
+
+// Two predictions made side by side read bit for bit as each made on its own, and the two
+// differ (so the check could fail).
+void check_side_by_side_as_alone(const std::vector<Eigen::Vector3d>& alone_a,
+                                 const std::vector<Eigen::Vector3d>& alone_b,
+                                 const std::vector<Eigen::Vector3d>& side_a,
+                                 const std::vector<Eigen::Vector3d>& side_b) {
+  REQUIRE(side_a.size() == alone_a.size());
+  REQUIRE(side_b.size() == alone_b.size());
+  bool same = true;
+  for (std::size_t k = 0; k < alone_a.size(); ++k) {
+    same = same && side_a[k] == alone_a[k] && side_b[k] == alone_b[k];
+  }
+  CHECK(same);
+  CHECK(alone_a.back() != alone_b.back());
+}
+
+}  // namespace
+
 TEST_CASE("two predictions side by side read bit for bit as each on its own, with a rotor and without",
           "[flight_model]") {
   const NominalInertia body = NominalInertia::of_tensor(Eigen::Vector3d(0.0017, 0.0042, 0.0054).asDiagonal());
@@ -237,14 +257,7 @@ TEST_CASE("two predictions side by side read bit for bit as each on its own, wit
     predict_readings(c.model, flight, c.ref, w_a, c.theta, alone_a);
     predict_readings(c.model, flight, c.ref, w_b, c.theta, alone_b);
     predict_readings_pair(c.model, flight, c.ref, w_a, w_b, c.theta, side_a, side_b);
-    REQUIRE(side_a.size() == flight.size());
-    REQUIRE(side_b.size() == flight.size());
-    bool same = true;
-    for (std::size_t k = 0; k < flight.size(); ++k) {
-      same = same && side_a[k] == alone_a[k] && side_b[k] == alone_b[k];
-    }
-    CHECK(same);
-    CHECK(alone_a[flight.size() - 1] != alone_b[flight.size() - 1]);  // the two differ
+    check_side_by_side_as_alone(alone_a, alone_b, side_a, side_b);
   }
 }
 
@@ -279,13 +292,6 @@ TEST_CASE("two predictions of different theta side by side read bit for bit as e
     predict_readings(c.model, flight, c.ref, w_a, c.theta_a, alone_a);
     predict_readings(c.model, flight, c.ref, w_b, c.theta_b, alone_b);
     predict_readings_two(c.model, flight, c.ref, w_a, c.theta_a, w_b, c.theta_b, side_a, side_b);
-    REQUIRE(side_a.size() == flight.size());
-    REQUIRE(side_b.size() == flight.size());
-    bool same = true;
-    for (std::size_t k = 0; k < flight.size(); ++k) {
-      same = same && side_a[k] == alone_a[k] && side_b[k] == alone_b[k];
-    }
-    CHECK(same);
-    CHECK(alone_a[flight.size() - 1] != alone_b[flight.size() - 1]);  // the two differ
+    check_side_by_side_as_alone(alone_a, alone_b, side_a, side_b);
   }
 }
