@@ -13,6 +13,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -188,4 +190,16 @@ struct Analysis {
   std::vector<ModelStep> steps;
   Candidate model;
 };
+
+// The first step's pair (joint_candidates.hpp: an effect fitted together with the one
+// whose error it takes up) where it joined the model there and holds `effect`, in its
+// base or as its effect: its index in `candidates`; else -1.
+inline int first_step_pair_holding(const Analysis& a, Effect effect) {
+  const int first = a.steps.empty() ? -1 : a.steps.front().added;
+  if (first < 0) return -1;
+  const Candidate& joined = a.candidates[static_cast<std::size_t>(first)];
+  const bool holds = joined.effect == effect ||
+                     std::find(joined.base.begin(), joined.base.end(), effect) != joined.base.end();
+  return !joined.base.empty() && holds ? first : -1;
+}
 }  // namespace aloft::host::diagnose

@@ -153,13 +153,7 @@ bool next_step(Analysis& a, const RankingContext& context, const CandidateEvalua
 // that holds it (a rotor's moments fitted alone can hold out worse than the nominal
 // model); else the effect's own candidate at the first step (-1: none).
 int candidate_that_brought(const Analysis& analysis, Effect effect) {
-  const int first = analysis.steps.empty() ? -1 : analysis.steps.front().added;
-  if (first >= 0) {
-    const Candidate& joined = analysis.candidates[static_cast<std::size_t>(first)];
-    const std::vector<Effect> effects = effects_of(joined);
-    if (!joined.base.empty() && std::find(effects.begin(), effects.end(), effect) != effects.end())
-      return first;
-  }
+  if (const int pair = first_step_pair_holding(analysis, effect); pair >= 0) return pair;
   int chosen = -1;
   for (std::size_t i = 0; i < analysis.candidates.size(); ++i) {
     if (analysis.candidates[i].effect == effect && analysis.candidates[i].base.empty())

@@ -71,11 +71,8 @@ const Candidate* moments_beside_final_model(const Analysis& a) {
 // none has a covariance of the moments.
 std::optional<MomentsFit> moments_fit(const Analysis& a, const NominalInertia& nominal) {
   const Candidate* c = find(a, Effect::inertia_moments);
-  if (!a.steps.empty() && a.steps.front().added >= 0) {
-    const Candidate& joined = a.candidates[static_cast<std::size_t>(a.steps.front().added)];
-    if (std::find(joined.base.begin(), joined.base.end(), Effect::inertia_moments) != joined.base.end())
-      c = &joined;
-  }
+  if (const int pair = first_step_pair_holding(a, Effect::inertia_moments); pair >= 0)
+    c = &a.candidates[static_cast<std::size_t>(pair)];
   if (const Candidate* beside = moments_beside_final_model(a)) c = beside;
   if (c == nullptr || c->fit.flights.empty()) return std::nullopt;
   const EffectModel model = model_of(c->fit, nominal, 0);
