@@ -60,6 +60,17 @@ std::vector<SessionCase> rotor_session_cases(RotorSeeds seeds, int per_kind, int
       flight.rotor_fraction_high = 1.0;
     }
   }
+  // A rotor of 15-40 % of |L| on a body whose nominal moments are also 5-20 % off, every
+  // body in turn: the pair's own fit on one flight, started from the pooled fit, can stop
+  // in another minimum (listed last, so every other kind keeps its seeds).
+  for (int i = 0; i < per_kind; ++i) {
+    const std::string& body = bodies[static_cast<std::size_t>(i) % bodies.size()];
+    add("large_rotor_moments", "internal_momentum", body, 0.0, i, "inertia_moments");
+    for (FlightSpec& flight : out.back().flights) {
+      flight.rotor_fraction_low = 0.15;
+      flight.rotor_fraction_high = 0.4;
+    }
+  }
   return out;
 }
 

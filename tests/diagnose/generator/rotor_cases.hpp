@@ -20,7 +20,10 @@
 //   rotor_moments a rotor on a body whose nominal moments are also 5-20 % off, every
 //                body in turn (a wheel in a body whose tensor came from CAD);
 //   stopped      the same bodies with the wheel stopped: wrong moments alone;
-//   large_rotor  a rotor of 40-100 % of |L| (listed last), where a fit from zero can stop
+//   large_rotor  a rotor of 40-100 % of |L|, where a fit from zero can stop in another
+//                minimum;
+//   large_rotor_moments a rotor of 15-40 % of |L| with the moments 5-20 % off, every body
+//                in turn (listed last), where one flight's own fit of the pair can stop
 //                in another minimum.
 #pragma once
 
