@@ -162,11 +162,14 @@ TEST_CASE("on a body of revolution, a rotor along the axis is an axial moment ch
 namespace {
 
 // Seeds of generator/rotor_cases.hpp: the withheld set unless ALOFT_ROTOR_SEEDS=tuning
-// (the set the rule of 4_judge/told_apart.hpp was tuned on).
+// (the set the rule of 4_judge/told_apart.hpp was tuned on) or =fresh (a set measured
+// once, after the large rotor's starts were repaired on failures of the other two).
 aloft::generator::RotorSeeds rotor_seeds() {
   const char* set = std::getenv("ALOFT_ROTOR_SEEDS");
-  return set != nullptr && std::string(set) == "tuning" ? aloft::generator::RotorSeeds::tuning
-                                                        : aloft::generator::RotorSeeds::withheld;
+  const std::string name = set != nullptr ? set : "";
+  if (name == "tuning") return aloft::generator::RotorSeeds::tuning;
+  if (name == "fresh") return aloft::generator::RotorSeeds::fresh;
+  return aloft::generator::RotorSeeds::withheld;
 }
 
 // Sessions of each kind: 5, or ALOFT_ROTOR_SESSIONS (a larger one-off measurement).
@@ -335,6 +338,10 @@ void judge_session(const aloft::generator::SessionCase& c, KindTally& tally) {
 // rotor outweighs the moment error neither leads alone). Held to issue 31's bar for rotor
 // sessions, which at 5 sessions means all 5.
 constexpr double kRotorWithWrongMomentsNamed = 0.9;
+// A larger rotor with wrong moments (kind large_rotor_moments): 4 of 5 sessions on the
+// withheld seeds, the lowest of the three sets (above); below issue 31's bar, which it
+// was not set for.
+constexpr double kLargeRotorWithWrongMomentsNamed = 0.8;
 
 // Issue 31 item 1's bars, on the withheld seeds: rotors named in >= 90 % of rotor sessions,
 // |h| within 10 % and its direction within 10°; no rotor named in a look-alike session
@@ -363,13 +370,15 @@ TEST_CASE("rotor sessions are named a rotor, look-alike sessions never", "[rotor
       CHECK(t.tensors_covered >= kRotorWithWrongMomentsNamed * t.tensors);
       CHECK(t.tensors_close == t.tensors);
     } else if (kind == "large_rotor_moments") {
-      // A larger rotor (15-40 % of |L|) with wrong moments: measured, not yet held to the
-      // bar (docs/diagnose.md, "Its start"): 5 of 5 named on the tuning seeds, 0 of 5 on the
-      // withheld ones, where the pair's pooled fit (from the moments alone) or one flight's
-      // own fit (from the pooled fit) stops in another minimum, or (the racquet) the
-      // flights' own fits, each at its minimum, scatter 4.1 against a bar of 3. A rotor it
-      // names has the right h.
+      // A larger rotor (15-40 % of |L|) with wrong moments (docs/diagnose.md, "Its start"):
+      // with the pair's and each flight's fit also started from h read off the readings,
+      // 5 of 5 named on the tuning seeds, 4 of 5 on the withheld ones and 5 of 5 on the
+      // fresh ones (before: 5, 0 and 4); the withheld miss is the racquet, whose flights'
+      // own fits, each at its minimum, scatter 4.1 against a bar of 3. A rotor it names
+      // has the right h and the moments read beside it the right ratios.
+      CHECK(t.named >= kLargeRotorWithWrongMomentsNamed * t.sessions);
       CHECK(t.h_right == t.named);
+      CHECK(t.tensors_close == t.tensors);
     } else if (t.rotor) {
       rotor_sessions += t.sessions;
       rotor_named += t.named;

@@ -651,7 +651,7 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::ve
 
 EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalInertia& nominal,
                            const std::vector<FlightData>& data, const Eigen::VectorXd* theta_start,
-                           unsigned threads) {
+                           unsigned threads, bool readings_start_when_seeded) {
   if (base.effect == Effect::none && base.base.empty()) {
     return fit_effect(added, nominal, data, &base, theta_start, threads);
   }
@@ -686,7 +686,11 @@ EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalIne
     theta.tail(joining.size()) = joining;
   }
   LeastSquaresResult fitted = minimise(problem, theta, rates, solution_options(setup));
-  if (!seeded) fitted = lower_from_readings(setup, problem, std::move(fitted), base.theta);
+  if (!seeded) {
+    fitted = lower_from_readings(setup, problem, std::move(fitted), base.theta);
+  } else if (readings_start_when_seeded) {
+    fitted = lower_from_readings(setup, problem, std::move(fitted), theta_start->head(base.theta.size()));
+  }
   return result_of(setup, fitted, p);
 }
 

@@ -99,10 +99,13 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::ve
 // parameters start at their fitted values, the added ones at zero (or `theta_start`, the
 // whole compound theta); the rates start at the base fit's. An impulse in the base keeps
 // its fitted time; an added impulse is searched about the base model. `threads` as for
-// fit_effect.
+// fit_effect. A fit from `theta_start` is also tried from the added effect's start read off
+// the readings (its base part from theta_start) where `readings_start_when_seeded` and that
+// start costs less than where it ended: a flight's own fit seeded from a pooled one
+// (5_flow/flights_left_out.cpp).
 EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalInertia& nominal,
                            const std::vector<FlightData>& data, const Eigen::VectorXd* theta_start = nullptr,
-                           unsigned threads = 1);
+                           unsigned threads = 1, bool readings_start_when_seeded = false);
 
 // One flight's weighted residuals and their Jacobian [theta | omega_ref] at a fit's
 // solution, made over the samples of `data` as refit_from_solution's step makes them, for

@@ -7,7 +7,9 @@ namespace aloft::generator {
 std::vector<SessionCase> rotor_session_cases(RotorSeeds seeds, int per_kind, int flights) {
   // Ranges far from every other list's (withheld effects 20240515 on, phone lists, the
   // noise grid 31000 on), spaced by a large odd constant.
-  std::uint64_t seed = seeds == RotorSeeds::tuning ? 31310000ull : 31390000ull;
+  std::uint64_t seed = seeds == RotorSeeds::tuning     ? 31310000ull
+                       : seeds == RotorSeeds::withheld ? 31390000ull
+                                                       : 31470000ull;
   const auto next = [&] { return seed += 0x9E3779B1ull; };
   const auto& bodies = body_names();
   std::vector<SessionCase> out;
