@@ -185,19 +185,26 @@ ArrowProblem curve_on(Curve curve, const std::vector<double>& t, const std::vect
 }
 
 double exponential(const Eigen::VectorXd& s, double t) { return s(0) * std::exp(s(1) * t); }
+
+// 60 samples, 50 ms apart, of 2 exp(-1.3 t) + 0.5 with noise of 0.02 drawn from `seed`.
+void noisy_exponential(unsigned seed, std::vector<double>& t, std::vector<double>& y) {
+  std::mt19937 random(seed);
+  std::normal_distribution<double> noise(0.0, 0.02);
+  for (int i = 0; i < 60; ++i) {
+    t.push_back(0.05 * i);
+    y.push_back(2.0 * std::exp(-1.3 * t.back()) + 0.5 + noise(random));
+  }
+}
 double quadratic(const Eigen::VectorXd& s, double t) { return s(0) * t * t + s(1) * t; }
 
 }  // namespace
 
 TEST_CASE("gauss_newton_step from the all-data solution reaches a fold's refit to second order",
           "[levenberg_marquardt]") {
-  std::mt19937 random(11);
-  std::normal_distribution<double> noise(0.0, 0.02);
   std::vector<double> t, y;
+  noisy_exponential(11, t, y);
   std::vector<char> all, fold;
-  for (int i = 0; i < 60; ++i) {
-    t.push_back(0.05 * i);
-    y.push_back(2.0 * std::exp(-1.3 * t.back()) + 0.5 + noise(random));
+  for (std::size_t i = 0; i < t.size(); ++i) {
     all.push_back(1);
     fold.push_back((i / 5) % 2 == 0);  // interleaved chunks of 5, as held_out.hpp's
   }
@@ -248,13 +255,8 @@ TEST_CASE("gauss_newton_step on a linear problem is the exact refit of the resid
 
 TEST_CASE("minimise stops where no step can gain more than the last bits, and not before",
           "[levenberg_marquardt]") {
-  std::mt19937 random(7);
-  std::normal_distribution<double> noise(0.0, 0.02);
   std::vector<double> t, y;
-  for (int i = 0; i < 60; ++i) {
-    t.push_back(0.05 * i);
-    y.push_back(2.0 * std::exp(-1.3 * t.back()) + 0.5 + noise(random));
-  }
+  noisy_exponential(7, t, y);
   const std::vector<char> all(t.size(), 1);
   ArrowProblem problem = curve_on(exponential, t, y, all);
   const std::vector<Eigen::VectorXd> start{Eigen::VectorXd::Zero(1)};

@@ -194,14 +194,29 @@ Point moved(const ArrowProblem& problem, const Point& x, const Eigen::VectorXd& 
 // damping the rejected steps before have piled up. `predicted`: the gain of the step at
 // `lambda`, which is that step when lambda is that light already.
 constexpr double kLightDamping = 1e-3;
+
+// Marquardt's step at damping lambda: each parameter's curvature scaled by 1 + lambda,
+// with `floor` so that a parameter the data does not inform (zero column) stays put
+// instead of making the system singular.
+Eigen::VectorXd damped_step(const Eigen::MatrixXd& normal, const Eigen::VectorXd& gradient, double floor,
+                            double lambda) {
+  Eigen::MatrixXd damped = normal;
+  damped.diagonal() += lambda * (normal.diagonal().array() + floor).matrix();
+  return damped.ldlt().solve(-gradient);
+}
+
+// Gain predicted by the linear model for the step `delta`: -(2 g.d + d.H.d) for cost = |r|^2.
+double predicted_gain(const Eigen::MatrixXd& normal, const Eigen::VectorXd& gradient,
+                      const Eigen::VectorXd& delta) {
+  return -(2.0 * gradient.dot(delta) + delta.dot(normal * delta));
+}
+
 double lightly_damped_gain(const Eigen::MatrixXd& normal, const Eigen::VectorXd& gradient, double floor,
                            double lambda, double predicted) {
   if (lambda <= kLightDamping) return predicted;
-  Eigen::MatrixXd damped = normal;
-  damped.diagonal() += kLightDamping * (normal.diagonal().array() + floor).matrix();
-  const Eigen::VectorXd light = damped.ldlt().solve(-gradient);
+  const Eigen::VectorXd light = damped_step(normal, gradient, floor, kLightDamping);
   if (!light.allFinite()) return predicted;
-  return -(2.0 * gradient.dot(light) + light.dot(normal * light));
+  return predicted_gain(normal, gradient, light);
 }
 
 }  // namespace
@@ -222,15 +237,10 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
   int small_gains = 0;
   int iteration = 0;
   for (; iteration < options.max_iterations && std::isfinite(cost); ++iteration) {
-    // Marquardt's scaling by diag(J^T J), with a floor so that a parameter the data does
-    // not inform (zero column) stays put instead of making the system singular.
     const double floor = 1e-9 * std::max(normal.diagonal().maxCoeff(), 1e-12);
-    Eigen::MatrixXd damped = normal;
-    damped.diagonal() += lambda * (normal.diagonal().array() + floor).matrix();
-    const Eigen::VectorXd delta = damped.ldlt().solve(-gradient);
+    const Eigen::VectorXd delta = damped_step(normal, gradient, floor, lambda);
     if (!delta.allFinite()) break;
-    // Gain predicted by the linear model: -(2 g.d + d.H.d) for cost = |r|^2.
-    const double predicted = -(2.0 * gradient.dot(delta) + delta.dot(normal * delta));
+    const double predicted = predicted_gain(normal, gradient, delta);
     // Converged, too, when no step could gain more than the last bits move the cost
     // (kStepGain), or than the caller's tolerance where it asks for less: what the dance
     // of rejected and tiny steps round the minimum cost (case00 366.9 -> 274.8 M
