@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "aloft/inertia_tensor.hpp"
+#include "aloft/dynamics/inertia_tensor.hpp"
 
 namespace aloft::host {
 

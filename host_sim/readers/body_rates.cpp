@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "aloft/angular_velocity.hpp"
+#include "aloft/dynamics/angular_velocity.hpp"
 #include "common/commands.hpp"
 #include "readers/time_stamps.hpp"
 

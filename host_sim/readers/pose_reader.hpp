@@ -1,5 +1,5 @@
 // Rigid-body pose files of SPEC §3, read into PoseTrial (orientation body -> world,
-// Hamilton, aloft/rotation.hpp; position of the body origin in metres).
+// Hamilton, aloft/dynamics/rotation.hpp; position of the body origin in metres).
 //
 // OpenSim .mot / .sto: a header of key=value lines up to "endheader" (inDegrees=yes|no
 // is required; nRows and nColumns, when given, are checked), then a row of column names

@@ -1,6 +1,6 @@
 // Reading a raw dump of the flight-record area (the bytes of the record ring's erase
-// blocks, aloft/record_ring.hpp) as `aloft records` does: every 128-byte slot from
-// offset 0 is classified (aloft/flight_record.hpp). Valid records are listed in sequence
+// blocks, aloft/records/record_ring.hpp) as `aloft records` does: every 128-byte slot from
+// offset 0 is classified (aloft/records/flight_record.hpp). Valid records are listed in sequence
 // order; each slot that is neither erased nor valid is a problem named by its offset and
 // reason, and the dump is still read. Refused with aloft::host::Error (one line naming the
 // file): a file that cannot be read, an empty file, a file in which no slot holds a
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "aloft/flight_record.hpp"
+#include "aloft/records/flight_record.hpp"
 
 namespace aloft::host {
 

@@ -1,7 +1,7 @@
 // `aloft replay --fifo FIFO.bin --odr-hz N` reads its file here: the bytes read from the
 // ICM-42688-P's FIFO_DATA register in the configuration the firmware driver sets (SPEC §5:
 // packet 3, 16 bytes, big-endian, ±16 g, ±2000 °/s, absolute 1 µs time stamps), as many
-// bursts concatenated, decoded by the firmware's own decoder (aloft/icm42688p_fifo.hpp,
+// bursts concatenated, decoded by the firmware's own decoder (aloft/sensor/icm42688p_fifo.hpp,
 // in float) into a Recording: format "icm42688p_fifo", the first valid packet at t = 0.
 //
 // Time stamps count nominal microseconds (the chip on its PLL or an external clock)
@@ -10,7 +10,7 @@
 // stamp (65.536 ms); a file holds no other clock, so a longer hole is under-measured by
 // whole wraps (the firmware driver measures those with the MCU clock).
 //
-// Faults, walked past with the firmware's own rules (aloft/icm42688p_fifo.hpp, next()),
+// Faults, walked past with the firmware's own rules (aloft/sensor/icm42688p_fifo.hpp, next()),
 // each counted in the Recording and none an error:
 //   - HEADER_MSG (0x80, DS-000347 §6.2 "FIFO is empty"): an empty read, the byte alone or
 //     its whole 16-byte slot; counted in empty_reads.
@@ -28,7 +28,7 @@
 
 #include <string>
 
-#include "aloft/icm42688p_fifo.hpp"
+#include "aloft/sensor/icm42688p_fifo.hpp"
 #include "replay/recording.hpp"
 
 namespace aloft::host {

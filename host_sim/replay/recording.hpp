@@ -1,5 +1,5 @@
 // A recording as `aloft replay` reads it, whatever the file: the samples in the one type
-// the firmware's pipeline takes (aloft/imu_sample.hpp, float), and what the reader found
+// the firmware's pipeline takes (aloft/sensor/imu_sample.hpp, float), and what the reader found
 // wrong with the source on the way. The CSV reader (--imu) and the ICM-42688-P FIFO reader
 // (--fifo) each fill one; the replay itself (the firmware's pipeline, sample by sample)
 // does not know which file it came from.
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "aloft/imu_sample.hpp"
+#include "aloft/sensor/imu_sample.hpp"
 
 namespace aloft::host {
 

@@ -1,4 +1,4 @@
-// The replay itself: the firmware's onboard pipeline (aloft/onboard_pipeline.hpp,
+// The replay itself: the firmware's onboard pipeline (aloft/onboard/onboard_pipeline.hpp,
 // OnboardPipeline<float, 8>), fed a Recording sample by sample, exactly as a firmware
 // feeds it from its sensor driver. It finds the flights itself. Times in ReplayResult
 // are the pipeline's (µs after the recording's first sample); recording_time_s turns
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "aloft/onboard_pipeline.hpp"
+#include "aloft/onboard/onboard_pipeline.hpp"
 #include "common/body_file.hpp"
 #include "replay/recording.hpp"
 

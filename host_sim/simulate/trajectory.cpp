@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "aloft/rk4_integrator.hpp"
-#include "aloft/splitting_integrator.hpp"
+#include "aloft/dynamics/rk4_integrator.hpp"
+#include "aloft/dynamics/splitting_integrator.hpp"
 #include "common/commands.hpp"
 
 namespace aloft::host {

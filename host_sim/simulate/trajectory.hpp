@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "aloft/inertia_tensor.hpp"
-#include "aloft/rigid_body_state.hpp"
+#include "aloft/dynamics/inertia_tensor.hpp"
+#include "aloft/dynamics/rigid_body_state.hpp"
 
 namespace aloft::host {
 

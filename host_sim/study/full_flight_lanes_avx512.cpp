@@ -3,7 +3,7 @@
 #include "study/full_flight_wide_lanes.hpp"
 
 #if defined(__AVX512F__) && defined(__AVX512DQ__)
-#include "aloft/xsimd_lanes.hpp"
+#include "aloft/lanes/xsimd_lanes.hpp"
 
 namespace aloft::host {
 

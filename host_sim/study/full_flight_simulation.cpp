@@ -5,11 +5,11 @@
 #include <limits>
 #include <string>
 
-#include "aloft/angular_velocity.hpp"
-#include "aloft/deviation.hpp"
-#include "aloft/euler_equations.hpp"
-#include "aloft/rk4_integrator.hpp"
-#include "aloft/xsimd_lanes.hpp"
+#include "aloft/dynamics/angular_velocity.hpp"
+#include "aloft/dynamics/deviation.hpp"
+#include "aloft/dynamics/euler_equations.hpp"
+#include "aloft/dynamics/rk4_integrator.hpp"
+#include "aloft/lanes/xsimd_lanes.hpp"
 #include "common/commands.hpp"
 #include "study/full_flight_wide_lanes.hpp"
 

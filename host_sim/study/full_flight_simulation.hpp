@@ -9,8 +9,8 @@
 
 #include <vector>
 
-#include "aloft/batch_flight.hpp"
-#include "aloft/inertia_tensor.hpp"
+#include "aloft/lanes/batch_flight.hpp"
+#include "aloft/dynamics/inertia_tensor.hpp"
 #include "study/da_frame.hpp"
 #include "study/study_flight.hpp"
 
@@ -21,7 +21,7 @@ namespace aloft::host {
 RmsDaByFrame full_flight_rms_da_deg(const StudyFlight& flight, const InertiaTensor<double>& inertia,
                                     std::size_t k);
 
-// The same simulations several at once, in SIMD lanes (aloft/batch_flight.hpp, xsimd):
+// The same simulations several at once, in SIMD lanes (aloft/lanes/batch_flight.hpp, xsimd):
 // the same numbers as full_flight_rms_da_deg within 1e-9 degrees (a test checks it).
 // The flight is flattened once into the arrays the lanes gather from.
 class LaneFlight {

@@ -9,7 +9,7 @@
 
 #include <cstddef>
 
-#include "aloft/batch_flight.hpp"
+#include "aloft/lanes/batch_flight.hpp"
 
 namespace aloft::host {
 

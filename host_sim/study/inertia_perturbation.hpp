@@ -30,7 +30,7 @@
 
 #include <string>
 
-#include "aloft/inertia_tensor.hpp"
+#include "aloft/dynamics/inertia_tensor.hpp"
 #include "study/simulation_random.hpp"
 
 namespace aloft::host {

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "aloft/inertia_tensor.hpp"
+#include "aloft/dynamics/inertia_tensor.hpp"
 #include "study/da_frame.hpp"
 #include "study/inertia_perturbation.hpp"
 #include "study/study_flight.hpp"

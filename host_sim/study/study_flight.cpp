@@ -1,6 +1,6 @@
 #include "study/study_flight.hpp"
 
-#include "aloft/angular_velocity.hpp"
+#include "aloft/dynamics/angular_velocity.hpp"
 #include "study/tangent_spline_resampler.hpp"
 
 namespace aloft::host {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "aloft/rk4_integrator.hpp"
+#include "aloft/dynamics/rk4_integrator.hpp"
 #include "study/paper_cylinder.hpp"
 #include "study/simulation_random.hpp"
 

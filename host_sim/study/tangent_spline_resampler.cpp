@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "aloft/rotation.hpp"
+#include "aloft/dynamics/rotation.hpp"
 
 namespace aloft::host {
 namespace {

@@ -21,7 +21,7 @@
 #include <cstring>
 
 #include "aloft/cold_path.hpp"
-#include "aloft/onboard_pipeline.hpp"
+#include "aloft/onboard/onboard_pipeline.hpp"
 #include "aloft_port/divide_u64.hpp"
 #include "aloft_port/report_writer.hpp"
 

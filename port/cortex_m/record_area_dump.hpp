@@ -7,8 +7,8 @@
 
 #include <cstdint>
 
-#include "aloft/flight_record_from_result.hpp"
-#include "aloft/record_ring.hpp"
+#include "aloft/records/flight_record_from_result.hpp"
+#include "aloft/records/record_ring.hpp"
 #include "semihosting.hpp"
 
 namespace aloft::port {

@@ -1,4 +1,4 @@
-// A NOR flash in RAM for the record ring's tests (aloft/block_device.hpp), on the host
+// A NOR flash in RAM for the record ring's tests (aloft/records/block_device.hpp), on the host
 // and on bare metal alike (fixed storage, no heap). It enforces the rules a real part
 // only punishes later: programming a 1 over a 0, a range off the program unit or across
 // a block, is counted as a violation and refused. And it cuts the power where told, the
@@ -12,7 +12,7 @@
 
 #include <cstdint>
 
-#include "aloft/block_device.hpp"
+#include "aloft/records/block_device.hpp"
 
 namespace aloft::testing {
 

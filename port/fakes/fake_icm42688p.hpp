@@ -27,8 +27,8 @@
 
 #include <cstdint>
 
-#include "aloft/icm42688p_registers.hpp"
-#include "aloft/imu_bus.hpp"
+#include "aloft/sensor/icm42688p_registers.hpp"
+#include "aloft/sensor/imu_bus.hpp"
 #include "icm42688p_packet_encoder.hpp"
 
 namespace aloft_test {

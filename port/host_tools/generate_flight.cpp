@@ -7,7 +7,7 @@
 #include <iostream>
 #include <random>
 
-#include "aloft/euler_equations.hpp"
+#include "aloft/dynamics/euler_equations.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 3) {

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "aloft/onboard_check.hpp"
+#include "aloft/onboard/onboard_check.hpp"
 #include "check_settings.hpp"
 #include "flight_files.hpp"
 

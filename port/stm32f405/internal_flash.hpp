@@ -1,4 +1,4 @@
-// The STM32F405's internal flash as a block device (aloft/block_device.hpp), through
+// The STM32F405's internal flash as a block device (aloft/records/block_device.hpp), through
 // its flash interface (RM0090 §3): blocks are the 128 KiB sectors 5 to 11 (the
 // smaller sectors 0 to 4 hold the vector table and code, and a block device needs one
 // block size). Programming is by 32-bit word (PSIZE = x32, for a supply of 2.7 to
@@ -17,12 +17,12 @@
 
 #include <cstdint>
 
-#include "aloft/block_device.hpp"
+#include "aloft/records/block_device.hpp"
 
 namespace aloft::port::stm32f405 {
 
 // Three sectors by default: the ring keeps (3 - 2) * 1024 + 1 to (3 - 1) * 1024 flights
-// (aloft/record_ring.hpp); with two it would keep as few as one right after a wrap.
+// (aloft/records/record_ring.hpp); with two it would keep as few as one right after a wrap.
 struct InternalFlashConfig {
   std::uint32_t first_sector = 9;  // 5..11: 128 KiB sectors (9, 10, 11: the last 384 KiB)
   std::uint32_t sector_count = 3;  // the record ring needs at least 2

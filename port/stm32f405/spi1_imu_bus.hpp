@@ -1,5 +1,5 @@
 // The IMU's bus on an STM32F405 flight controller: SPI1 at register level (RM0090 §28)
-// with the chip select on a GPIO, as an aloft::ImuBus (aloft/imu_bus.hpp) for the
+// with the chip select on a GPIO, as an aloft::ImuBus (aloft/sensor/imu_bus.hpp) for the
 // ICM-42688-P driver. Pins (the common F405 flight-controller layout; check the board's
 // schematic): PA5 SCK, PA6 MISO, PA7 MOSI (alternate function 5), PA4 chip select
 // (push-pull output, active low). SPI mode 3 (CPOL = 1, CPHA = 1), 8 bits, MSB first,
@@ -11,7 +11,7 @@
 // byte received is 0x00) and GPIO is not (the chip-select writes are dropped, harmlessly).
 #pragma once
 
-#include "aloft/imu_bus.hpp"
+#include "aloft/sensor/imu_bus.hpp"
 #include "stm32f405_registers.hpp"
 
 namespace aloft {

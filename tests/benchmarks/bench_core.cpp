@@ -9,7 +9,7 @@
 #include <boost/numeric/odeint.hpp>
 
 #include "aloft/aloft.hpp"
-#include "aloft/xsimd_lanes.hpp"
+#include "aloft/lanes/xsimd_lanes.hpp"
 #include "lanes_flight.hpp"
 
 namespace {

@@ -2,7 +2,7 @@
 #include "lanes_flight.hpp"
 
 #if defined(__AVX2__) && defined(__FMA__)
-#include "aloft/xsimd_lanes.hpp"
+#include "aloft/lanes/xsimd_lanes.hpp"
 
 namespace aloft_bench {
 bool avx2_fma_supported() { return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"); }

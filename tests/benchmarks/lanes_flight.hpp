@@ -6,7 +6,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "aloft/principal_dynamics.hpp"
+#include "aloft/dynamics/principal_dynamics.hpp"
 
 namespace aloft_bench {
 

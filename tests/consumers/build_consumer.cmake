@@ -33,7 +33,7 @@ if(KIND STREQUAL "find_package")
     run_step("install of component ${component}"
       ${CMAKE_COMMAND} --install ${ALOFT_BUILD} --prefix ${prefix} --component ${component})
   endforeach()
-  foreach(file include/aloft/onboard_check.hpp include/aloft_port/port.hpp
+  foreach(file include/aloft/onboard/onboard_check.hpp include/aloft_port/port.hpp
                lib/cmake/aloft/aloftConfig.cmake lib/cmake/aloft/aloftConfigVersion.cmake
                lib/cmake/aloft/aloftCoreTargets.cmake lib/cmake/aloft/aloftPortTargets.cmake)
     if(NOT EXISTS ${prefix}/${file})

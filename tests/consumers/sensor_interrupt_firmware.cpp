@@ -9,8 +9,8 @@
 // (0.71 measured: each simulation lives 80 samples, 0.16 s).
 #include <cstdint>
 
-#include "aloft/euler_equations.hpp"
-#include "aloft/onboard_check.hpp"
+#include "aloft/dynamics/euler_equations.hpp"
+#include "aloft/onboard/onboard_check.hpp"
 #include "aloft_port/report_writer.hpp"
 
 static_assert(__cplusplus >= 201703L, "aloft::core carries cxx_std_17 to its consumers");

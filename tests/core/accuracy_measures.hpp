@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "aloft/deviation.hpp"
-#include "aloft/rk4_integrator.hpp"
-#include "aloft/splitting_integrator.hpp"
+#include "aloft/dynamics/deviation.hpp"
+#include "aloft/dynamics/rk4_integrator.hpp"
+#include "aloft/dynamics/splitting_integrator.hpp"
 #include "exact_tops.hpp"
 #include "test_api.hpp"
 

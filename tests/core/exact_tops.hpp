@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "aloft/rotation.hpp"
+#include "aloft/dynamics/rotation.hpp"
 
 namespace aloft_test {
 

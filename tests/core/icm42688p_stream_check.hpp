@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "aloft/icm42688p_driver.hpp"
+#include "aloft/sensor/icm42688p_driver.hpp"
 #include "fake_icm42688p.hpp"
 #include "icm42688p_packet_encoder.hpp"
 

@@ -1,5 +1,5 @@
 // Angular velocity from consecutive orientations, in body and world axes.
-#include "aloft/angular_velocity.hpp"
+#include "aloft/dynamics/angular_velocity.hpp"
 #include "test_api.hpp"
 #include "tolerances.hpp"
 

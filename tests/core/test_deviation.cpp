@@ -1,7 +1,7 @@
 // Deviation angle, relative error and their fixed-memory statistics.
 #include <algorithm>
 
-#include "aloft/deviation.hpp"
+#include "aloft/dynamics/deviation.hpp"
 #include "test_api.hpp"
 
 namespace {

@@ -1,13 +1,13 @@
 // Flight records: the CRC-32 against its standard check value, the byte layout of
-// aloft/flight_record.hpp field by field, how a slot is classified, the hashes against
+// aloft/records/flight_record.hpp field by field, how a slot is classified, the hashes against
 // values computed independently (Python's struct and zlib.crc32 over the bytes the header
 // defines), the adapter from the pipeline's result, and the ring on a device full of
 // garbage and after several wraps.
 #include <cmath>
 #include <cstdint>
 
-#include "aloft/flight_record_from_result.hpp"
-#include "aloft/record_ring.hpp"
+#include "aloft/records/flight_record_from_result.hpp"
+#include "aloft/records/record_ring.hpp"
 #include "fake_flash.hpp"
 #include "test_api.hpp"
 

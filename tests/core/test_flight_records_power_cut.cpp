@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 
-#include "aloft/record_ring.hpp"
+#include "aloft/records/record_ring.hpp"
 #include "fake_flash.hpp"
 #include "test_api.hpp"
 

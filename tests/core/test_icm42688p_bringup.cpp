@@ -1,7 +1,7 @@
 // ICM-42688-P driver bring-up on the fake chip: the configuration the datasheet asks for
 // ends up in the registers, and each way bring-up or a later check can fail gives its
 // own Status and count.
-#include "aloft/icm42688p_driver.hpp"
+#include "aloft/sensor/icm42688p_driver.hpp"
 #include "fake_icm42688p.hpp"
 #include "icm42688p_stream_check.hpp"
 #include "test_api.hpp"

@@ -1,7 +1,7 @@
 // The ICM-42688-P FIFO decoder on packets encoded from the datasheet's layout
 // (icm42688p_packet_encoder.hpp): units, full-scale flags, invalid data, headers, and the
 // unwrapping of the 16-bit time stamps.
-#include "aloft/icm42688p_fifo.hpp"
+#include "aloft/sensor/icm42688p_fifo.hpp"
 #include "icm42688p_packet_encoder.hpp"
 #include "icm42688p_stream_check.hpp"
 #include "test_api.hpp"

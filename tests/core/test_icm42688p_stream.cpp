@@ -1,7 +1,7 @@
 // The ICM-42688-P driver streaming from the fake chip: every sample bit-exact against
 // the stream that made the packets, and each fault of the fake's schedule counted,
 // recovered from, and its gap reported with the right length.
-#include "aloft/icm42688p_driver.hpp"
+#include "aloft/sensor/icm42688p_driver.hpp"
 #include "fake_icm42688p.hpp"
 #include "icm42688p_stream_check.hpp"
 #include "test_api.hpp"

@@ -1,6 +1,6 @@
 // Building and validating inertia tensors (SPEC §2): every form, the paper's cylinder,
 // and the rejections, which leave the target untouched.
-#include "aloft/inertia_tensor.hpp"
+#include "aloft/dynamics/inertia_tensor.hpp"
 #include "test_api.hpp"
 
 namespace {

@@ -2,8 +2,8 @@
 // leave the state untouched when they do.
 #include <limits>
 
-#include "aloft/rk4_integrator.hpp"
-#include "aloft/splitting_integrator.hpp"
+#include "aloft/dynamics/rk4_integrator.hpp"
+#include "aloft/dynamics/splitting_integrator.hpp"
 #include "test_api.hpp"
 
 namespace {

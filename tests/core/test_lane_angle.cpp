@@ -1,11 +1,11 @@
-// aloft's polynomial atan2 (aloft/lane_angle.hpp) and the principal-frame dynamics
-// (aloft/principal_dynamics.hpp) against the C library and the body-axes equations.
+// aloft's polynomial atan2 (aloft/lanes/lane_angle.hpp) and the principal-frame dynamics
+// (aloft/dynamics/principal_dynamics.hpp) against the C library and the body-axes equations.
 #include <cmath>
 #include <cstdint>
 
-#include "aloft/deviation.hpp"
-#include "aloft/euler_equations.hpp"
-#include "aloft/lane_angle.hpp"
+#include "aloft/dynamics/deviation.hpp"
+#include "aloft/dynamics/euler_equations.hpp"
+#include "aloft/lanes/lane_angle.hpp"
 #include "test_api.hpp"
 
 namespace {

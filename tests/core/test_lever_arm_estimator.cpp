@@ -1,6 +1,6 @@
-// The lever-arm estimator (aloft/lever_arm_estimator.hpp): a flight's fit joins the
+// The lever-arm estimator (aloft/onboard/lever_arm_estimator.hpp): a flight's fit joins the
 // recording's estimate only when it can be trusted.
-#include "aloft/lever_arm_estimator.hpp"
+#include "aloft/onboard/lever_arm_estimator.hpp"
 
 #include <cmath>
 
@@ -38,7 +38,7 @@ ALOFT_TEST_CASE("lever-arm estimator: a trusted flight gives the recording's est
   const aloft::LeverArmReport<double> report = e.finish_flight(nullptr, 8.0);
   ALOFT_CHECK(e.has_estimate());
   ALOFT_CHECK(report.estimated);
-  // The ridge (aloft/lever_arm_estimate.hpp) pulls r a little towards zero where the spin
+  // The ridge (aloft/onboard/lever_arm_estimate.hpp) pulls r a little towards zero where the spin
   // hardly shows it: 0.54 mm here.
   ALOFT_CHECK((report.r - r).norm() < 1e-3);
   ALOFT_CHECK(report.fit_rms_m_s2 < 0.05);

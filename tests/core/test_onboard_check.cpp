@@ -1,6 +1,6 @@
 // The onboard check: seeding, the K-simulation window, flight detection, and its
 // verdict on a gyro stream from an exactly known motion.
-#include "aloft/onboard_check.hpp"
+#include "aloft/onboard/onboard_check.hpp"
 #include "exact_tops.hpp"
 #include "test_api.hpp"
 

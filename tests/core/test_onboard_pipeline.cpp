@@ -1,7 +1,7 @@
 // The onboard pipeline on an exactly known sequence: held still, a torque-free spin about
 // a principal axis with the IMU 30 mm off the axis (it reads w x (w x r), 12 m/s²),
 // an impact, held again. Release and landing, the fitted r, gaps and clipped samples.
-#include "aloft/onboard_pipeline.hpp"
+#include "aloft/onboard/onboard_pipeline.hpp"
 #include "test_api.hpp"
 
 #include <limits>

@@ -1,6 +1,6 @@
-// The release window (aloft/release_window.hpp): a proposed release, judged over blocks
+// The release window (aloft/onboard/release_window.hpp): a proposed release, judged over blocks
 // of 5 ms once 25 ms of samples have followed it.
-#include "aloft/release_window.hpp"
+#include "aloft/onboard/release_window.hpp"
 
 #include <cmath>
 

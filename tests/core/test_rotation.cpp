@@ -1,5 +1,5 @@
 // Quaternion exp/log and angle measures, near 0, mid-range and near pi (Sophus style).
-#include "aloft/rotation.hpp"
+#include "aloft/dynamics/rotation.hpp"
 #include "test_api.hpp"
 #include "tolerances.hpp"
 

@@ -1,6 +1,6 @@
-// The stream clock (aloft/stream_clock.hpp): dt, gaps, clipping and the w_dot half span
+// The stream clock (aloft/sensor/stream_clock.hpp): dt, gaps, clipping and the w_dot half span
 // from time stamps alone.
-#include "aloft/stream_clock.hpp"
+#include "aloft/sensor/stream_clock.hpp"
 
 #include "test_api.hpp"
 

@@ -2,7 +2,7 @@
 // rounding for distinct, nearly equal and equal eigenvalues, in float and double.
 #include <algorithm>
 
-#include "aloft/symmetric_eigen.hpp"
+#include "aloft/dynamics/symmetric_eigen.hpp"
 #include "test_api.hpp"
 
 namespace {

@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "aloft/euler_equations.hpp"
+#include "aloft/dynamics/euler_equations.hpp"
 #include "common/body_file.hpp"
 #include "readers/marker_pose_fit.hpp"
 #include "study/paper_cylinder.hpp"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "aloft/flight_record.hpp"
+#include "aloft/records/flight_record.hpp"
 #include "c3d_test_writer.hpp"
 #include "fifo_file_writer.hpp"
 

@@ -34,8 +34,8 @@
 #include <random>
 #include <vector>
 
-#include "aloft/imu_sample.hpp"
-#include "aloft/inertia_tensor.hpp"
+#include "aloft/sensor/imu_sample.hpp"
+#include "aloft/dynamics/inertia_tensor.hpp"
 #include "low_pass.hpp"  // tests/diagnose/generator
 
 namespace aloft_test {

@@ -1,4 +1,4 @@
-// The batch integrator (aloft/batch_flight.hpp) in xsimd lanes against an independent
+// The batch integrator (aloft/lanes/batch_flight.hpp) in xsimd lanes against an independent
 // scalar reference: Rk4Integrator on body states, ω from consecutive orientations with
 // Eigen quaternions, and the C library's atan2. Also: the lanes' atan2 against
 // std::atan2, and no heap.
@@ -8,9 +8,9 @@
 #include <random>
 #include <vector>
 
-#include "aloft/batch_flight.hpp"
-#include "aloft/rk4_integrator.hpp"
-#include "aloft/xsimd_lanes.hpp"
+#include "aloft/lanes/batch_flight.hpp"
+#include "aloft/dynamics/rk4_integrator.hpp"
+#include "aloft/lanes/xsimd_lanes.hpp"
 #include "heap_counter.hpp"
 
 namespace {

@@ -1,4 +1,4 @@
-// Release and landing of a spinning, off-centre IMU (aloft/onboard_pipeline.hpp) on a few
+// Release and landing of a spinning, off-centre IMU (aloft/onboard/onboard_pipeline.hpp) on a few
 // hundred generated throws (generated_throws.hpp): the issue's bars, the lever-arm
 // estimate, drops, and no flight where there is none. Every case prints what it measured.
 #include <catch2/catch.hpp>
@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "aloft/onboard_pipeline.hpp"
+#include "aloft/onboard/onboard_pipeline.hpp"
 #include "generated_throws.hpp"
 
 namespace {
@@ -340,7 +340,7 @@ TEST_CASE("no flight in a recording without one", "[release]") {
 // Real hands (generated_throws.hpp, real_hand): a let-go over 2-30 ms with a slow tail, the
 // hand's torque to the end, a body that rings after release and after a catch, at 1-4 kHz
 // (the held-back real throws: 4 kHz; real drops: 2-3 kHz). The window's settings
-// (aloft/release_window.hpp) were chosen on the first seed set ("tuned on") and are
+// (aloft/onboard/release_window.hpp) were chosen on the first seed set ("tuned on") and are
 // reported on the second, drawn from seeds nobody looked at while choosing them ("held
 // out"); both must meet the held-back real throws' bar: within 10 ms early to 20 ms late,
 // never more than 10 ms early. Measured (gcc Release), docs/firmware.md "Real hands".

@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "aloft/rotation.hpp"
+#include "aloft/dynamics/rotation.hpp"
 #include "common/body_file.hpp"
 #include "one_line_error.hpp"
 #include "readers/body_rates.hpp"

@@ -13,8 +13,8 @@
 #include <cstdint>
 #include <string>
 
-#include "aloft/flight_record_from_result.hpp"
-#include "aloft/record_ring.hpp"
+#include "aloft/records/flight_record_from_result.hpp"
+#include "aloft/records/record_ring.hpp"
 #include "exact_tops.hpp"
 #include "file_block_device.hpp"
 

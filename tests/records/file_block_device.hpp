@@ -1,4 +1,4 @@
-// A NOR flash in a file, for the host (aloft/block_device.hpp): the file holds the
+// A NOR flash in a file, for the host (aloft/records/block_device.hpp): the file holds the
 // record area's bytes, as a dump read from a board would. The NOR rules are kept as in
 // port/fakes/fake_flash.hpp (erase to 0xFF, programming only clears bits; a 1 over a 0 is
 // refused), without power cuts: this device is for making and reading dumps.
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "aloft/block_device.hpp"
+#include "aloft/records/block_device.hpp"
 
 namespace aloft::test {
 

@@ -5,7 +5,7 @@
 
 #include <cstdio>
 
-#include "aloft/icm42688p_driver.hpp"
+#include "aloft/sensor/icm42688p_driver.hpp"
 #include "common/warning.hpp"
 #include "fake_icm42688p.hpp"
 #include "fifo_file_writer.hpp"

@@ -10,7 +10,7 @@
 #include <array>
 #include <cmath>
 
-#include "aloft/deviation.hpp"
+#include "aloft/dynamics/deviation.hpp"
 #include "study/built_in_study.hpp"
 #include "study/full_flight_simulation.hpp"
 

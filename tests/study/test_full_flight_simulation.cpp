@@ -3,10 +3,10 @@
 #include <cmath>
 #include <limits>
 
-#include "aloft/angular_velocity.hpp"
-#include "aloft/deviation.hpp"
-#include "aloft/euler_equations.hpp"
-#include "aloft/rk4_integrator.hpp"
+#include "aloft/dynamics/angular_velocity.hpp"
+#include "aloft/dynamics/deviation.hpp"
+#include "aloft/dynamics/euler_equations.hpp"
+#include "aloft/dynamics/rk4_integrator.hpp"
 #include "common/commands.hpp"
 #include "study/built_in_study.hpp"
 #include "study/full_flight_simulation.hpp"

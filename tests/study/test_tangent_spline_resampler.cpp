@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "aloft/rk4_integrator.hpp"
+#include "aloft/dynamics/rk4_integrator.hpp"
 #include "study/synthetic_throw.hpp"
 #include "study/tangent_spline_resampler.hpp"
 

@@ -8,8 +8,8 @@
 // Flight-record code = size(2) - size(1); the driver = size(1) - size(0).
 #include <cstdint>
 
-#include "aloft/flight_record_from_result.hpp"
-#include "aloft/record_ring.hpp"
+#include "aloft/records/flight_record_from_result.hpp"
+#include "aloft/records/record_ring.hpp"
 #include "aloft_port/port.hpp"
 #include "internal_flash.hpp"
 

@@ -2,7 +2,7 @@
 // record ring on the RAM fake flash, then the whole record area written to a host file by
 // semihosting (port/cortex_m/record_area_dump.hpp). The ctest case after this one
 // (check_record_area_dump.cmake) reads that file back.
-#include "aloft/onboard_pipeline.hpp"
+#include "aloft/onboard/onboard_pipeline.hpp"
 #include "fake_flash.hpp"
 #include "record_area_dump.hpp"
 #include "test_api.hpp"

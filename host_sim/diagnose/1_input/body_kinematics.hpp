@@ -1,5 +1,5 @@
 // Each sample of a gyro and accelerometer series in body axes, with w_dot from the gyro:
-// what aloft/free_flight_residual.hpp takes to give the specific force at the centre of
+// what aloft/dynamics/free_flight_residual.hpp takes to give the specific force at the centre of
 // mass, |a - K(w, w_dot) r| (the hand's, the ground's or a blow's force per unit mass).
 // The diagnosis reads it where the firmware's code is not run over the data: inside a cut
 // (contact.hpp) and at a fitted impulse (4_judge/impulse_force_check.hpp).
@@ -10,7 +10,7 @@
 
 #include <vector>
 
-#include "aloft/free_flight_residual.hpp"
+#include "aloft/dynamics/free_flight_residual.hpp"
 
 namespace aloft::host::diagnose {
 

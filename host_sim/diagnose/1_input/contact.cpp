@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "aloft/free_flight_residual.hpp"
+#include "aloft/dynamics/free_flight_residual.hpp"
 #include "diagnose/1_input/airborne_windows.hpp"
 #include "diagnose/1_input/body_kinematics.hpp"
 

@@ -19,7 +19,7 @@ struct Contact {
   double cut_from_s = 0.0, cut_to_s = 0.0;  // the samples left out
   bool before_release = true;               // false: after the landing
   // The largest specific force at the centre of mass over the cut samples, |a - K r|
-  // (aloft/free_flight_residual.hpp), with r as the firmware used it: the hand's or the
+  // (aloft/dynamics/free_flight_residual.hpp), with r as the firmware used it: the hand's or the
   // ground's force per unit mass.
   double beyond_rotation_m_s2 = 0.0;
   double at_s = 0.0;  // where that largest force was

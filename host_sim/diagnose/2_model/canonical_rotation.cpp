@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "aloft/rotation.hpp"
+#include "aloft/dynamics/rotation.hpp"
 
 namespace aloft::host::diagnose {
 

@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "aloft/inertia_tensor.hpp"
+#include "aloft/dynamics/inertia_tensor.hpp"
 
 namespace aloft::host::diagnose {
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "aloft/deviation.hpp"
+#include "aloft/dynamics/deviation.hpp"
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/4_judge/score_spread.hpp"
 #include "diagnose/4_judge/told_apart.hpp"

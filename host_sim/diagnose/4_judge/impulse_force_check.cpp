@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "aloft/lever_arm_estimate.hpp"
+#include "aloft/onboard/lever_arm_estimate.hpp"
 #include "diagnose/1_input/body_kinematics.hpp"
 #include "diagnose/2_model/printf_text.hpp"
 

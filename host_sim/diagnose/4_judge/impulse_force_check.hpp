@@ -40,7 +40,7 @@ struct ImpulseForce {
 
 // The accelerometer about the impulse time; none when the flight has no accelerometer or
 // is too short for windows elsewhere. r is the body file's imu.position, else a
-// least-squares fit over the flight (aloft/lever_arm_estimate.hpp).
+// least-squares fit over the flight (aloft/onboard/lever_arm_estimate.hpp).
 std::optional<ImpulseForce> impulse_force(const Flight& flight, double impulse_time_s);
 
 // For each impulse of the verdict: a note of what the accelerometer shows; where it shows

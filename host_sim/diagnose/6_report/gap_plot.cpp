@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "aloft/deviation.hpp"
+#include "aloft/dynamics/deviation.hpp"
 #include "common/commands.hpp"
 #include "diagnose/6_report/panel_figure.hpp"
 #include "diagnose/6_report/session_plot.hpp"

@@ -2,7 +2,7 @@
 // repeats in double precision: both must agree for the comparison test to mean anything.
 #pragma once
 
-#include "aloft/onboard_check.hpp"
+#include "aloft/onboard/onboard_check.hpp"
 
 namespace aloft_example {
 

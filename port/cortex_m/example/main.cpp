@@ -16,7 +16,7 @@
 #include "recorded_flight.hpp"
 
 #if !defined(ALOFT_EXAMPLE_WITHOUT_ALOFT)
-#include "aloft/onboard_check.hpp"
+#include "aloft/onboard/onboard_check.hpp"
 #endif
 
 namespace {

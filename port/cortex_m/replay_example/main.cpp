@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "aloft/onboard_pipeline.hpp"
+#include "aloft/onboard/onboard_pipeline.hpp"
 #include "aloft_port/report_writer.hpp"
 #include "flight_lines.hpp"
 #include "stored_recording.hpp"

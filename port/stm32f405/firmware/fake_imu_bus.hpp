@@ -4,7 +4,7 @@
 // check -> result) runs on known data under QEMU.
 #pragma once
 
-#include "aloft/imu_bus.hpp"
+#include "aloft/sensor/imu_bus.hpp"
 
 namespace aloft_stm32f405 {
 

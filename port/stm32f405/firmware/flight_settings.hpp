@@ -4,7 +4,7 @@
 // build checks and decomposes it (flight_inertia below).
 #pragma once
 
-#include "aloft/onboard_pipeline.hpp"
+#include "aloft/onboard/onboard_pipeline.hpp"
 
 namespace aloft_stm32f405 {
 

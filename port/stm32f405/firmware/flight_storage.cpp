@@ -2,8 +2,8 @@
 
 #include <optional>
 
-#include "aloft/flight_record_from_result.hpp"
-#include "aloft/record_ring.hpp"
+#include "aloft/records/flight_record_from_result.hpp"
+#include "aloft/records/record_ring.hpp"
 #include "flight_settings.hpp"
 
 namespace aloft_stm32f405 {

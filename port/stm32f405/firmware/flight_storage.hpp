@@ -1,14 +1,14 @@
 // The firmware's flight records: one per finished flight, appended to a record ring
-// (aloft/record_ring.hpp) on the block device the image gives it — the STM32F405's
+// (aloft/records/record_ring.hpp) on the block device the image gives it — the STM32F405's
 // internal flash on a board (../internal_flash.hpp), the RAM fake under QEMU, which does
 // not model the flash interface. Each record carries the hashes of the tensor and the
-// settings it was checked with (aloft/flight_record_from_result.hpp).
+// settings it was checked with (aloft/records/flight_record_from_result.hpp).
 #pragma once
 
 #include <cstdint>
 
-#include "aloft/block_device.hpp"
-#include "aloft/onboard_pipeline.hpp"
+#include "aloft/records/block_device.hpp"
+#include "aloft/onboard/onboard_pipeline.hpp"
 
 namespace aloft_stm32f405 {
 

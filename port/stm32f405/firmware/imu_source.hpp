@@ -1,13 +1,13 @@
 // Where the firmware's samples come from: the ICM-42688-P behind an aloft::ImuBus (SPI1
 // on the board, a fake chip in the replay image), through the board-independent driver
-// (aloft/icm42688p_driver.hpp) at its default settings: 1 kHz, time stamps on the PLL.
+// (aloft/sensor/icm42688p_driver.hpp) at its default settings: 1 kHz, time stamps on the PLL.
 #pragma once
 
 #include <cstdint>
 
-#include "aloft/icm42688p_driver.hpp"
-#include "aloft/imu_bus.hpp"
-#include "aloft/imu_sample.hpp"
+#include "aloft/sensor/icm42688p_driver.hpp"
+#include "aloft/sensor/imu_bus.hpp"
+#include "aloft/sensor/imu_sample.hpp"
 
 namespace aloft_stm32f405 {
 

@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "aloft/inertia_tensor.hpp"
+#include "aloft/dynamics/inertia_tensor.hpp"
 #include "icm42688p_packet_encoder.hpp"
 
 namespace aloft_stm32f405 {

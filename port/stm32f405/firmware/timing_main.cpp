@@ -4,7 +4,7 @@
 // tumbling), with the SysTick counts that measure_footprint.cmake converts to
 // instructions.
 //
-// The samples come through the ICM-42688-P driver (aloft/icm42688p_driver.hpp) polling
+// The samples come through the ICM-42688-P driver (aloft/sensor/icm42688p_driver.hpp) polling
 // the tests' fake chip (port/fakes/fake_icm42688p.hpp), which makes the throw's packets:
 // each loop step moves the chip's clock by one period (one packet) and polls once.
 //
@@ -17,7 +17,7 @@
 #include <optional>
 
 #include "../../cortex_m/icount_calibration.hpp"
-#include "aloft/icm42688p_driver.hpp"
+#include "aloft/sensor/icm42688p_driver.hpp"
 #include "aloft_port/port.hpp"
 #include "aloft_port/report_writer.hpp"
 #include "fake_icm42688p.hpp"

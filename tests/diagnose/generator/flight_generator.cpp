@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "aloft/inertia_tensor.hpp"
+#include "aloft/dynamics/inertia_tensor.hpp"
 #include "body_catalogue.hpp"
 #include "low_pass.hpp"
 #include "perturbed_rigid_body.hpp"

@@ -13,7 +13,7 @@
 #include <set>
 #include <sstream>
 
-#include "aloft/rk4_integrator.hpp"
+#include "aloft/dynamics/rk4_integrator.hpp"
 #include "body_catalogue.hpp"
 #include "common/body_file.hpp"
 #include "flight_files.hpp"

@@ -1,7 +1,7 @@
 // `inertia_axes`: the principal axes are rotated from nominal. theta = d, a rotation
 // vector (rad, body axes): I = R(d) I R(d)^T. From a gyro alone it is the same as a
 // rotated sensor (SPEC §4): a rotated tensor and a rotated sensor give the same readings.
-#include "aloft/rotation.hpp"
+#include "aloft/dynamics/rotation.hpp"
 #include "diagnose/2_model/canonical_rotation.hpp"
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/printf_text.hpp"

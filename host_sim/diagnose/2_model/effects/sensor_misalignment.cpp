@@ -1,7 +1,7 @@
 // `sensor_misalignment`: the sensor axes are rotated from the body axes. theta = m, a
 // rotation vector (rad): sensor->body becomes q_imu * exp(m). From a gyro alone it is the
 // same as rotated principal axes (SPEC §4).
-#include "aloft/rotation.hpp"
+#include "aloft/dynamics/rotation.hpp"
 #include "diagnose/2_model/canonical_rotation.hpp"
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/printf_text.hpp"

@@ -1,0 +1,135 @@
+// The accelerometer's position r over a recording, flight by flight (the least squares
+// themselves: aloft/onboard/lever_arm_estimate.hpp). Each flight's torque-free samples are fitted;
+// a flight's fit joins the recording's estimate, which the following flights use like a
+// given r, only when it can be trusted:
+//  - the flight turned at least `estimate_min_turn_rad`: a world-fixed hand force turns in
+//    body axes and cannot then be absorbed by a body-fixed r;
+//  - |r| is within the bound on an IMU inside the body, and the fit's rms residual is below
+//    the free-flight floor;
+//  - its two halves (alternating blocks of `half_block_samples`) agree within
+//    `halves_agree_m` + `halves_agree_relative` |r|.
+// Within a flight, a given or earlier r gives way to the flight's own fit after
+// `given_gives_way_after` samples, or after `missed_gives_way_after` when the release was
+// found with a fitted r (the given one missed it).
+#pragma once
+
+#include <cstdint>
+
+#include "aloft/cold_path.hpp"
+#include "aloft/onboard/lever_arm_estimate.hpp"
+
+namespace aloft {
+
+template <typename Scalar>
+struct LeverArmEstimatorSettings {
+  Scalar estimate_min_turn_rad = Scalar(2);     // a flight's r fit joins the estimate past this turn
+  std::uint16_t half_block_samples = 16;        // the two halves alternate in blocks this long
+  Scalar halves_agree_m = Scalar(0.005);        // the halves' r agree within this
+  Scalar halves_agree_relative = Scalar(0.25);  // plus this fraction of |r|
+  // A given r gives way to the flight's fit after this many samples: enough that r over
+  // 16 ms at 4 kHz is no worse than a ruler's few millimetres.
+  std::uint16_t given_gives_way_after = 64;
+  std::uint16_t missed_gives_way_after = 8;  // the release's fit missed the given r: sooner
+  // Once the flight's fit has taken over, its r is solved anew every this many samples,
+  // not at every one (at every one while the release is still on probation, where the
+  // release window dates it with that r): a 3x3 solve costs about 100 instructions (of a 2,500 budget per
+  // sample on a Cortex-M4F), while one more sample changes a least-squares fit over the
+  // 8 to 64 or more before it little. The release and landing figures of
+  // tests/host/test_release_detection.cpp were measured with it.
+  std::uint16_t solve_every_samples = 8;
+};
+
+// Limits the estimator shares with the release detector (ReleaseDetectorSettings).
+template <typename Scalar>
+struct LeverArmLimits {
+  Scalar ridge_rad_s2 = Scalar(10);       // aloft/onboard/lever_arm_estimate.hpp
+  Scalar max_lever_arm_m = Scalar(0.15);  // |r| beyond this is not an IMU inside the body
+  Scalar rms_limit_m_s2 = Scalar(2);      // a trusted fit's rms residual (the free-flight floor)
+};
+
+// What a finished flight says about r.
+template <typename Scalar>
+struct LeverArmReport {
+  Vec3<Scalar> r = Vec3<Scalar>::Zero();  // the given r, the recording's estimate or this flight's fit
+  bool estimated = false;
+  Scalar fit_rms_m_s2 = Scalar(0);  // rms of |a - K r| over the flight with that r
+};
+
+template <typename Scalar>
+class LeverArmEstimator {
+ public:
+  // The settings are held, not copied (a pipeline's parts share its one copy): they must
+  // outlive the estimator.
+  LeverArmEstimator(const LeverArmEstimatorSettings<Scalar>& settings, const LeverArmLimits<Scalar>& limits)
+      : settings_(settings), limits_(limits) {}
+  LeverArmEstimator(LeverArmEstimatorSettings<Scalar>&&, const LeverArmLimits<Scalar>&) = delete;
+
+  // A flight starts; `release_missed_given_r`: its release was found with a fitted r.
+  void start_flight(bool release_missed_given_r) {
+    release_missed_given_r_ = release_missed_given_r;
+    flight_fit_.reset();
+    half_fit_[0].reset();
+    half_fit_[1].reset();
+  }
+
+  // One torque-free sample's terms. True when the flight's own fit has taken over and its
+  // r is due to be solved anew (flight_r() is then the r to judge the flight with): at
+  // the sample it takes over, then every `solve_every_samples`.
+  bool add(const LeverArmTerms<Scalar>& terms) {
+    const std::uint32_t n = flight_fit_.count() + 1;  // the flight fit's count with this sample
+    LeverArmFit<Scalar>::add_to_both(flight_fit_, half_fit_[(n / settings_.half_block_samples) % 2u], terms);
+    const std::uint32_t every = settings_.solve_every_samples > 0 ? settings_.solve_every_samples : 1u;
+    return taken_over() && (flight_fit_.count() - gives_way_after()) % every == 0;
+  }
+  // The flight's own fit judges the flight from now on.
+  bool taken_over() const { return flight_fit_.count() >= gives_way_after(); }
+  Vec3<Scalar> flight_r() const { return flight_fit_.solve(limits_.ridge_rad_s2); }
+
+  // The flight ended: what it says about r (`given`: the body file's r, or null), and the
+  // recording's estimate updated when the flight's fit can be trusted (see the file comment).
+  ALOFT_COLD LeverArmReport<Scalar> finish_flight(const Vec3<Scalar>* given, Scalar turn_angle_rad) {
+    LeverArmReport<Scalar> out;
+    if (given != nullptr) {
+      out.r = *given;
+      out.fit_rms_m_s2 = flight_fit_.rms_residual(*given);
+      return out;
+    }
+    const Vec3<Scalar> r = flight_r();
+    if (trusted(r, turn_angle_rad)) {
+      estimate_fit_.merge(flight_fit_);
+      estimate_ = estimate_fit_.solve(limits_.ridge_rad_s2);
+      has_estimate_ = true;
+    }
+    out.r = has_estimate_ ? estimate_ : r;
+    out.estimated = true;
+    out.fit_rms_m_s2 = flight_fit_.rms_residual(out.r);
+    return out;
+  }
+
+  bool has_estimate() const { return has_estimate_; }
+  const Vec3<Scalar>& estimate() const { return estimate_; }
+
+ private:
+  std::uint32_t gives_way_after() const {
+    return release_missed_given_r_ ? settings_.missed_gives_way_after : settings_.given_gives_way_after;
+  }
+
+  bool trusted(const Vec3<Scalar>& r, Scalar turn_angle_rad) const {
+    const Vec3<Scalar> ra = half_fit_[0].solve(limits_.ridge_rad_s2);
+    const Vec3<Scalar> rb = half_fit_[1].solve(limits_.ridge_rad_s2);
+    const Scalar agree = settings_.halves_agree_m + settings_.halves_agree_relative * r.norm();
+    return turn_angle_rad >= settings_.estimate_min_turn_rad && r.norm() <= limits_.max_lever_arm_m &&
+           flight_fit_.rms_residual(r) <= limits_.rms_limit_m_s2 && (ra - rb).norm() <= agree;
+  }
+
+  const LeverArmEstimatorSettings<Scalar>& settings_;
+  LeverArmLimits<Scalar> limits_;
+  LeverArmFit<Scalar> flight_fit_;
+  LeverArmFit<Scalar> half_fit_[2];
+  LeverArmFit<Scalar> estimate_fit_;
+  Vec3<Scalar> estimate_ = Vec3<Scalar>::Zero();
+  bool has_estimate_ = false;
+  bool release_missed_given_r_ = false;
+};
+
+}  // namespace aloft

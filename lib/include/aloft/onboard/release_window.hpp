@@ -1,0 +1,203 @@
+// Release as a test over a window, not over single samples. The sample-by-sample detector
+// (aloft/onboard/release_detector.hpp) proposes a release; the pipeline then keeps the flight on
+// probation for `window_us` and dates the release anew from what the window shows:
+//  - The samples are summed in blocks of about `block_us` (at least one sample each): a
+//    block's mean specific force and mean lever-arm matrix K (aloft/dynamics/free_flight_residual.hpp).
+//    A block mean cancels what a single sample cannot tell from a hand: a body's
+//    structural modes ring at 100-800 Hz, and over 5 ms their mean is at most a fifth of
+//    their amplitude (|sinc| past its first zero), where a hand's force, slow in body
+//    axes, passes whole.
+//  - One r explains the newest `fit_blocks` blocks (the surest free flight): fitted within
+//    `given_r_tolerance_m` of a given r, or within `max_lever_arm_m` of the centre of mass
+//    without one (aloft/onboard/lever_arm_estimate.hpp, over block means). What those blocks
+//    leave, their mean residual vector, is the flight's own level (air drag, accelerometer
+//    bias: constant over 25 ms in body axes to a tenth of a m/s²).
+//  - A block is free when its mean residual is within `block_limit_floor_m_s2` plus
+//    `block_limit_relative` of its |K r| of that level, and at most half its samples carry
+//    a torque. The release is the first sample of the trailing run of free blocks: later
+//    than proposed when a slow let-go still pushed (its force is slow, and stays in the
+//    block mean), earlier when a ringing body broke the sample-by-sample run.
+//  - A run shorter than `min_free_us` is no flight yet: the proposal is withdrawn.
+// The proposed release is kept (it is dated more finely than a block's grid) unless the
+// window's lies more than one block after it, or more than two blocks before it (a proposal
+// held back by ringing; closer than that, the block grid is no better than the proposal),
+// and at rates where a block holds fewer than `min_block_samples` samples.
+#pragma once
+
+#include <cstdint>
+
+#include "aloft/cold_path.hpp"
+#include "aloft/onboard/lever_arm_estimate.hpp"
+
+namespace aloft {
+
+template <typename Scalar>
+struct ReleaseWindowSettings {
+  // Free flight over this long after the proposed release before the release is dated (µs):
+  // about the last 20-30 ms over which a real hand lets go.
+  std::uint32_t window_us = 25000;
+  // Block span (µs): 5 ms is one period of the lowest structural mode (200 Hz and up cancel
+  // in the mean, 100 Hz is halved), and fine enough to date a release to a few ms.
+  std::uint32_t block_us = 5000;
+  std::uint16_t fit_blocks = 3;  // the newest blocks that set r and the flight's level
+  // A block's mean residual off the flight's level that is still free flight (m/s²):
+  // floor + relative |K r|. The floor: white noise averaged over a block (< 0.1), a mode's
+  // leak through the block mean, the drag turning with the body (< 0.1 over 25 ms); the
+  // relative part: scale errors of 2 % and an r off by a millimetre. Chosen on the tuned
+  // seed set of tests/host/test_release_detection.cpp, "real hands", reported on others.
+  Scalar block_limit_floor_m_s2 = Scalar(0.8);
+  Scalar block_limit_relative = Scalar(0.02);
+  std::uint32_t min_free_us = 15000;  // a shorter trailing run of free blocks: no flight yet
+  // Blocks of fewer samples (under 800 Hz at 5 ms) keep the sample-by-sample release: the
+  // anti-alias filter's tail spans a block there (tests/host/test_release_detection.cpp,
+  // 100-700 Hz: dated by blocks, 25-88 % came within 10 ms, against 98-100 %).
+  std::uint16_t min_block_samples = 4;
+};
+
+// Where a lever arm may lie: a ball (about a given r, or about the centre of mass), and
+// the r to use when the window's fit leaves it.
+template <typename Scalar>
+struct LeverArmBall {
+  Vec3<Scalar> centre = Vec3<Scalar>::Zero();
+  Scalar radius_m = Scalar(0);
+  Vec3<Scalar> otherwise = Vec3<Scalar>::Zero();
+  Scalar ridge_rad_s2 = Scalar(10);  // aloft/onboard/lever_arm_estimate.hpp
+};
+
+// What the window made of a proposed release.
+template <typename Scalar>
+struct WindowedRelease {
+  bool decided = false;     // false: the window is not yet full
+  bool free = false;        // decided: free flight for at least min_free_us
+  std::uint32_t index = 0;  // the release's first sample
+  std::uint64_t release_us = 0;
+};
+
+template <typename Scalar>
+class ReleaseWindow {
+ public:
+  // The window's 5 closed blocks past the proposal, its own block, the open one, and 5
+  // before it: a proposal held back by ringing can be moved up to 25 ms earlier.
+  static constexpr int ring_blocks = 12;
+
+  // The settings are held, not copied (a pipeline's parts share its one copy): they must
+  // outlive the window.
+  explicit ReleaseWindow(const ReleaseWindowSettings<Scalar>& settings) : settings_(settings) {}
+  explicit ReleaseWindow(ReleaseWindowSettings<Scalar>&&) = delete;
+
+  // Sample i (stamp t_us, kinematics k), with the gyro's verdict on torque.
+  ALOFT_OUT_OF_LINE void add(std::uint32_t i, std::uint64_t t_us, const BodyKinematics<Scalar>& k,
+                             bool torque_free) {
+    Block* b = &blocks_[newest_ % ring_blocks];
+    if (count_ == 0) {
+      b->start(i, t_us);
+      count_ = 1;
+    } else if (static_cast<std::uint32_t>(t_us) - b->start_low_us >= settings_.block_us || i != next_index_) {
+      ++newest_;
+      if (count_ < ring_blocks) ++count_;
+      b = &blocks_[newest_ % ring_blocks];
+      b->start(i, t_us);
+    }
+    b->k_sum += lever_arm_matrix(k.w, k.w_dot);
+    b->a_sum += k.a;
+    next_index_ = i + 1;
+    ++b->samples;
+    if (!torque_free) ++b->torque_samples;
+  }
+
+  // The release proposed at proposed_us (sample proposed_index), judged once the closed
+  // blocks reach window_us past it, with r fitted within `ball`.
+  ALOFT_COLD WindowedRelease<Scalar> date(std::uint32_t proposed_index, std::uint64_t proposed_us,
+                                          const LeverArmBall<Scalar>& ball) const {
+    WindowedRelease<Scalar> out;
+    if (count_ < 2u + settings_.fit_blocks) return out;
+    // Stamps as their low 32 bits (a block's), spans as differences: exact below 35 min.
+    const std::uint32_t end_low = blocks_[newest_ % ring_blocks].start_low_us;  // the open block's
+    const auto proposed_low = static_cast<std::uint32_t>(proposed_us);
+    if (static_cast<std::int32_t>(end_low - proposed_low) < static_cast<std::int32_t>(settings_.window_us)) {
+      return out;
+    }
+    out.decided = true;
+    const Vec3<Scalar> r = window_r(ball);
+    const Vec3<Scalar> level = flight_level(r);
+    std::uint32_t run = 0;  // closed blocks in the trailing free run
+    while (run + 1u < count_ && block_free(closed(run), r, level)) ++run;
+    if (run == 0u) return out;
+    const Block& first = closed(run - 1u);
+    if (end_low - first.start_low_us < settings_.min_free_us) return out;
+    out.free = true;
+    // Blocks of few samples date no better than the sample-by-sample rules (file comment).
+    const auto after_us = static_cast<std::int32_t>(first.start_low_us - proposed_low);
+    const auto block_us = static_cast<std::int32_t>(settings_.block_us);
+    const bool moved =
+        (after_us > block_us || after_us < -2 * block_us) && first.samples >= settings_.min_block_samples;
+    out.index = moved ? first.first_index : proposed_index;
+    out.release_us =
+        moved ? static_cast<std::uint64_t>(static_cast<std::int64_t>(proposed_us) + after_us) : proposed_us;
+    return out;
+  }
+
+ private:
+  // Left uninitialised until start(): a pipeline in static memory costs no start-up code.
+  struct Block {
+    void start(std::uint32_t i, std::uint64_t t_us) {
+      k_sum.setZero();
+      a_sum.setZero();
+      start_low_us = static_cast<std::uint32_t>(t_us);
+      first_index = i;
+      samples = 0;
+      torque_samples = 0;
+    }
+    Mat3<Scalar> k_sum;
+    Vec3<Scalar> a_sum;
+    std::uint32_t start_low_us;  // the first sample's stamp, low 32 bits
+    std::uint32_t first_index;
+    std::uint16_t samples;
+    std::uint16_t torque_samples;
+  };
+
+  // The n-th newest closed block (0: the newest; the open block is not yet closed).
+  const Block& closed(std::uint32_t n) const { return blocks_[(newest_ - 1u - n) % ring_blocks]; }
+
+  // The mean residual vector of a block for lever arm r.
+  static Vec3<Scalar> mean_residual(const Block& b, const Vec3<Scalar>& r) {
+    return (b.a_sum - b.k_sum * r) / static_cast<Scalar>(b.samples);
+  }
+
+  ALOFT_COLD Vec3<Scalar> window_r(const LeverArmBall<Scalar>& ball) const {
+    LeverArmFit<Scalar> fit;
+    for (std::uint32_t n = 0; n < settings_.fit_blocks; ++n) {
+      const Block& b = closed(n);
+      const Scalar samples = static_cast<Scalar>(b.samples);
+      fit.add_mean(b.k_sum / samples, b.a_sum / samples, b.samples);
+    }
+    const Vec3<Scalar> r = fit.solve(ball.ridge_rad_s2);
+    return (r - ball.centre).squaredNorm() <= ball.radius_m * ball.radius_m ? r : ball.otherwise;
+  }
+
+  Vec3<Scalar> flight_level(const Vec3<Scalar>& r) const {
+    Vec3<Scalar> sum = Vec3<Scalar>::Zero();
+    Scalar samples = Scalar(0);
+    for (std::uint32_t n = 0; n < settings_.fit_blocks; ++n) {
+      const Block& b = closed(n);
+      sum += b.a_sum - b.k_sum * r;
+      samples += static_cast<Scalar>(b.samples);
+    }
+    return sum / samples;
+  }
+
+  bool block_free(const Block& b, const Vec3<Scalar>& r, const Vec3<Scalar>& level) const {
+    if (2u * b.torque_samples > b.samples) return false;
+    const Scalar kr = (b.k_sum * r).norm() / static_cast<Scalar>(b.samples);
+    const Scalar limit = settings_.block_limit_floor_m_s2 + settings_.block_limit_relative * kr;
+    return (mean_residual(b, r) - level).squaredNorm() <= limit * limit;
+  }
+
+  const ReleaseWindowSettings<Scalar>& settings_;
+  Block blocks_[ring_blocks];
+  std::uint32_t newest_ = 0;      // the open block: blocks_[newest_ % ring_blocks]
+  std::uint32_t count_ = 0;       // blocks held, the open one included
+  std::uint32_t next_index_ = 0;  // the index the open block takes next (another starts a block)
+};
+
+}  // namespace aloft
