@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# No function in host_sim/ longer than 80 lines (issue 30, item 3): a function that long
-# does more than one thing, and its parts want names of their own.
+# No function in lib/, port/, host_sim/ or tests/ longer than 80 lines: a function that
+# long does more than one thing, and its parts want names of their own.
 #
 # A heuristic, not a parser: comments, strings, character literals and preprocessor lines
 # are skipped, and braces are matched. A brace opened where only namespaces, classes and
@@ -17,10 +17,13 @@
 set -euo pipefail
 src=${1:-$(cd "$(dirname "$0")/../.." && pwd)}
 max=${2:-80}
-[ -d "$src/host_sim" ] || { echo "check_function_length: $src/host_sim: absent" >&2; exit 2; }
+folders=(lib port host_sim tests)
+for folder in "${folders[@]}"; do
+  [ -d "$src/$folder" ] || { echo "check_function_length: $src/$folder: absent" >&2; exit 2; }
+done
 cd "$src"
 
-find host_sim -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \) | sort | xargs awk -v max="$max" '
+find "${folders[@]}" -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.c' -o -name '*.h' \) | sort | xargs awk -v max="$max" '
 function reset_header() { header = ""; header_line = 0 }
 # The header without template parameter lists, so that "template <class T>" is no class.
 function without_templates(h,    out, i, c, depth, rest) {

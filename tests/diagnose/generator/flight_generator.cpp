@@ -170,6 +170,43 @@ struct InjectedEffect {
   bool full_size = true;  // false: this throw cannot show the drawn magnitude
 };
 
+// Each principal moment off by 5-20 % (random sign), rescaled to the nominal sum, until
+// one is off by >= 5 % and the body stays physical.
+Eigen::Vector3d draw_wrong_moments(const Principal& p, const BodyModel& body, SeededRandom& rng) {
+  Eigen::Vector3d moments;
+  for (int attempt = 0;; ++attempt) {
+    if (attempt > 10000) throw std::logic_error("no valid moment perturbation for " + body.name);
+    for (int i = 0; i < 3; ++i) moments(i) = p.moments(i) * (1.0 + rng.signed_uniform(0.05, 0.20));
+    moments *= p.moments.sum() / moments.sum();
+    const double largest_change = (moments.cwiseQuotient(p.moments).array() - 1.0).abs().maxCoeff();
+    // Keep 0.5 % of slack on the triangle inequality so the body stays physical.
+    const double slack = 0.005 * moments.sum();
+    const bool physical = moments(0) + slack <= moments(1) + moments(2) &&
+                          moments(1) + slack <= moments(0) + moments(2) &&
+                          moments(2) + slack <= moments(0) + moments(1);
+    if (largest_change >= 0.05 && physical) return moments;
+  }
+}
+
+// The effects that live in the sensor model (is_sensor_effect): the physics stays nominal.
+void draw_sensor_effect(const std::string& effect, const Principal& p, SeededRandom& rng, InjectedEffect& e) {
+  if (effect == "gyro_bias") {
+    e.bias = rng.uniform(0.05, 0.3) * rng.unit_vector();
+    e.params = {{"bias_rad_s", to_json(e.bias)}};
+  } else if (effect == "gyro_scale") {
+    do {
+      for (int i = 0; i < 3; ++i) e.scale_error(i) = rng.signed_uniform(0.02, 0.08);
+    } while (e.scale_error.maxCoeff() - e.scale_error.minCoeff() < 0.03);
+    e.params = {{"scale_error", to_json(e.scale_error)}};
+  } else if (effect == "sensor_misalignment") {
+    e.imu_to_body = draw_misrotation(p, rng);
+    e.params = {{"angle_deg", rotation_angle_deg(e.imu_to_body)}, {"rotation", to_json(e.imu_to_body)}};
+  } else if (effect == "clock_drift") {
+    e.rate_error = rng.signed_uniform(0.01, 0.05);
+    e.params = {{"rate_error", e.rate_error}};
+  }
+}
+
 InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, const Throw& thrown,
                            const FlightSpec& spec, SeededRandom& rng) {
   InjectedEffect e;
@@ -181,20 +218,10 @@ InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, con
   const double energy0 = 0.5 * w0.dot(l0);
 
   if (effect == "none") {
+  } else if (is_sensor_effect(effect)) {
+    draw_sensor_effect(effect, p, rng, e);
   } else if (effect == "inertia_moments") {
-    Eigen::Vector3d moments;
-    for (int attempt = 0;; ++attempt) {
-      if (attempt > 10000) throw std::logic_error("no valid moment perturbation for " + body.name);
-      for (int i = 0; i < 3; ++i) moments(i) = p.moments(i) * (1.0 + rng.signed_uniform(0.05, 0.20));
-      moments *= p.moments.sum() / moments.sum();
-      const double largest_change = (moments.cwiseQuotient(p.moments).array() - 1.0).abs().maxCoeff();
-      // Keep 0.5 % of slack on the triangle inequality so the body stays physical.
-      const double slack = 0.005 * moments.sum();
-      const bool physical = moments(0) + slack <= moments(1) + moments(2) &&
-                            moments(1) + slack <= moments(0) + moments(2) &&
-                            moments(2) + slack <= moments(0) + moments(1);
-      if (largest_change >= 0.05 && physical) break;
-    }
+    const Eigen::Vector3d moments = draw_wrong_moments(p, body, rng);
     e.physics.inertia_kg_m2 = p.axes * moments.asDiagonal() * p.axes.transpose();
     e.params = {{"principal_kg_m2", to_json(moments)},
                 {"principal_nominal_kg_m2", to_json(p.moments)},
@@ -236,20 +263,6 @@ InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, con
         rng.uniform(spec.rotor_fraction_low, spec.rotor_fraction_high) * typical_l * rng.unit_vector();
     e.params = {{"h_N_m_s", to_json(e.physics.internal_momentum_N_m_s)},
                 {"h_fraction_of_L", e.physics.internal_momentum_N_m_s.norm() / l0.norm()}};
-  } else if (effect == "gyro_bias") {
-    e.bias = rng.uniform(0.05, 0.3) * rng.unit_vector();
-    e.params = {{"bias_rad_s", to_json(e.bias)}};
-  } else if (effect == "gyro_scale") {
-    do {
-      for (int i = 0; i < 3; ++i) e.scale_error(i) = rng.signed_uniform(0.02, 0.08);
-    } while (e.scale_error.maxCoeff() - e.scale_error.minCoeff() < 0.03);
-    e.params = {{"scale_error", to_json(e.scale_error)}};
-  } else if (effect == "sensor_misalignment") {
-    e.imu_to_body = draw_misrotation(p, rng);
-    e.params = {{"angle_deg", rotation_angle_deg(e.imu_to_body)}, {"rotation", to_json(e.imu_to_body)}};
-  } else if (effect == "clock_drift") {
-    e.rate_error = rng.signed_uniform(0.01, 0.05);
-    e.params = {{"rate_error", e.rate_error}};
   } else {
     throw std::invalid_argument("unknown effect '" + effect + "'");
   }
@@ -377,6 +390,232 @@ Eigen::Vector3d blow_acceleration(const FlightPhysics& physics, const BodyModel&
   return P / body.mass_kg * (kPi / (2.0 * d)) * std::sin(kPi * u);
 }
 
+void check_spec(const FlightSpec& spec) {
+  if (!known_effect(spec.effect)) throw std::invalid_argument("unknown effect '" + spec.effect + "'");
+  if (!spec.second_effect.empty() && !known_effect(spec.second_effect)) {
+    throw std::invalid_argument("unknown effect '" + spec.second_effect + "'");
+  }
+  if (spec.data == DataKind::markers &&
+      (is_sensor_effect(spec.effect) || is_sensor_effect(spec.second_effect))) {
+    throw std::invalid_argument("sensor effect '" + spec.effect + "' needs IMU data");
+  }
+}
+
+bool is_compound(const FlightSpec& spec) {
+  return !spec.second_effect.empty() && spec.second_effect != "none";
+}
+
+// The spec's effect (and its second one, laid over it) drawn for `thrown`.
+InjectedEffect draw_effects(const FlightSpec& spec, const BodyModel& body, const Throw& thrown,
+                            SeededRandom& effect_rng) {
+  InjectedEffect e = draw_effect(spec.effect, body, thrown, spec, effect_rng);
+  if (!is_compound(spec)) return e;
+  const InjectedEffect second = draw_effect(spec.second_effect, body, thrown, spec, effect_rng);
+  json both = json::object();
+  both[spec.effect] = e.params;
+  both[spec.second_effect] = second.params;
+  e = combine(e, second, spec.second_effect, body.inertia_kg_m2);
+  e.params = both;
+  return e;
+}
+
+struct ThrownEffect {
+  Throw thrown;
+  InjectedEffect effect;
+};
+
+ThrownEffect draw_throw_and_effects(const FlightSpec& spec, const BodyModel& body, SeededRandom& throw_rng,
+                                    SeededRandom& effect_rng) {
+  ThrownEffect out;
+  out.thrown = draw_throw(body, spec, throw_rng);
+  out.effect = draw_effects(spec, body, out.thrown, effect_rng);
+  // Internal damping shows only when the body rate turns within the body fast enough;
+  // a throw that cannot lose the drawn energy fraction is thrown again (up to 20
+  // times: a near-symmetric body may never manage, and then keeps its last throw).
+  for (int retry = 0; !out.effect.full_size && retry < 20; ++retry) {
+    out.thrown = draw_throw(body, spec, throw_rng);
+    out.effect = draw_effects(spec, body, out.thrown, effect_rng);
+  }
+  return out;
+}
+
+// The flight as it truly went, at each data sample.
+struct TrueFlight {
+  std::vector<double> recorded_s;  // on the sensor's clock: recorded = true × (1 + eps)
+  std::vector<double> true_s;
+  std::vector<FlightState> states;
+};
+
+TrueFlight fly(const FlightSpec& spec, const Throw& thrown, const InjectedEffect& effect,
+               const PerturbedRigidBody& dynamics) {
+  TrueFlight flight;
+  const double rate = spec.data == DataKind::imu ? spec.imu_rate_hz : spec.marker_rate_hz;
+  const int count = static_cast<int>(std::floor(thrown.duration_s * rate + 1e-9)) + 1;
+  flight.recorded_s.resize(static_cast<std::size_t>(count));
+  flight.true_s.resize(flight.recorded_s.size());
+  for (int k = 0; k < count; ++k) {
+    flight.recorded_s[std::size_t(k)] = k / rate;
+    flight.true_s[std::size_t(k)] = flight.recorded_s[std::size_t(k)] / (1.0 + effect.rate_error);
+  }
+  FlightState initial;
+  initial.orientation = thrown.orientation0;
+  initial.omega_body = thrown.omega0_body;
+  initial.rotor_omega_body = thrown.omega0_body;  // the rotor co-rotates at release
+  flight.states = dynamics.sample(initial, flight.true_s);
+  return flight;
+}
+
+std::vector<TrueSample> true_samples_of(const FlightSpec& spec, const Throw& thrown, const TrueFlight& flight,
+                                        const PerturbedRigidBody& dynamics) {
+  std::vector<TrueSample> samples(flight.states.size());
+  for (std::size_t k = 0; k < flight.states.size(); ++k) {
+    TrueSample& s = samples[k];
+    const FlightState& state = flight.states[k];
+    s.t_s = flight.true_s[k];
+    s.orientation = state.orientation;
+    s.omega_body = state.omega_body;
+    s.kinetic_energy_J = dynamics.kinetic_energy(state);
+    s.angular_momentum_world = state.orientation * dynamics.angular_momentum(state);
+    if (spec.data == DataKind::markers) {
+      s.com_position_m = thrown.com0_m + thrown.velocity0_m_s * s.t_s + 0.5 * kGravity * s.t_s * s.t_s;
+    }
+  }
+  return samples;
+}
+
+// How big the dissipative effects turned out, from the truth, for reports and tests.
+void add_dissipation_measured(const FlightSpec& spec, const std::vector<TrueSample>& samples, json& params) {
+  if (is_compound(spec)) return;
+  if (spec.effect == "aero_torque") {
+    params["L_drop_fraction"] =
+        1.0 - samples.back().angular_momentum_world.norm() / samples.front().angular_momentum_world.norm();
+  }
+  if (spec.effect == "internal_damping") {
+    params["energy_loss_fraction"] = 1.0 - samples.back().kinetic_energy_J / samples.front().kinetic_energy_J;
+  }
+}
+
+// The gyro's readings in sensor axes, low-passed if the spec says so, with their noise;
+// returns the spread of the noise as it is in the readings.
+Eigen::Vector3d record_gyro(const FlightSpec& spec, const Throw& thrown, const InjectedEffect& effect,
+                            const TrueFlight& flight, SeededRandom& noise_rng, host::ImuLog& log) {
+  const double step_s = 1.0 / spec.imu_rate_hz;
+  const Eigen::Matrix3d body_to_sensor = effect.imu_to_body.conjugate().toRotationMatrix();
+  const Eigen::Vector3d gain = Eigen::Vector3d::Ones() + effect.scale_error;
+  // The filter is linear: the readings' noise is the filtered noise sequence, kept
+  // apart to measure its spread; filtering reading and noise separately adds up to
+  // filtering their sum.
+  LowPass signal_filter(spec.gyro_cutoff_hz, step_s), noise_filter(spec.gyro_cutoff_hz, step_s);
+  if (spec.gyro_cutoff_hz > 0.0) {
+    settle_on_motion_before(
+        signal_filter, effect.physics, thrown.omega0_body, spec.gyro_cutoff_hz, spec.imu_rate_hz,
+        [&](const Eigen::Vector3d& w) { return gain.cwiseProduct(body_to_sensor * w) + effect.bias; });
+  }
+  Eigen::Vector3d noise_squares = Eigen::Vector3d::Zero();
+  for (const FlightState& state : flight.states) {
+    const Eigen::Vector3d w_sensor = body_to_sensor * state.omega_body;
+    Eigen::Vector3d reading = gain.cwiseProduct(w_sensor) + effect.bias;
+    Eigen::Vector3d noise = noise_rng.normal_vector(spec.gyro_noise_rad_s);
+    if (spec.gyro_cutoff_hz > 0.0) {
+      reading = signal_filter(reading);
+      noise = noise_filter(noise);
+    }
+    noise_squares += noise.cwiseAbs2();
+    log.gyro_rad_s.push_back(reading + noise);
+  }
+  return (noise_squares / static_cast<double>(flight.states.size())).cwiseSqrt();
+}
+
+// Free fall: the specific force at the sensor is only its acceleration relative to the
+// centre of mass, w' × r + w × (w × r) (aerodynamic force neglected), and an impulse's blow.
+void record_accelerometer(const FlightSpec& spec, const BodyModel& body, const InjectedEffect& effect,
+                          const TrueFlight& flight, const PerturbedRigidBody& dynamics,
+                          SeededRandom& noise_rng, host::ImuLog& log) {
+  const Eigen::Matrix3d body_to_sensor = effect.imu_to_body.conjugate().toRotationMatrix();
+  const Eigen::Vector3d& r = body.imu_offset_m;
+  for (std::size_t k = 0; k < flight.states.size(); ++k) {
+    const Eigen::Vector3d& w = flight.states[k].omega_body;
+    const Eigen::Vector3d w_dot = dynamics.shell_angular_acceleration(flight.true_s[k], flight.states[k]);
+    const Eigen::Vector3d a =
+        w_dot.cross(r) + w.cross(w.cross(r)) + blow_acceleration(effect.physics, body, flight.true_s[k]);
+    log.accel_m_s2.push_back(body_to_sensor * a + noise_rng.normal_vector(spec.accel_noise_m_s2));
+  }
+}
+
+// Now and then one marker drops out for a few frames; never two at once, so at least
+// five markers are always visible.
+void occlude_markers(int marker_count, SeededRandom& noise_rng, host::MarkerTrial& trial) {
+  const int count = static_cast<int>(trial.positions_m.size());
+  std::vector<bool> busy(trial.positions_m.size(), false);
+  const int events = noise_rng.index(4);
+  for (int e = 0; e < events; ++e) {
+    const int marker = noise_rng.index(marker_count);
+    const int length = 2 + noise_rng.index(5);
+    const int start = noise_rng.index(count - length);
+    bool free = true;
+    for (int k = start; k < start + length; ++k) free = free && !busy[std::size_t(k)];
+    if (!free) continue;
+    for (int k = start; k < start + length; ++k) {
+      busy[std::size_t(k)] = true;
+      trial.positions_m[std::size_t(k)][std::size_t(marker)].setConstant(
+          std::numeric_limits<double>::quiet_NaN());
+    }
+  }
+}
+
+void record_markers(const FlightSpec& spec, const Throw& thrown, const TrueFlight& flight,
+                    const std::vector<TrueSample>& samples, SeededRandom& noise_rng,
+                    host::MarkerTrial& trial) {
+  trial.path = "markers.trc";
+  trial.format = "trc";
+  trial.units_in_file = "mm";
+  trial.rate_hz = spec.marker_rate_hz;
+  trial.time_s = flight.recorded_s;
+  for (std::size_t i = 0; i < thrown.markers_m.size(); ++i) {
+    trial.marker_names.push_back("M" + std::to_string(i + 1));
+  }
+  for (std::size_t k = 0; k < flight.states.size(); ++k) {
+    std::vector<Eigen::Vector3d> frame;
+    const Eigen::Matrix3d r = flight.states[k].orientation.toRotationMatrix();
+    for (const auto& m : thrown.markers_m) {
+      frame.push_back(samples[k].com_position_m + r * m + noise_rng.normal_vector(spec.marker_noise_m));
+    }
+    trial.positions_m.push_back(frame);
+  }
+  if (spec.occlusions) occlude_markers(static_cast<int>(thrown.markers_m.size()), noise_rng, trial);
+}
+
+FlightTruth truth_of(const FlightSpec& spec, const BodyModel& body, const Throw& thrown,
+                     const InjectedEffect& effect) {
+  FlightTruth t;
+  t.effect = spec.effect;
+  const Principal principal = principal_of(body.inertia_kg_m2);
+  const bool aligned = principal.axes.cwiseAbs().isApprox(Eigen::Matrix3d::Identity(), 1e-9) ||
+                       (principal.axes.cwiseAbs().array() > 1.0 - 1e-9).count() == 3;
+  const bool distinct = symmetry_axis_index(principal.moments, 1e-6) < 0 &&
+                        principal.moments(2) - principal.moments(0) > 1e-6 * principal.moments(2);
+  const bool mimics =
+      aligned && distinct && effect.imu_to_body.angularDistance(Eigen::Quaterniond::Identity()) < 1e-12;
+  t.equivalent = equivalent_class(spec.effect, spec.data, mimics);
+  if (spec.effect == "internal_momentum" && rotor_along_symmetry_axis(principal, effect.physics)) {
+    t.equivalent.push_back("inertia_moments");
+    std::sort(t.equivalent.begin(), t.equivalent.end());
+  }
+  t.effects = {spec.effect};
+  t.equivalents = {t.equivalent};
+  if (is_compound(spec)) {
+    t.effects.push_back(spec.second_effect);
+    t.equivalents.push_back(equivalent_class(spec.second_effect, spec.data, mimics));
+  }
+  t.params = effect.params;
+  t.onset_s = effect.onset_s;
+  t.omega0_body = thrown.omega0_body;
+  t.body = body.name;
+  t.kind = spec.data;
+  t.duration_s = thrown.duration_s;
+  return t;
+}
+
 }  // namespace
 
 const std::vector<std::string>& effect_names() {
@@ -399,40 +638,16 @@ bool is_sensor_effect(const std::string& effect) {
 const char* to_string(DataKind kind) { return kind == DataKind::imu ? "imu" : "mocap"; }
 
 GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
-  if (!known_effect(spec.effect)) throw std::invalid_argument("unknown effect '" + spec.effect + "'");
-  if (!spec.second_effect.empty() && !known_effect(spec.second_effect)) {
-    throw std::invalid_argument("unknown effect '" + spec.second_effect + "'");
-  }
-  if (spec.data == DataKind::markers &&
-      (is_sensor_effect(spec.effect) || is_sensor_effect(spec.second_effect))) {
-    throw std::invalid_argument("sensor effect '" + spec.effect + "' needs IMU data");
-  }
+  check_spec(spec);
   const BodyModel body = body_model(spec.body);
 
   const std::uint64_t throw_seed = spec.throw_seed != 0 ? spec.throw_seed : seed;
   SeededRandom throw_rng(stream_seed(throw_seed, Stream::throw_));
   SeededRandom effect_rng(stream_seed(seed, Stream::effect));
   SeededRandom noise_rng(stream_seed(throw_seed, Stream::noise));
-  Throw thrown = draw_throw(body, spec, throw_rng);
-  auto draw = [&]() {
-    InjectedEffect e = draw_effect(spec.effect, body, thrown, spec, effect_rng);
-    if (spec.second_effect.empty() || spec.second_effect == "none") return e;
-    const InjectedEffect second = draw_effect(spec.second_effect, body, thrown, spec, effect_rng);
-    json both = json::object();
-    both[spec.effect] = e.params;
-    both[spec.second_effect] = second.params;
-    e = combine(e, second, spec.second_effect, body.inertia_kg_m2);
-    e.params = both;
-    return e;
-  };
-  InjectedEffect effect = draw();
-  // Internal damping shows only when the body rate turns within the body fast enough;
-  // a throw that cannot lose the drawn energy fraction is thrown again (up to 20
-  // times: a near-symmetric body may never manage, and then keeps its last throw).
-  for (int retry = 0; !effect.full_size && retry < 20; ++retry) {
-    thrown = draw_throw(body, spec, throw_rng);
-    effect = draw();
-  }
+  ThrownEffect drawn = draw_throw_and_effects(spec, body, throw_rng, effect_rng);
+  const Throw& thrown = drawn.thrown;
+  InjectedEffect& effect = drawn.effect;
 
   GeneratedFlight f;
   f.spec = spec;
@@ -442,154 +657,21 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
   f.true_inertia_kg_m2 = effect.physics.inertia_kg_m2;
   f.true_imu_to_body = effect.imu_to_body;
 
-  // Sample times: on the sensor's clock for the IMU (recorded = true × (1 + eps)).
-  const double rate = spec.data == DataKind::imu ? spec.imu_rate_hz : spec.marker_rate_hz;
-  const int count = static_cast<int>(std::floor(thrown.duration_s * rate + 1e-9)) + 1;
-  std::vector<double> recorded(static_cast<std::size_t>(count));
-  std::vector<double> true_time(recorded.size());
-  for (int k = 0; k < count; ++k) {
-    recorded[std::size_t(k)] = k / rate;
-    true_time[std::size_t(k)] = recorded[std::size_t(k)] / (1.0 + effect.rate_error);
-  }
-
   const PerturbedRigidBody dynamics(effect.physics);
-  FlightState initial;
-  initial.orientation = thrown.orientation0;
-  initial.omega_body = thrown.omega0_body;
-  initial.rotor_omega_body = thrown.omega0_body;  // the rotor co-rotates at release
-  const std::vector<FlightState> states = dynamics.sample(initial, true_time);
-
-  f.true_samples.resize(states.size());
-  for (std::size_t k = 0; k < states.size(); ++k) {
-    TrueSample& s = f.true_samples[k];
-    s.t_s = true_time[k];
-    s.orientation = states[k].orientation;
-    s.omega_body = states[k].omega_body;
-    s.kinetic_energy_J = dynamics.kinetic_energy(states[k]);
-    s.angular_momentum_world = states[k].orientation * dynamics.angular_momentum(states[k]);
-    if (spec.data == DataKind::markers) {
-      s.com_position_m = thrown.com0_m + thrown.velocity0_m_s * s.t_s + 0.5 * kGravity * s.t_s * s.t_s;
-    }
-  }
-  // How big the dissipative effects turned out, from the truth, for reports and tests.
-  const bool compound = !spec.second_effect.empty() && spec.second_effect != "none";
-  if (spec.effect == "aero_torque" && !compound) {
-    effect.params["L_drop_fraction"] = 1.0 - f.true_samples.back().angular_momentum_world.norm() /
-                                                 f.true_samples.front().angular_momentum_world.norm();
-  }
-  if (spec.effect == "internal_damping" && !compound) {
-    effect.params["energy_loss_fraction"] =
-        1.0 - f.true_samples.back().kinetic_energy_J / f.true_samples.front().kinetic_energy_J;
-  }
+  const TrueFlight flight = fly(spec, thrown, effect, dynamics);
+  f.true_samples = true_samples_of(spec, thrown, flight, dynamics);
+  add_dissipation_measured(spec, f.true_samples, effect.params);
 
   if (spec.data == DataKind::imu) {
-    host::ImuLog& log = f.imu;
-    log.path = "imu.csv";
-    log.format = "imu_csv";
-    log.time_s = recorded;
-    const Eigen::Matrix3d body_to_sensor = effect.imu_to_body.conjugate().toRotationMatrix();
-    const Eigen::Vector3d gain = Eigen::Vector3d::Ones() + effect.scale_error;
-    // The filter is linear: the readings' noise is the filtered noise sequence, kept
-    // apart to measure its spread; filtering reading and noise separately adds up to
-    // filtering their sum.
-    LowPass signal_filter(spec.gyro_cutoff_hz, 1.0 / rate), noise_filter(spec.gyro_cutoff_hz, 1.0 / rate);
-    if (spec.gyro_cutoff_hz > 0.0) {
-      settle_on_motion_before(
-          signal_filter, effect.physics, thrown.omega0_body, spec.gyro_cutoff_hz, rate,
-          [&](const Eigen::Vector3d& w) { return gain.cwiseProduct(body_to_sensor * w) + effect.bias; });
-    }
-    Eigen::Vector3d noise_squares = Eigen::Vector3d::Zero();
-    for (std::size_t k = 0; k < states.size(); ++k) {
-      const Eigen::Vector3d w_sensor = body_to_sensor * states[k].omega_body;
-      Eigen::Vector3d reading = gain.cwiseProduct(w_sensor) + effect.bias;
-      Eigen::Vector3d noise = noise_rng.normal_vector(spec.gyro_noise_rad_s);
-      if (spec.gyro_cutoff_hz > 0.0) {
-        reading = signal_filter(reading);
-        noise = noise_filter(noise);
-      }
-      noise_squares += noise.cwiseAbs2();
-      log.gyro_rad_s.push_back(reading + noise);
-    }
-    f.gyro_noise_in_readings_rad_s = (noise_squares / static_cast<double>(states.size())).cwiseSqrt();
-    if (spec.accelerometer) {
-      // Free fall: the specific force at the sensor is only its acceleration relative
-      // to the centre of mass, w' × r + w × (w × r) (aerodynamic force neglected), and
-      // an impulse's blow.
-      const Eigen::Vector3d& r = body.imu_offset_m;
-      for (std::size_t k = 0; k < states.size(); ++k) {
-        const Eigen::Vector3d& w = states[k].omega_body;
-        const Eigen::Vector3d w_dot = dynamics.shell_angular_acceleration(true_time[k], states[k]);
-        const Eigen::Vector3d a =
-            w_dot.cross(r) + w.cross(w.cross(r)) + blow_acceleration(effect.physics, body, true_time[k]);
-        log.accel_m_s2.push_back(body_to_sensor * a + noise_rng.normal_vector(spec.accel_noise_m_s2));
-      }
-    }
+    f.imu.path = "imu.csv";
+    f.imu.format = "imu_csv";
+    f.imu.time_s = flight.recorded_s;
+    f.gyro_noise_in_readings_rad_s = record_gyro(spec, thrown, effect, flight, noise_rng, f.imu);
+    if (spec.accelerometer) record_accelerometer(spec, body, effect, flight, dynamics, noise_rng, f.imu);
   } else {
-    host::MarkerTrial& trial = f.markers;
-    trial.path = "markers.trc";
-    trial.format = "trc";
-    trial.units_in_file = "mm";
-    trial.rate_hz = spec.marker_rate_hz;
-    trial.time_s = recorded;
-    for (std::size_t i = 0; i < thrown.markers_m.size(); ++i) {
-      trial.marker_names.push_back("M" + std::to_string(i + 1));
-    }
-    for (std::size_t k = 0; k < states.size(); ++k) {
-      std::vector<Eigen::Vector3d> frame;
-      const Eigen::Matrix3d r = states[k].orientation.toRotationMatrix();
-      for (const auto& m : thrown.markers_m) {
-        frame.push_back(f.true_samples[k].com_position_m + r * m +
-                        noise_rng.normal_vector(spec.marker_noise_m));
-      }
-      trial.positions_m.push_back(frame);
-    }
-    if (spec.occlusions) {
-      // Now and then one marker drops out for a few frames; never two at once, so at
-      // least five markers are always visible.
-      std::vector<bool> busy(states.size(), false);
-      const int events = noise_rng.index(4);
-      for (int e = 0; e < events; ++e) {
-        const int marker = noise_rng.index(static_cast<int>(thrown.markers_m.size()));
-        const int length = 2 + noise_rng.index(5);
-        const int start = noise_rng.index(count - length);
-        bool free = true;
-        for (int k = start; k < start + length; ++k) free = free && !busy[std::size_t(k)];
-        if (!free) continue;
-        for (int k = start; k < start + length; ++k) {
-          busy[std::size_t(k)] = true;
-          trial.positions_m[std::size_t(k)][std::size_t(marker)].setConstant(
-              std::numeric_limits<double>::quiet_NaN());
-        }
-      }
-    }
+    record_markers(spec, thrown, flight, f.true_samples, noise_rng, f.markers);
   }
-
-  FlightTruth& t = f.truth;
-  t.effect = spec.effect;
-  const Principal principal = principal_of(body.inertia_kg_m2);
-  const bool aligned = principal.axes.cwiseAbs().isApprox(Eigen::Matrix3d::Identity(), 1e-9) ||
-                       (principal.axes.cwiseAbs().array() > 1.0 - 1e-9).count() == 3;
-  const bool distinct = symmetry_axis_index(principal.moments, 1e-6) < 0 &&
-                        principal.moments(2) - principal.moments(0) > 1e-6 * principal.moments(2);
-  const bool mimics =
-      aligned && distinct && effect.imu_to_body.angularDistance(Eigen::Quaterniond::Identity()) < 1e-12;
-  t.equivalent = equivalent_class(spec.effect, spec.data, mimics);
-  if (spec.effect == "internal_momentum" && rotor_along_symmetry_axis(principal, effect.physics)) {
-    t.equivalent.push_back("inertia_moments");
-    std::sort(t.equivalent.begin(), t.equivalent.end());
-  }
-  t.effects = {spec.effect};
-  t.equivalents = {t.equivalent};
-  if (compound) {
-    t.effects.push_back(spec.second_effect);
-    t.equivalents.push_back(equivalent_class(spec.second_effect, spec.data, mimics));
-  }
-  t.params = effect.params;
-  t.onset_s = effect.onset_s;
-  t.omega0_body = thrown.omega0_body;
-  t.body = body.name;
-  t.kind = spec.data;
-  t.duration_s = thrown.duration_s;
+  f.truth = truth_of(spec, body, thrown, effect);
   return f;
 }
 

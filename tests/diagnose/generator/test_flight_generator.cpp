@@ -568,6 +568,68 @@ TEST_CASE("bad specs are refused", "[generator]") {
                   std::invalid_argument);
 }
 
+namespace {
+
+// imu.csv: plain layout with accelerometer, 6 decimals.
+void check_imu_csv_holds(const std::filesystem::path& path, const GeneratedFlight& imu) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  CHECK(line == "t,gx,gy,gz,ax,ay,az");
+  std::size_t k = 0;
+  while (std::getline(in, line)) {
+    const auto cells = split(line, ',');
+    REQUIRE(cells.size() == 7);
+    REQUIRE(k < imu.imu.time_s.size());
+    REQUIRE(std::stod(cells[0]) == Approx(imu.imu.time_s[k]).margin(5e-7));
+    for (int i = 0; i < 3; ++i) {
+      REQUIRE(std::stod(cells[std::size_t(1 + i)]) == Approx(imu.imu.gyro_rad_s[k](i)).margin(5e-7));
+      REQUIRE(std::stod(cells[std::size_t(4 + i)]) == Approx(imu.imu.accel_m_s2[k](i)).margin(5e-7));
+    }
+    ++k;
+  }
+  CHECK(k == imu.imu.time_s.size());
+}
+
+// markers.trc: header numbers, frame numbers, mm with 4 decimals, empty occluded cells.
+void check_trc_holds(const std::filesystem::path& path, const GeneratedFlight& mocap) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  std::string line;
+  while (std::getline(in, line)) lines.push_back(line);
+  REQUIRE(lines.size() == 6 + mocap.markers.time_s.size());
+  CHECK(split(lines[0], '\t')[0] == "PathFileType");
+  const auto values = split(lines[2], '\t');
+  REQUIRE(values.size() == 8);
+  CHECK(std::stod(values[0]) == 250.0);
+  CHECK(std::stoul(values[2]) == mocap.markers.time_s.size());
+  CHECK(values[3] == "6");
+  CHECK(values[4] == "mm");
+  CHECK(lines[5].empty());
+  std::size_t empty_cells = 0;
+  for (std::size_t k = 0; k < mocap.markers.time_s.size(); ++k) {
+    const auto cells = split(lines[6 + k], '\t');
+    REQUIRE(cells.size() == 2 + 3 * 6);
+    REQUIRE(std::stoul(cells[0]) == k + 1);
+    REQUIRE(std::stod(cells[1]) == Approx(mocap.markers.time_s[k]).margin(5e-6));
+    for (std::size_t i = 0; i < 6; ++i) {
+      for (int c = 0; c < 3; ++c) {
+        const std::string& cell = cells[2 + 3 * i + std::size_t(c)];
+        const double truth_mm = mocap.markers.positions_m[k][i](c) * 1000.0;
+        if (!std::isfinite(truth_mm)) {
+          REQUIRE(cell.empty());
+          ++empty_cells;
+        } else {
+          REQUIRE(std::stod(cell) == Approx(truth_mm).margin(5e-5));
+        }
+      }
+    }
+  }
+  CHECK(empty_cells % 3 == 0);
+}
+
+}  // namespace
+
 TEST_CASE("written files round trip: body.json, imu.csv, markers.trc, truth.json", "[generator][files]") {
   TempDir dir("aloft_generator_files");
   FlightSpec imu_spec = make_spec("tilted_box", "gyro_bias");
@@ -583,63 +645,8 @@ TEST_CASE("written files round trip: body.json, imu.csv, markers.trc, truth.json
   CHECK(body.markers_m.size() == 6);
   CHECK((body.markers_m.at("M3") - mocap.body.markers_m.at("M3")).norm() < 1e-15);
 
-  // imu.csv: plain layout with accelerometer, 6 decimals.
-  {
-    std::ifstream in(dir.path / "imu" / "imu.csv");
-    std::string line;
-    std::getline(in, line);
-    CHECK(line == "t,gx,gy,gz,ax,ay,az");
-    std::size_t k = 0;
-    while (std::getline(in, line)) {
-      const auto cells = split(line, ',');
-      REQUIRE(cells.size() == 7);
-      REQUIRE(k < imu.imu.time_s.size());
-      REQUIRE(std::stod(cells[0]) == Approx(imu.imu.time_s[k]).margin(5e-7));
-      for (int i = 0; i < 3; ++i) {
-        REQUIRE(std::stod(cells[std::size_t(1 + i)]) == Approx(imu.imu.gyro_rad_s[k](i)).margin(5e-7));
-        REQUIRE(std::stod(cells[std::size_t(4 + i)]) == Approx(imu.imu.accel_m_s2[k](i)).margin(5e-7));
-      }
-      ++k;
-    }
-    CHECK(k == imu.imu.time_s.size());
-  }
-
-  // markers.trc: header numbers, frame numbers, mm with 4 decimals, empty occluded cells.
-  {
-    std::ifstream in(dir.path / "mocap" / "markers.trc");
-    std::vector<std::string> lines;
-    std::string line;
-    while (std::getline(in, line)) lines.push_back(line);
-    REQUIRE(lines.size() == 6 + mocap.markers.time_s.size());
-    CHECK(split(lines[0], '\t')[0] == "PathFileType");
-    const auto values = split(lines[2], '\t');
-    REQUIRE(values.size() == 8);
-    CHECK(std::stod(values[0]) == 250.0);
-    CHECK(std::stoul(values[2]) == mocap.markers.time_s.size());
-    CHECK(values[3] == "6");
-    CHECK(values[4] == "mm");
-    CHECK(lines[5].empty());
-    std::size_t empty_cells = 0;
-    for (std::size_t k = 0; k < mocap.markers.time_s.size(); ++k) {
-      const auto cells = split(lines[6 + k], '\t');
-      REQUIRE(cells.size() == 2 + 3 * 6);
-      REQUIRE(std::stoul(cells[0]) == k + 1);
-      REQUIRE(std::stod(cells[1]) == Approx(mocap.markers.time_s[k]).margin(5e-6));
-      for (std::size_t i = 0; i < 6; ++i) {
-        for (int c = 0; c < 3; ++c) {
-          const std::string& cell = cells[2 + 3 * i + std::size_t(c)];
-          const double truth_mm = mocap.markers.positions_m[k][i](c) * 1000.0;
-          if (!std::isfinite(truth_mm)) {
-            REQUIRE(cell.empty());
-            ++empty_cells;
-          } else {
-            REQUIRE(std::stod(cell) == Approx(truth_mm).margin(5e-5));
-          }
-        }
-      }
-    }
-    CHECK(empty_cells % 3 == 0);
-  }
+  check_imu_csv_holds(dir.path / "imu" / "imu.csv", imu);
+  check_trc_holds(dir.path / "mocap" / "markers.trc", mocap);
 
   // truth.json holds the truth, the seed and the spec.
   const auto truth = nlohmann::json::parse(read_text(dir.path / "imu" / "truth.json"));
