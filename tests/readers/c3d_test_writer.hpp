@@ -70,98 +70,147 @@ class C3dBytesWriter {
   Processor p_;
 };
 
-inline std::vector<std::uint8_t> write_c3d_bytes(const C3dContent& c) {
-  const C3dBytesWriter w(c.processor);
+// The parameter section's records: one group record, then parameters of that group.
+class C3dParameterRecords {
+ public:
+  explicit C3dParameterRecords(const C3dBytesWriter& w) : w_(w) {}
+  void group(int group_id, const std::string& name) { record(group_id, name, std::vector<std::uint8_t>{0}); }
+  void parameter(const std::string& name, int type, const std::vector<int>& dims,
+                 const std::vector<std::uint8_t>& data, int group_id = 1) {
+    std::vector<std::uint8_t> body;
+    w_.u8(body, type);
+    w_.u8(body, static_cast<int>(dims.size()));
+    for (int d : dims) w_.u8(body, d);
+    body.insert(body.end(), data.begin(), data.end());
+    w_.u8(body, 0);  // no description
+    record(group_id, name, body);
+  }
+  std::vector<std::uint8_t> int_data(int v) const {
+    std::vector<std::uint8_t> d;
+    w_.i16(d, v);
+    return d;
+  }
+  std::vector<std::uint8_t> float_data(float v) const {
+    std::vector<std::uint8_t> d;
+    w_.f32(d, v);
+    return d;
+  }
+  // Two 16-bit words, low word first (TRIAL:ACTUAL_*_FIELD).
+  std::vector<std::uint8_t> two_words(std::size_t v) const {
+    std::vector<std::uint8_t> d;
+    w_.i16(d, static_cast<int>(v & 0xFFFF));
+    w_.i16(d, static_cast<int>(v >> 16));
+    return d;
+  }
+  // The records, closed by the end of the chain.
+  std::vector<std::uint8_t> finished() const {
+    std::vector<std::uint8_t> out = records_;
+    out.push_back(0);
+    out.push_back(0);
+    return out;
+  }
+
+ private:
+  void record(int group_id, const std::string& name, const std::vector<std::uint8_t>& body) {
+    w_.u8(records_, static_cast<int>(name.size()));
+    w_.u8(records_, group_id);
+    records_.insert(records_.end(), name.begin(), name.end());
+    w_.i16(records_, static_cast<int>(body.size() + 2));
+    records_.insert(records_.end(), body.begin(), body.end());
+  }
+
+  const C3dBytesWriter& w_;
+  std::vector<std::uint8_t> records_;
+};
+
+// Where the parameters end and the point data starts, and the POINT:SCALE as stored
+// (negative for float data).
+struct C3dLayout {
+  std::size_t parameter_blocks = 0;
+  int data_start = 0;  // 512-byte blocks counted from 1
+  float stored_scale = 0.0f;
+};
+
+inline C3dLayout c3d_layout(const C3dContent& c) {
+  C3dLayout layout;
+  layout.parameter_blocks = 2;  // ample for the tests' small label lists
+  layout.data_start = static_cast<int>(2 + layout.parameter_blocks);  // after the header block
+  layout.stored_scale = static_cast<float>(c.float_data ? -c.scale : c.scale);
+  return layout;
+}
+
+inline std::size_t longest_label(const std::vector<std::string>& labels) {
+  std::size_t length = 1;
+  for (const auto& l : labels) length = std::max(length, l.size());
+  return length;
+}
+
+// The labels, each padded with spaces to `length`.
+inline std::vector<std::uint8_t> padded_labels(const std::vector<std::string>& labels, std::size_t length) {
+  std::vector<std::uint8_t> out;
+  for (const auto& l : labels) {
+    std::string padded = l;
+    padded.resize(length, ' ');
+    out.insert(out.end(), padded.begin(), padded.end());
+  }
+  return out;
+}
+
+// The parameter section (its 4-byte header, then the records), whole blocks.
+inline std::vector<std::uint8_t> c3d_parameter_section(const C3dContent& c, const C3dBytesWriter& w,
+                                                       const C3dLayout& layout) {
   const std::size_t points = c.labels.size();
   const std::size_t frames = c.coordinates.size();
-  const float stored_scale = static_cast<float>(c.float_data ? -c.scale : c.scale);
-
-  // Parameter records (after the 4-byte section header).
-  std::vector<std::uint8_t> records;
-  auto record = [&](int group_id, const std::string& name, const std::vector<std::uint8_t>& body) {
-    w.u8(records, static_cast<int>(name.size()));
-    w.u8(records, group_id);
-    records.insert(records.end(), name.begin(), name.end());
-    w.i16(records, static_cast<int>(body.size() + 2));
-    records.insert(records.end(), body.begin(), body.end());
-  };
-  auto parameter = [&](const std::string& name, int type, const std::vector<int>& dims,
-                       const std::vector<std::uint8_t>& data, int group_id = 1) {
-    std::vector<std::uint8_t> body;
-    w.u8(body, type);
-    w.u8(body, static_cast<int>(dims.size()));
-    for (int d : dims) w.u8(body, d);
-    body.insert(body.end(), data.begin(), data.end());
-    w.u8(body, 0);  // no description
-    record(group_id, name, body);
-  };
-  auto int_data = [&](int v) {
-    std::vector<std::uint8_t> d;
-    w.i16(d, v);
-    return d;
-  };
-  auto float_data = [&](float v) {
-    std::vector<std::uint8_t> d;
-    w.f32(d, v);
-    return d;
-  };
-
-  std::size_t label_length = 1;
-  for (const auto& l : c.labels) label_length = std::max(label_length, l.size());
-  std::vector<std::uint8_t> labels;
-  for (const auto& l : c.labels) {
-    std::string padded = l;
-    padded.resize(label_length, ' ');
-    labels.insert(labels.end(), padded.begin(), padded.end());
-  }
-  const std::size_t parameter_blocks = 2;  // ample for the tests' small label lists
-  const int data_start = static_cast<int>(2 + parameter_blocks);
-
-  record(-1, "POINT", std::vector<std::uint8_t>{0});
-  parameter("USED", 2, {}, int_data(static_cast<int>(points)));
-  parameter("SCALE", 4, {}, float_data(stored_scale));
-  parameter("RATE", 4, {}, float_data(c.rate_hz));
-  parameter("DATA_START", 2, {}, int_data(data_start));
-  parameter("FRAMES", 2, {}, int_data(static_cast<int>(frames)));
-  parameter("LABELS", -1, {static_cast<int>(label_length), static_cast<int>(points)}, labels);
-  parameter("UNITS", -1, {static_cast<int>(c.units.size())},
-            std::vector<std::uint8_t>(c.units.begin(), c.units.end()));
+  const std::size_t label_length = longest_label(c.labels);
+  const std::vector<std::uint8_t> labels = padded_labels(c.labels, label_length);
+  C3dParameterRecords r(w);
+  r.group(-1, "POINT");
+  r.parameter("USED", 2, {}, r.int_data(static_cast<int>(points)));
+  r.parameter("SCALE", 4, {}, r.float_data(layout.stored_scale));
+  r.parameter("RATE", 4, {}, r.float_data(c.rate_hz));
+  r.parameter("DATA_START", 2, {}, r.int_data(layout.data_start));
+  r.parameter("FRAMES", 2, {}, r.int_data(static_cast<int>(frames)));
+  r.parameter("LABELS", -1, {static_cast<int>(label_length), static_cast<int>(points)}, labels);
+  r.parameter("UNITS", -1, {static_cast<int>(c.units.size())},
+              std::vector<std::uint8_t>(c.units.begin(), c.units.end()));
   if (c.trial_fields) {
-    auto two_words = [&](std::size_t v) {
-      std::vector<std::uint8_t> d;
-      w.i16(d, static_cast<int>(v & 0xFFFF));
-      w.i16(d, static_cast<int>(v >> 16));
-      return d;
-    };
-    record(-2, "TRIAL", std::vector<std::uint8_t>{0});
-    parameter("ACTUAL_START_FIELD", 2, {2}, two_words(1), 2);
-    parameter("ACTUAL_END_FIELD", 2, {2}, two_words(frames), 2);
+    r.group(-2, "TRIAL");
+    r.parameter("ACTUAL_START_FIELD", 2, {2}, r.two_words(1), 2);
+    r.parameter("ACTUAL_END_FIELD", 2, {2}, r.two_words(frames), 2);
   }
-  records.push_back(0);  // end of the chain
-  records.push_back(0);
+  const std::vector<std::uint8_t> records = r.finished();
+  // Whole blocks; records past the last one would be cut (the tests' short lists never get there).
+  std::vector<std::uint8_t> section(layout.parameter_blocks * 512, 0);
+  section[0] = 1;
+  section[1] = 0x50;
+  section[2] = static_cast<std::uint8_t>(layout.parameter_blocks);
+  section[3] = static_cast<std::uint8_t>(c.processor);
+  std::copy_n(records.begin(), std::min(records.size(), section.size() - 4), section.begin() + 4);
+  return section;
+}
 
+// The 512-byte header block.
+inline std::vector<std::uint8_t> c3d_header(const C3dContent& c, const C3dBytesWriter& w,
+                                            const C3dLayout& layout) {
   std::vector<std::uint8_t> file(512, 0);
   file[0] = 2;
   file[1] = 0x50;
-  {
-    std::vector<std::uint8_t> h;
-    w.i16(h, static_cast<int>(points));
-    w.i16(h, 0);  // analog samples per frame
-    w.i16(h, 1);
-    w.i16(h, static_cast<int>(std::min<std::size_t>(frames, 65535)));
-    w.i16(h, 0);
-    w.f32(h, stored_scale);
-    w.i16(h, data_start);
-    w.i16(h, 0);
-    w.f32(h, c.rate_hz);
-    std::copy(h.begin(), h.end(), file.begin() + 2);
-  }
-  std::vector<std::uint8_t> section{1, 0x50, static_cast<std::uint8_t>(parameter_blocks),
-                                    static_cast<std::uint8_t>(c.processor)};
-  section.insert(section.end(), records.begin(), records.end());
-  section.resize(parameter_blocks * 512, 0);
-  file.insert(file.end(), section.begin(), section.end());
+  std::vector<std::uint8_t> h;
+  w.i16(h, static_cast<int>(c.labels.size()));
+  w.i16(h, 0);  // analog samples per frame
+  w.i16(h, 1);
+  w.i16(h, static_cast<int>(std::min<std::size_t>(c.coordinates.size(), 65535)));
+  w.i16(h, 0);
+  w.f32(h, layout.stored_scale);
+  w.i16(h, layout.data_start);
+  w.i16(h, 0);
+  w.f32(h, c.rate_hz);
+  std::copy(h.begin(), h.end(), file.begin() + 2);
+  return file;
+}
 
+// Each point of each frame: x, y, z and a residual word (-1: invalid).
+inline void append_c3d_points(const C3dContent& c, const C3dBytesWriter& w, std::vector<std::uint8_t>& file) {
   for (const auto& frame : c.coordinates) {
     for (const auto& xyz : frame) {
       const bool invalid = std::isnan(xyz[0]);
@@ -180,6 +229,15 @@ inline std::vector<std::uint8_t> write_c3d_bytes(const C3dContent& c) {
       }
     }
   }
+}
+
+inline std::vector<std::uint8_t> write_c3d_bytes(const C3dContent& c) {
+  const C3dBytesWriter w(c.processor);
+  const C3dLayout layout = c3d_layout(c);
+  std::vector<std::uint8_t> file = c3d_header(c, w, layout);
+  const std::vector<std::uint8_t> section = c3d_parameter_section(c, w, layout);
+  file.insert(file.end(), section.begin(), section.end());
+  append_c3d_points(c, w, file);
   file.resize((file.size() + 511) / 512 * 512, 0);
   return file;
 }
