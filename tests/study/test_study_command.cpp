@@ -26,38 +26,33 @@ void check_summary(const json& s) {
   CHECK(s["median"].get<double>() <= s["p90"].get<double>());
 }
 
-}  // namespace
-
-TEST_CASE("the default study writes the files of SPEC §5, and the same seed gives the same numbers") {
-  ScratchDir scratch;
-  const auto r =
-      run_aloft(scratch, "study --mc-samples 120 --seed 5 --threads 2 --out '" + scratch.path("a") + "'");
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-  CHECK(r.out.find("paper") != std::string::npos);  // the side-by-side table
-  CHECK(r.out.find("CP") != std::string::npos);
-
-  const json results = json::parse(read_file(scratch.path("a/results.json")));
+// The default trial's GF and CP rows (SPEC §5): 873 simulations each, the moments of each
+// model as the study computes them.
+void check_default_models(const json& models) {
   for (const char* model : {"GF", "CP"}) {
     INFO(model);
-    const json& m = results.at("models").at(model);
+    const json& m = models.at(model);
     REQUIRE(m.at("principal_kg_m2").size() == 3);
     CHECK(m.at("simulations").get<int>() == 873);
     check_summary(m.at("rms_da_deg"));
   }
-  const json& gf = results["models"]["GF"]["principal_kg_m2"];
+  const json& gf = models["GF"]["principal_kg_m2"];
   CHECK(gf[0].get<double>() == Approx(183.8e-4).margin(0.1e-4));
   CHECK(gf[2].get<double>() == Approx(210.8e-4).margin(0.1e-4));
-  const json& cp = results["models"]["CP"]["principal_kg_m2"];
+  const json& cp = models["CP"]["principal_kg_m2"];
   CHECK(cp[0].get<double>() == Approx(203.3e-4));
   CHECK(cp[1].get<double>() == Approx(155.0e-4));
   CHECK(cp[2].get<double>() == Approx(192.5e-4));
-  REQUIRE(results.at("monte_carlo").size() == 12);
+}
+
+// Twelve Monte Carlo rows: four bounds of each family (moments in %, axes in degrees, both).
+void check_monte_carlo_of_each_family(const json& monte_carlo, int simulations) {
+  REQUIRE(monte_carlo.size() == 12);
   int per_family[3] = {0, 0, 0};
-  for (const json& mc : results["monte_carlo"]) {
+  for (const json& mc : monte_carlo) {
     const std::string family = mc.at("family");
     const std::string unit = mc.at("unit");
-    CHECK(mc.at("simulations").get<int>() == 120);
+    CHECK(mc.at("simulations").get<int>() == simulations);
     check_summary(mc.at("rms_da_deg"));
     if (family == "moments") {
       ++per_family[0];
@@ -75,6 +70,33 @@ TEST_CASE("the default study writes the files of SPEC §5, and the same seed giv
   CHECK(per_family[0] == 4);
   CHECK(per_family[1] == 4);
   CHECK(per_family[2] == 4);
+}
+
+// experiment.csv holds the default trial's 873 samples; the figure is a PNG and an SVG.
+void check_experiment_and_figures(const std::string& out) {
+  const std::string experiment = read_file(out + "/experiment.csv");
+  CHECK(experiment.rfind("t,qw,qx,qy,qz,wx,wy,wz\n", 0) == 0);
+  CHECK(count_lines(experiment) == 1 + 873);
+  const std::string png = read_file(out + "/figure.png");
+  REQUIRE(png.size() > 8);
+  CHECK(png.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+  CHECK(read_file(out + "/figure.svg").find("<svg") != std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("the default study writes the files of SPEC §5, and the same seed gives the same numbers") {
+  ScratchDir scratch;
+  const auto r =
+      run_aloft(scratch, "study --mc-samples 120 --seed 5 --threads 2 --out '" + scratch.path("a") + "'");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("paper") != std::string::npos);  // the side-by-side table
+  CHECK(r.out.find("CP") != std::string::npos);
+
+  const json results = json::parse(read_file(scratch.path("a/results.json")));
+  check_default_models(results.at("models"));
+  check_monte_carlo_of_each_family(results.at("monte_carlo"), 120);
   CHECK(results.at("wall_time_s").get<double>() > 0.0);
 
   // Both frames by default: SPEC §5's keys in body axes, named by "frame", and every
@@ -93,13 +115,7 @@ TEST_CASE("the default study writes the files of SPEC §5, and the same seed giv
   CHECK(count_lines(rms) == 1 + 2 * (2 * 873 + 12 * 120));
   CHECK(rms.find("\nCP,0,") != std::string::npos);
   CHECK(rms.find(",world\n") != std::string::npos);
-  const std::string experiment = read_file(scratch.path("a/experiment.csv"));
-  CHECK(experiment.rfind("t,qw,qx,qy,qz,wx,wy,wz\n", 0) == 0);
-  CHECK(count_lines(experiment) == 1 + 873);
-  const std::string png = read_file(scratch.path("a/figure.png"));
-  REQUIRE(png.size() > 8);
-  CHECK(png.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
-  CHECK(read_file(scratch.path("a/figure.svg")).find("<svg") != std::string::npos);
+  check_experiment_and_figures(scratch.path("a"));
 
   // Same seed, other thread count: the same simulations, to the last digit.
   const auto again =
@@ -187,13 +203,39 @@ TEST_CASE("the paper-body throw gives GF and CP rows near the paper's, as calibr
   }
 }
 
-TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing written") {
+namespace {
+
+// An output folder that holds a previous run's results.json, and a valid body file: a
+// refused study writes nothing there, replaces nothing and leaves no temporary behind.
+struct PreviousRun {
   ScratchDir scratch;
-  const std::string out = scratch.path("out");
-  std::filesystem::create_directories(out);
-  scratch.write("out/results.json", "previous run\n");
-  const std::string body = scratch.write(
-      "body.json", R"({"name": "box", "mass": 1.0, "inertia": {"principal": [0.01, 0.02, 0.025]}})");
+  std::string out = scratch.path("out");
+  std::string body;
+
+  PreviousRun() {
+    std::filesystem::create_directories(out);
+    scratch.write("out/results.json", "previous run\n");
+    body = scratch.write("body.json",
+                         R"({"name": "box", "mass": 1.0, "inertia": {"principal": [0.01, 0.02, 0.025]}})");
+  }
+  void check_untouched() const {
+    std::size_t files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(out)) {
+      (void)entry;
+      ++files;
+    }
+    CHECK(files == 1);
+    CHECK(read_file(out + "/results.json") == "previous run\n");
+  }
+};
+
+}  // namespace
+
+TEST_CASE("bad input files to study: one line naming the file, non-zero exit, nothing written") {
+  const PreviousRun previous;
+  const ScratchDir& scratch = previous.scratch;
+  const std::string& out = previous.out;
+  const std::string& body = previous.body;
 
   SECTION("a NaN gyro sample") {
     const std::string imu = scratch.write("imu.csv", "t,gx,gy,gz\n0,1,2,3\n0.01,1,nan,3\n0.02,1,2,3\n");
@@ -219,6 +261,20 @@ TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing 
     CHECK(count_lines(r.err) == 1);
     CHECK(r.err.find("segment 1") != std::string::npos);
   }
+  SECTION("--markers without --body") {
+    const auto r = run_aloft(scratch, "study --markers x.trc --out '" + out + "'");
+    CHECK(r.exit_code != 0);
+    CHECK(count_lines(r.err) == 1);
+  }
+  previous.check_untouched();
+}
+
+TEST_CASE("bad options to study: one line, exit code 2, nothing written") {
+  const PreviousRun previous;
+  const ScratchDir& scratch = previous.scratch;
+  const std::string& out = previous.out;
+  const std::string& body = previous.body;
+
   SECTION("a throw option out of range") {
     const auto r = run_aloft(scratch, "study --spin-rate -1 --out '" + out + "'");
     CHECK(r.exit_code == 2);
@@ -260,19 +316,7 @@ TEST_CASE("bad input to study: one line naming the file, non-zero exit, nothing 
     CHECK(r.exit_code == 2);
     CHECK(count_lines(r.err) == 1);
   }
-  SECTION("--markers without --body") {
-    const auto r = run_aloft(scratch, "study --markers x.trc --out '" + out + "'");
-    CHECK(r.exit_code != 0);
-    CHECK(count_lines(r.err) == 1);
-  }
-  // Nothing written, nothing replaced, no temporary left behind.
-  std::size_t files = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(out)) {
-    (void)entry;
-    ++files;
-  }
-  CHECK(files == 1);
-  CHECK(read_file(out + "/results.json") == "previous run\n");
+  previous.check_untouched();
 }
 
 TEST_CASE("the study runs on every racquet flight of both sessions") {
