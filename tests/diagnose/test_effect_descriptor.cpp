@@ -15,29 +15,32 @@ using namespace aloft::host::diagnose;
 
 namespace {
 
-// SPEC §4: the fixed names, which describe the sensor, and the required `params` keys.
+// SPEC §4: each effect's fixed name, whether it describes the sensor, and the required
+// `params` keys; written out here, apart from the registry, so that a descriptor under the
+// wrong name or of the wrong kind shows.
 struct SpecEffect {
+  Effect effect;
   std::string name;
   bool sensor;
   std::vector<std::string> keys;
 };
 const std::vector<SpecEffect> kSpec = {
-    {"none", false, {}},
-    {"inertia_moments", false, {"principal_kg_m2"}},
-    {"inertia_axes", false, {"angle_deg", "rotation"}},
-    {"aero_torque", false, {"k_N_m_s2"}},
-    {"internal_damping", false, {}},  // model-specific
-    {"impulse", false, {"time_s", "angular_impulse_N_m_s"}},
-    {"gyro_bias", true, {"bias_rad_s"}},
-    {"gyro_scale", true, {"scale_error"}},
-    {"sensor_misalignment", true, {"angle_deg", "rotation"}},
-    {"clock_drift", true, {"rate_error"}},
-    {"internal_momentum", false, {"h_N_m_s"}},
+    {Effect::none, "none", false, {}},
+    {Effect::inertia_moments, "inertia_moments", false, {"principal_kg_m2"}},
+    {Effect::inertia_axes, "inertia_axes", false, {"angle_deg", "rotation"}},
+    {Effect::aero_torque, "aero_torque", false, {"k_N_m_s2"}},
+    {Effect::internal_damping, "internal_damping", false, {}},  // model-specific
+    {Effect::impulse, "impulse", false, {"time_s", "angular_impulse_N_m_s"}},
+    {Effect::gyro_bias, "gyro_bias", true, {"bias_rad_s"}},
+    {Effect::gyro_scale, "gyro_scale", true, {"scale_error"}},
+    {Effect::sensor_misalignment, "sensor_misalignment", true, {"angle_deg", "rotation"}},
+    {Effect::clock_drift, "clock_drift", true, {"rate_error"}},
+    {Effect::internal_momentum, "internal_momentum", false, {"h_N_m_s"}},
 };
 
-const SpecEffect* spec_of(const std::string& name) {
+const SpecEffect* spec_of(Effect effect) {
   for (const SpecEffect& s : kSpec) {
-    if (s.name == name) return &s;
+    if (s.effect == effect) return &s;
   }
   return nullptr;
 }
@@ -83,10 +86,11 @@ TEST_CASE("every registered effect is complete, under a SPEC §4 name, none left
     REQUIRE(d.name != nullptr);
     CAPTURE(d.name);
     CHECK(names.insert(d.name).second);  // unique
-    const SpecEffect* spec = spec_of(d.name);
+    const SpecEffect* spec = spec_of(e);
     REQUIRE(spec != nullptr);
+    CHECK(std::string(d.name) == spec->name);
+    CHECK(std::string(effect_name(e)) == spec->name);  // the name the reports write
     CHECK(d.sensor == spec->sensor);
-    CHECK(std::string(effect_name(e)) == d.name);
     CHECK((d.parameter_count > 0) == (e != Effect::none));
     const EffectHooks& h = d.hooks;
     CHECK(h.tolerance != nullptr);
@@ -111,7 +115,9 @@ TEST_CASE("each effect's JSON has its SPEC §4 keys, and none has none; its text
     CAPTURE(d.name);
     const nlohmann::json params = params_json(e, EffectParameters());
     REQUIRE(params.is_object());
-    for (const std::string& key : spec_of(d.name)->keys) CHECK(params.contains(key));
+    const SpecEffect* spec = spec_of(e);
+    REQUIRE(spec != nullptr);
+    for (const std::string& key : spec->keys) CHECK(params.contains(key));
     CHECK(params.empty() == (e == Effect::none));
     CHECK(params_text(e, EffectParameters()).empty() == (e == Effect::none));
   }
