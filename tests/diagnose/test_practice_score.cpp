@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 
@@ -68,12 +69,32 @@ TEST_CASE("practice flights: the verdict names the injected effect or its class"
   CHECK(right >= judged * 9 / 10);
 }
 
-// ../shared/data/practice2 (issue 8): compound flights (A, both effects named), phone-like
-// flights (B, the flight's verdict) and sessions (C, the pooled verdict). Development data:
-// the score is printed, and only the compound kind is held to its bar here (the withheld
-// tests are the test of record). Sessions are read through the segments reader, whose
-// keep=false rows with blank cells are another change's; a session it refuses is counted
-// as missed.
+namespace {
+
+// practice2's kinds, each with the score measured on it when its bar was set, and the bar:
+// at least 90 % right, as the practice set's above (the diagnosis is deterministic, so the
+// slack is for a later change that trades a flight, not for noise). A kind of fewer than
+// ten flights may thus miss none. The count of flights is held too, so that a kind the
+// loop never scored cannot pass.
+struct KindBar {
+  const char* kind;
+  int measured_right;
+  int flights;
+  double least_share_right;
+};
+const KindBar kPractice2Bars[] = {
+    {"compound", 19, 20, 0.9},
+    {"phone", 16, 16, 0.9},
+    {"session", 4, 4, 0.9},
+};
+
+}  // namespace
+
+// ../shared/data/practice2: compound flights (A, both effects named), phone-like flights
+// (B, the flight's verdict) and sessions (C, the pooled verdict). Development data: the
+// score is printed and each kind held to its bar (kPractice2Bars; the withheld tests are
+// the test of record). Sessions are read through the segments reader; a session it
+// refuses is counted as missed.
 TEST_CASE("practice2 flights: compound, phone-like and sessions", "[practice2]") {
   const fs::path root = fs::path(ALOFT_SHARED_DIR) / "data" / "practice2";
   if (!fs::exists(root / "truth.json")) {
@@ -124,5 +145,11 @@ TEST_CASE("practice2 flights: compound, phone-like and sessions", "[practice2]")
   }
   for (const auto& [kind, s] : score)
     std::printf("practice2 %s: %d of %d\n", kind.c_str(), s.first, s.second);
-  CHECK(score["compound"].first >= 0.8 * score["compound"].second);
+  REQUIRE(score.size() == std::size(kPractice2Bars));
+  for (const KindBar& bar : kPractice2Bars) {
+    INFO(bar.kind << ": " << bar.measured_right << " of " << bar.flights << " right when the bar was set");
+    const auto& [right, total] = score[bar.kind];
+    CHECK(total == bar.flights);
+    CHECK(right >= bar.least_share_right * bar.flights);
+  }
 }
