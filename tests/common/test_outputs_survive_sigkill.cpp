@@ -94,32 +94,46 @@ double run_to_end_seconds(const std::vector<std::string>& args) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Kills a run of `args` after `seconds` (if still running) and checks `out`.
-void kill_and_check(const std::vector<std::string>& args, double seconds, const fs::path& out) {
+// Kills a run of `args` after `seconds` (if still running) and checks `out`; returns how
+// many output files it found there to check.
+int kill_and_check(const std::vector<std::string>& args, double seconds, const fs::path& out) {
   const pid_t pid = spawn(args);
   std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
   ::kill(pid, SIGKILL);
   int status = 0;
   ::waitpid(pid, &status, 0);
-  if (!fs::exists(out)) return;
+  if (!fs::exists(out)) return 0;
+  int checked = 0;
   for (const auto& entry : fs::recursive_directory_iterator(out)) {
     if (!entry.is_regular_file() || is_temporary(entry.path())) continue;
     INFO(entry.path().string() << " after a kill at " << seconds << " s");
     CHECK(whole_or_why(entry.path()) == "");
+    ++checked;
   }
+  return checked;
 }
 
-// A torque-free axisymmetric body's gyro log: ω precesses about the symmetry axis.
+// A torque-free axisymmetric body's gyro log: ω precesses about the symmetry axis, read
+// with 0.02 rad/s of white noise. Without the noise ω_z is the same on every sample, which
+// the diagnosis takes for a clipped gyro: it left every sample out and stopped at once,
+// writing no plot, and the kills had nothing to cut.
 std::string symmetric_top_log() {
   std::ostringstream log;
   log << "t,gx,gy,gz\n";
   const double i1 = 1.0, i3 = 1.6, w3 = 8.0, a = 3.0, rate = (i3 - i1) / i1 * w3;
+  std::mt19937 random(3);
+  std::normal_distribution<double> noise(0.0, 0.02);
   for (int k = 0; k <= 1000; ++k) {
     const double t = k * 1e-3;
-    log << t << ',' << a * std::cos(rate * t) << ',' << a * std::sin(rate * t) << ',' << w3 << '\n';
+    log << t << ',' << a * std::cos(rate * t) + noise(random) << ',' << a * std::sin(rate * t) + noise(random)
+        << ',' << w3 + noise(random) << '\n';
   }
   return log.str();
 }
+
+// What `aloft diagnose --json --plot` writes for one flight; the run to the end must leave
+// each of them whole, or the kills below would check nothing.
+const std::vector<std::string> kDiagnoseOutputs = {"report.json", "plots/gap.png", "plots/gap.svg"};
 
 }  // namespace
 
@@ -141,11 +155,18 @@ TEST_CASE("diagnose outputs are never left truncated by SIGKILL", "[common][outp
                                            "--plot", (out / "plots").string()};
     fs::create_directories(out);
     const double full = run_to_end_seconds(args);
+    for (const std::string& name : kDiagnoseOutputs) {
+      INFO(name << " after a whole run");
+      REQUIRE(fs::exists(out / name));
+      CHECK(whole_or_why(out / name) == "");
+    }
+    int checked = 0;
     for (int k = 0; k < 10; ++k) {
       fs::remove_all(out);
       fs::create_directories(out);
-      kill_and_check(args, share(random) * full, out);
+      checked += kill_and_check(args, share(random) * full, out);
     }
+    WARN("10 kills over a whole run of " << full << " s: " << checked << " output files found whole");
   }
   fs::remove_all(dir);
 }
