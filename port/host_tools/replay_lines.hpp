@@ -1,0 +1,44 @@
+// The host side of the replay images: `aloft replay`'s own code path (host_sim/replay: the
+// body settings, run_replay) on a body file and a recording, printing each flight as the
+// images print it (port/cortex_m/flight_lines.hpp). One implementation for every reader:
+// replay_lines.cpp hands it the CSV reader, fifo_replay_lines.cpp the FIFO reader.
+#pragma once
+
+#include <cstdio>
+#include <exception>
+
+#include "common/body_file.hpp"
+#include "flight_lines.hpp"
+#include "replay/recording.hpp"
+#include "replay/replay_run.hpp"
+
+namespace aloft_replay_lines {
+
+inline void write_stdout(const char* text) { std::fputs(text, stdout); }
+
+// Reads the body file, then the recording (read_recording()), replays it and prints the
+// lines, the first one naming the recording as "<source> <path>". Returns the program's
+// exit status: 0, or 2 with "<program>: <what went wrong>" on stderr.
+template <typename ReadRecording>
+int print_replay_lines(const char* program, const char* body_path, const char* source, const char* recording_path,
+                       ReadRecording read_recording) {
+  try {
+    const aloft::host::Body body = aloft::host::read_body_file(body_path);
+    const aloft::host::Recording recording = read_recording();
+    const aloft::host::ReplayResult result =
+        aloft::host::run_replay(aloft::host::replay_settings_from_body(body), body_path, recording);
+    aloft::port::ReportWriter out(write_stdout);
+    out.text("aloft replay host: OnboardPipeline<float, 8>, ").text(source).text(" ").text(recording_path).line();
+    for (const aloft::FlightResult<float>& f : result.flights) {
+      aloft_flight_lines::write_flight_lines(out, f, result.t0_us);
+    }
+    out.text("stream_samples ").integer(result.stream.samples).line();
+    out.text("stream_gaps ").integer(result.stream.gaps).line();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", program, e.what());
+    return 2;
+  }
+  return 0;
+}
+
+}  // namespace aloft_replay_lines
