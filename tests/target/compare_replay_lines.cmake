@@ -16,16 +16,11 @@ if(DEFINED REMOVE_FIRST)
 endif()
 list(JOIN keys "|" key_pattern)
 
-function(run_and_read label command result)
-  execute_process(COMMAND ${command} OUTPUT_VARIABLE output ERROR_VARIABLE errors
-                  RESULT_VARIABLE status TIMEOUT 240)
-  message("${label}:\n${output}${errors}")
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "${label} exited with ${status}")
-  endif()
-  # Semihosting may write to either stream: read both.
-  string(REPLACE "\r" "" output "${output}\n${errors}")
-  string(REPLACE "\n" ";" lines "${output}")
+include(${CMAKE_CURRENT_LIST_DIR}/run_and_read.cmake)
+
+# The lines of `text` that start with one of the keys, as a list.
+function(key_lines text result)
+  string(REPLACE "\n" ";" lines "${text}")
   set(kept)
   foreach(line IN LISTS lines)
     if(line MATCHES "^(${key_pattern}) ")
@@ -35,8 +30,10 @@ function(run_and_read label command result)
   set(${result} "${kept}" PARENT_SCOPE)
 endfunction()
 
-run_and_read("firmware (float, QEMU)" "${FIRMWARE_COMMAND}" target)
-run_and_read("host replay (float, the code of aloft replay)" "${HOST_COMMAND}" host)
+run_and_read("firmware (float, QEMU)" "${FIRMWARE_COMMAND}" 240 target_output)
+key_lines("${target_output}" target)
+run_and_read("host replay (float, the code of aloft replay)" "${HOST_COMMAND}" 240 host_output)
+key_lines("${host_output}" host)
 
 if(NOT "${target}" MATCHES "(^|;)flight 0(;|$)")
   message(FATAL_ERROR "the firmware found no flight: nothing was checked")

@@ -4,23 +4,21 @@
 # RMS_DA_TOLERANCE_UDEG micro-degrees, rms_rel_err within REL_ERR_TOLERANCE_MICRO millionths.
 #   cmake -DFIRMWARE_COMMAND=<list> -DREFERENCE_COMMAND=<list> -DRMS_DA_TOLERANCE_UDEG=N
 #         -DREL_ERR_TOLERANCE_MICRO=N -P compare_with_reference.cmake
-function(run_and_read label command prefix)
-  execute_process(COMMAND ${command} OUTPUT_VARIABLE output ERROR_VARIABLE output
-                  RESULT_VARIABLE status TIMEOUT 120)
-  message("${label}:\n${output}")
-  set(output "\n${output}\n")  # every key line now starts after a newline
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "${label} exited with ${status}")
-  endif()
+include(${CMAKE_CURRENT_LIST_DIR}/run_and_read.cmake)
+
+# Sets PREFIX_samples, _seeds and _comparisons from `text`, and PREFIX_rms_da_deg and
+# _rms_rel_err in millionths.
+function(read_answer label text prefix)
+  set(text "\n${text}\n")  # every key line now starts after a newline
   foreach(key samples seeds comparisons)
-    if(NOT output MATCHES "\n${key} ([0-9]+)")
+    if(NOT text MATCHES "\n${key} ([0-9]+)")
       message(FATAL_ERROR "${label} did not print ${key}")
     endif()
     set(${prefix}_${key} ${CMAKE_MATCH_1} PARENT_SCOPE)
   endforeach()
   # Six decimals each: read as integer millionths, since CMake has no floating point.
   foreach(key rms_da_deg rms_rel_err)
-    if(NOT output MATCHES "\n${key} ([0-9]+)\\.([0-9][0-9][0-9][0-9][0-9][0-9])\n")
+    if(NOT text MATCHES "\n${key} ([0-9]+)\\.([0-9][0-9][0-9][0-9][0-9][0-9])\n")
       message(FATAL_ERROR "${label} did not print ${key} with six decimals")
     endif()
     math(EXPR micro "${CMAKE_MATCH_1} * 1000000 + 1${CMAKE_MATCH_2} - 1000000")
@@ -28,8 +26,10 @@ function(run_and_read label command prefix)
   endforeach()
 endfunction()
 
-run_and_read("firmware (float, QEMU)" "${FIRMWARE_COMMAND}" target)
-run_and_read("host reference (double)" "${REFERENCE_COMMAND}" host)
+run_and_read("firmware (float, QEMU)" "${FIRMWARE_COMMAND}" 120 target_output)
+read_answer("firmware (float, QEMU)" "${target_output}" target)
+run_and_read("host reference (double)" "${REFERENCE_COMMAND}" 120 host_output)
+read_answer("host reference (double)" "${host_output}" host)
 
 foreach(key samples seeds comparisons)
   if(NOT target_${key} EQUAL host_${key})
