@@ -20,15 +20,19 @@ inline void write_stdout(const char* text) { std::fputs(text, stdout); }
 // lines, the first one naming the recording as "<source> <path>". Returns the program's
 // exit status: 0, or 2 with "<program>: <what went wrong>" on stderr.
 template <typename ReadRecording>
-int print_replay_lines(const char* program, const char* body_path, const char* source, const char* recording_path,
-                       ReadRecording read_recording) {
+int print_replay_lines(const char* program, const char* body_path, const char* source,
+                       const char* recording_path, ReadRecording read_recording) {
   try {
     const aloft::host::Body body = aloft::host::read_body_file(body_path);
     const aloft::host::Recording recording = read_recording();
     const aloft::host::ReplayResult result =
         aloft::host::run_replay(aloft::host::replay_settings_from_body(body), body_path, recording);
     aloft::port::ReportWriter out(write_stdout);
-    out.text("aloft replay host: OnboardPipeline<float, 8>, ").text(source).text(" ").text(recording_path).line();
+    out.text("aloft replay host: OnboardPipeline<float, 8>, ")
+        .text(source)
+        .text(" ")
+        .text(recording_path)
+        .line();
     for (const aloft::FlightResult<float>& f : result.flights) {
       aloft_flight_lines::write_flight_lines(out, f, result.t0_us);
     }
