@@ -166,7 +166,7 @@ void run_records(const RecordsOptions& o) {
 void add_records_command(CLI::App& app) {
   auto options = std::make_shared<RecordsOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "records", "list the flights in a dump of the firmware's flight-record area (docs/firmware.md)");
+      "records", "list the flights in a dump of the firmware's flight-record area (docs/flight-records.md)");
   cmd->add_option("DUMP", options->dump_path, "raw dump of the record area")->required();
   auto* json = cmd->add_flag("--json", options->json, "JSON: flights and problems");
   auto* csv = cmd->add_flag("--csv", options->csv, "CSV: one row per flight");

@@ -2,9 +2,9 @@
 // thrown tennis racquet): the pooled compound verdict, its leave-one-flight-out shrink,
 // what drag and a gyro bias add, and the flip period predicted from the first sample and
 // from each flight's fitted initial state (flip_period.hpp), nominal and with the pooled
-// model fitted without the flight. The assertions pin the findings docs/diagnose.md reports
-// (its racquet table), so a change that overturns them is noticed; where issue 8's bars
-// are not met the assertions say what is found instead.
+// model fitted without the flight. The assertions pin the findings docs/validation/diagnose-accuracy.md
+// reports (its racquet table), so a change that overturns them is noticed; where issue 8's bars are not met
+// the assertions say what is found instead.
 #include <catch2/catch.hpp>
 
 #include <algorithm>

@@ -90,7 +90,7 @@ std::vector<aloft::FlightResult<float>> replay(const Recording& rec, bool give_r
   settings.imu_position_known = give_r;
   if (std::getenv("FADE")) settings.release.fade_out_at_most_us = std::atoi(std::getenv("FADE"));
   // The window's settings from the environment, to repeat their choice on the tuned seeds
-  // (docs/firmware.md, "Real hands"): ALOFT_WINDOW_FLOOR (m/s²), ALOFT_WINDOW_RELATIVE,
+  // (docs/validation/release-detection.md, "Real hands"): ALOFT_WINDOW_FLOOR (m/s²), ALOFT_WINDOW_RELATIVE,
   // ALOFT_WINDOW_BLOCK_US.
   if (const char* v = std::getenv("ALOFT_WINDOW_FLOOR"))
     settings.release_window.block_limit_floor_m_s2 = std::strtof(v, nullptr);
@@ -343,7 +343,7 @@ TEST_CASE("no flight in a recording without one", "[release]") {
 // (aloft/onboard/release_window.hpp) were chosen on the first seed set ("tuned on") and are
 // reported on the second, drawn from seeds nobody looked at while choosing them ("held
 // out"); both must meet the held-back real throws' bar: within 10 ms early to 20 ms late,
-// never more than 10 ms early. Measured (gcc Release), docs/firmware.md "Real hands".
+// never more than 10 ms early. Measured (gcc Release), docs/validation/release-detection.md, "Real hands".
 namespace {
 struct RealHandSets {
   Tally given, fitted, drops;

@@ -283,7 +283,7 @@ TEST_CASE("replay --fifo: one line naming the file, only where nothing decodes",
 }
 
 TEST_CASE("ICM-42688-P driver RAM, burst buffer included", "[replay_fifo][.footprint]") {
-  // Printed for docs/firmware.md (host, 64-bit pointers); the static_assert in the
+  // Printed for docs/icm42688p.md (host, 64-bit pointers); the static_assert in the
   // driver's header holds it to 512 bytes on every target.
   std::printf("sizeof(Icm42688pDriver<float>) = %zu, <double> = %zu\n", sizeof(aloft::Icm42688pDriver<float>),
               sizeof(aloft::Icm42688pDriver<double>));

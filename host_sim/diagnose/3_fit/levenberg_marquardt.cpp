@@ -244,7 +244,7 @@ LeastSquaresResult minimise(const ArrowProblem& problem, const Eigen::VectorXd& 
     // Converged, too, when no step could gain more than the last bits move the cost
     // (kStepGain), or than the caller's tolerance where it asks for less: what the dance
     // of rejected and tiny steps round the minimum cost (case00 366.9 -> 274.8 M
-    // instructions, docs/diagnose.md).
+    // instructions, docs/validation/diagnose-speed.md).
     const double least_gain = std::min(kStepGain, options.relative_tolerance) * cost;
     if (lightly_damped_gain(normal, gradient, floor, lambda, predicted) < least_gain) break;
     const Point candidate = moved(problem, x, delta);

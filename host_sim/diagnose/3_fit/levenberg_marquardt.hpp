@@ -7,7 +7,7 @@
 // 60-flight session has ~180,000 residuals by ~190 parameters, while the normal
 // equations assembled block by block below are only 190 x 190. No Debian-packaged
 // solver other than Ceres exploits that structure, and Ceres, weighed on the same fits,
-// reached the same minima in more time (docs/diagnose.md; tests/diagnose/ceres/).
+// reached the same minima in more time (docs/validation/diagnose-speed.md; tests/diagnose/ceres/).
 #pragma once
 
 #include <Eigen/Core>

@@ -1,6 +1,6 @@
 // The fitter's problems (diagnose/3_fit/levenberg_marquardt.hpp, ArrowProblem) solved by
 // Ceres instead, for weighing the two on the same fits (fitter_comparison_benchmark.cpp,
-// docs/diagnose.md). Not part of `aloft`: built only where Ceres is installed.
+// docs/validation/diagnose-speed.md). Not part of `aloft`: built only where Ceres is installed.
 //
 // Each block is one ceres residual block over two parameter blocks, [shared] and its own
 // [local] (only [local] when nothing is shared), so Ceres sees the same arrow. Its

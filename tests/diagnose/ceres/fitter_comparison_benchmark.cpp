@@ -1,5 +1,5 @@
 // The hand-written Levenberg-Marquardt (diagnose/3_fit/levenberg_marquardt.hpp) against
-// Ceres on the same fits, in the same run (issue 30, item 4; docs/diagnose.md). Each fit
+// Ceres on the same fits, in the same run (issue 30, item 4; docs/validation/diagnose-speed.md). Each fit
 // is an effect fitted to generated flights the way fit_effect fits it
 // (effect_fit_problem.hpp): four effects on one 1 s, 1 kHz flight each, and
 // internal_momentum pooled over a session of 20 flights that share it. Every iteration runs both fitters from

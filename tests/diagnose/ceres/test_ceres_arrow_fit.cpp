@@ -1,6 +1,6 @@
 // ceres_arrow_fit: Ceres, given the fitter's problems, finds what the fitter finds: the
 // known minimum of exact data, and the same minimum of a real effect fit (the claim
-// docs/diagnose.md makes of the fitter_comparison_benchmark's table).
+// docs/validation/diagnose-speed.md makes of the fitter_comparison_benchmark's table).
 #include <catch2/catch.hpp>
 
 #include <cmath>

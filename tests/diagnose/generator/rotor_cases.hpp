@@ -1,7 +1,7 @@
 // Sessions for `internal_momentum` (issue 31): rotor sessions and sessions where a rotor
 // is absent but looks close, on three seed ranges: one to tune on, one withheld (never
-// tuned on; the figures in docs/diagnose.md are measured there), and a fresh one, measured
-// once after the large rotor's fit starts were repaired on failures seen on the other two.
+// tuned on; the figures in docs/validation/diagnose-accuracy.md are measured there), and a fresh one,
+// measured once after the large rotor's fit starts were repaired on failures seen on the other two.
 //
 // A session is several flights of one body and one sensor sharing one effect (the effect
 // drawn once from the session's seed, each throw and its noise from its own seed:
