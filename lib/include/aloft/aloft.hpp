@@ -36,7 +36,6 @@
 #include "aloft/sensor/stream_clock.hpp"
 #include "aloft/sensor/whole_microseconds.hpp"
 
-#include "aloft/onboard/flight_detector.hpp"
 #include "aloft/onboard/lever_arm_estimate.hpp"
 #include "aloft/onboard/lever_arm_estimator.hpp"
 #include "aloft/onboard/onboard_check.hpp"
