@@ -132,11 +132,12 @@ ALOFT_TEST_CASE("settings list: names every field of every onboard settings stru
               static_cast<int>(field_count<LeverArmEstimatorSettings<float>>()));
   ALOFT_CHECK(listed_settings<OnboardCheckSettings<float>>() ==
               static_cast<int>(field_count<OnboardCheckSettings<float>>()));
-  ALOFT_CHECK(listed_settings<OnboardBuildConstants>() == static_cast<int>(field_count<OnboardBuildConstants>()));
-  const int held = listed_settings<OnboardCheckSettings<float>>() + listed_settings<StreamClockSettings<float>>() +
-                   listed_settings<ReleaseDetectorSettings<float>>() +
-                   listed_settings<ReleaseWindowSettings<float>>() +
-                   listed_settings<LeverArmEstimatorSettings<float>>();
+  ALOFT_CHECK(listed_settings<OnboardBuildConstants>() ==
+              static_cast<int>(field_count<OnboardBuildConstants>()));
+  const int held =
+      listed_settings<OnboardCheckSettings<float>>() + listed_settings<StreamClockSettings<float>>() +
+      listed_settings<ReleaseDetectorSettings<float>>() + listed_settings<ReleaseWindowSettings<float>>() +
+      listed_settings<LeverArmEstimatorSettings<float>>();
   ALOFT_CHECK(listed_settings<Settings>() == static_cast<int>(field_count<Settings>()) - 5 + held);
   // The counting itself: a struct of three plain fields has three.
   struct Three {

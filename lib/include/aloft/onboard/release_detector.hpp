@@ -73,7 +73,7 @@ struct ReleaseDetectorSettings {
     });
     v(s.confirm_samples, [] {
       return SettingInfo{"release.confirm_samples", "samples",
-                         "and at least this many free samples (4 ms at 1 kHz). Set with confirm_us; not "
+                         "and at least this many free samples (at 1 kHz: 5 ms). Set with confirm_us; not "
                          "swept"};
     });
     v(s.release_fraction, [] {
