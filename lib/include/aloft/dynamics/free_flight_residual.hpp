@@ -43,8 +43,8 @@ struct FreeFlightSettings {
     v(s.torque_relative, [] {
       return SettingInfo{"release.free_flight.torque_relative", "",
                          "the gyro's torque over its scale above which a torque acts: a tensor 20 % off "
-                         "leaves at most about 0.2 of it, a hand that drives the rate about 1 (file "
-                         "comment); 0.5 lies between them. Derived, not swept"};
+                         "leaves at most about 0.2 of it, a hand that drives the rate about 1 "
+                         "(aloft/dynamics/free_flight_residual.hpp); 0.5 lies between. Derived, not swept"};
     });
     v(s.angular_accel_floor_rad_s2, [] {
       return SettingInfo{"release.free_flight.angular_accel_floor_rad_s2", "rad/s²",

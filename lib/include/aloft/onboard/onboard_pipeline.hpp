@@ -120,7 +120,7 @@ struct OnboardBuildConstants {
     v(s.live_simulations, [] {
       return SettingInfo{"K (OnboardPipeline<Scalar, K>)", "simulations",
                          "live simulations at once; the per-sample cost grows with it. The interface's "
-                         "K = 8 (SPEC section 5)"};
+                         "K = 8, at which every footprint is measured"};
     });
     v(s.history_samples, [] {
       return SettingInfo{"OnboardPipeline::history_samples", "samples",

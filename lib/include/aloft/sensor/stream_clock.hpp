@@ -45,9 +45,9 @@ struct StreamClockSettings {
     });
     v(s.derivative_half_span_us, [] {
       return SettingInfo{"clock.derivative_half_span_us", "µs",
-                         "w_dot is a central difference of gyro samples about this far either side: on "
-                         "the generated throws of tests/host/test_release_detection.cpp a one-sample "
-                         "difference at 4 kHz was too noisy for w_dot x r"};
+                         "w_dot is a central difference of gyro samples about this far either side, as "
+                         "the release detector was written: a one-sample difference at 4 kHz is too "
+                         "noisy for w_dot x r. Not swept"};
     });
     v(s.half_span_min_samples, [] {
       return SettingInfo{"clock.half_span_min_samples", "samples",
