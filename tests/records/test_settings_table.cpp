@@ -12,7 +12,8 @@
 
 namespace {
 
-const char* const kBegin = "<!-- settings table: generated from the code, tests/records/test_settings_table.cpp -->\n";
+const char* const kBegin =
+    "<!-- settings table: generated from the code, tests/records/test_settings_table.cpp -->\n";
 const char* const kEnd = "<!-- end of settings table -->";
 
 std::string number(double v) {
@@ -67,7 +68,8 @@ std::string page_table() {
   const std::string text = page.str();
   const std::size_t begin = text.find(kBegin);
   const std::size_t end = text.find(kEnd);
-  if (begin == std::string::npos || end == std::string::npos || end < begin) return "(no table between the markers)";
+  if (begin == std::string::npos || end == std::string::npos || end < begin)
+    return "(no table between the markers)";
   return text.substr(begin + std::string(kBegin).size(), end - begin - std::string(kBegin).size());
 }
 
