@@ -87,7 +87,8 @@ RecordDump read_record_dump(const std::string& path) {
     if (dump.records.empty() && tally.unknown_version_seen)
       throw Error(path + ": record version " + std::to_string(tally.first_unknown_version) + " at offset " +
                   std::to_string(tally.first_unknown_version_offset) +
-                  " is not one this aloft reads (version " + std::to_string(flight_record_version) + ")");
+                  " is not one this aloft reads (versions " + std::to_string(flight_record_oldest_version) +
+                  " to " + std::to_string(flight_record_version) + ")");
     if (tally.magic_slots == 0 && !dump.problems.empty())
       throw Error(path + ": not a flight record dump (no slot holds a record)");
     std::stable_sort(

@@ -112,6 +112,7 @@ nlohmann::json flight_json(const ListedRecord& listed) {
     seeds.push_back({{"rms_da_deg", number_or_null(r.turned, r.seeds[i].rms_da_rad * degrees_per_radian)},
                      {"rms_rel_err", number_or_null(r.turned, r.seeds[i].rms_rel_err)}});
   return {{"sequence", r.sequence},
+          {"record_version", r.version},
           {"flight", r.flight_number},
           {"offset", listed.offset},
           {"release_s", seconds(r.release_us)},

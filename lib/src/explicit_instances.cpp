@@ -22,8 +22,6 @@ template class SplittingIntegrator<float>;
 template class SplittingIntegrator<double>;
 template class DeviationStats<float>;
 template class DeviationStats<double>;
-template class FlightDetector<float>;
-template class FlightDetector<double>;
 template class OnboardCheck<float, 8>;
 template class OnboardCheck<double, 8>;
 template class LeverArmFit<float>;

@@ -1,5 +1,6 @@
-// The onboard check: seeding, the K-simulation window, flight detection, and its
-// verdict on a gyro stream from an exactly known motion.
+// The onboard check: seeding, the K-simulation window, and its verdict on a gyro stream
+// from an exactly known motion (release and landing are the pipeline's,
+// tests/core/test_onboard_pipeline.cpp).
 #include "aloft/onboard/onboard_check.hpp"
 #include "exact_tops.hpp"
 #include "test_api.hpp"
@@ -59,30 +60,6 @@ ALOFT_TEST_CASE("onboard check: exact tensor agrees, a wrong one is caught", "[o
   check_right_and_wrong_tensor<float>();
 }
 
-ALOFT_TEST_CASE("onboard check follows release and landing from the accelerometer", "[onboard]") {
-  aloft::OnboardCheckSettings<float> settings;
-  settings.seed_every = 10;
-  settings.flight.release_samples = 3;
-  aloft::OnboardCheck<float, 4> check(top_inertia<float>(1.0), settings);
-  const Vec3<float> in_hand(0.0f, 0.0f, 9.81f);
-  const Vec3<float> falling(0.1f, -0.2f, 0.3f);
-  const Vec3<float> impact(0.0f, 80.0f, 20.0f);
-  int used = 0;
-  for (int k = 0; k < 300; ++k) {
-    const Vec3<float> accel = k < 50 ? in_hand : (k < 250 ? falling : impact);
-    const Status s = check.update(kTop.omega(k * 1e-3).cast<float>(), accel, 1e-3f);
-    ALOFT_REQUIRE((s == Status::ok || s == Status::not_airborne));
-    if (s == Status::ok) ++used;
-  }
-  // Free fall from sample 50; release after 3 of them (52); landing at 250.
-  ALOFT_CHECK(used == 198);
-  ALOFT_CHECK(check.airborne_samples() == 198u);
-  ALOFT_CHECK(check.phase() == aloft::FlightPhase::landed);
-  ALOFT_CHECK(check.seeds_started() == 20u);
-  // After landing nothing more is taken.
-  ALOFT_CHECK(check.update(Vec3<float>(1, 2, 3), falling, 1e-3f) == Status::not_airborne);
-}
-
 ALOFT_TEST_CASE("onboard check refuses bad samples and keeps its state", "[onboard][bad-input]") {
   aloft::OnboardCheckSettings<double> settings;
   settings.seed_every = 5;
@@ -95,7 +72,11 @@ ALOFT_TEST_CASE("onboard check refuses bad samples and keeps its state", "[onboa
   ALOFT_CHECK(check.update(Vec3<double>(1, 1, 1), 0.0) == Status::non_positive_time_step);
   ALOFT_CHECK(check.update(Vec3<double>(1, 1, 1), -1e-3) == Status::non_positive_time_step);
   ALOFT_CHECK(check.update(Vec3<double>(1, 1, 1), nan) == Status::non_finite_input);
-  ALOFT_CHECK(check.update(Vec3<double>(1, 1, 1), Vec3<double>(0, nan, 0), 1e-3) == Status::non_finite_input);
+  // The same dt rule for a sample known finite and for a clipped one.
+  ALOFT_CHECK(check.update_finite(Vec3<double>(1, 1, 1), 0.0) == Status::non_positive_time_step);
+  ALOFT_CHECK(check.update_finite(Vec3<double>(1, 1, 1), -1e-3) == Status::non_positive_time_step);
+  ALOFT_CHECK(check.skip(0.0) == Status::non_positive_time_step);
+  ALOFT_CHECK(check.skip(nan) == Status::non_finite_input);
   ALOFT_CHECK(check.airborne_samples() == 20u);
   ALOFT_CHECK(check.overall().count() == count);
   ALOFT_CHECK(std::abs(check.overall().rms_da() - rms) <= 0.0);

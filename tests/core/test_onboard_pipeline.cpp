@@ -78,16 +78,24 @@ void gap_ends_flight() {
   settings.imu_position_m = Vec3<S>(S(0.03), S(0), S(0));
   aloft::OnboardPipeline<S, 8> pipeline(box<S>(), settings);
   aloft::FlightResult<S> flight;
-  int flights = 0;
+  int flights = 0, ended_by_gap = 0;
   for (int k = 0; k < 2000; ++k) {
     aloft::ImuSample<S> s = sample_at<S>(k < 1000 ? k : k - 1000 + 600, 0, false);
     s.t_us = 1000000u + static_cast<std::uint64_t>(k) * 1000u + (k >= 1000 ? 300000u : 0u);
     s.flags = 0;
     ALOFT_REQUIRE(pipeline.push(s) == Status::ok);
-    while (pipeline.take_finished_flight(flight)) ++flights;
+    while (pipeline.take_finished_flight(flight)) {
+      ++flights;
+      if (k != 1000) continue;
+      // The flight the gap ended: unlanded, ending at the last sample before the gap.
+      ++ended_by_gap;
+      ALOFT_CHECK(!flight.landed);
+      ALOFT_CHECK(flight.landing_us == 1000000u + 999u * 1000u);
+    }
     if (k == 999) ALOFT_CHECK(pipeline.airborne());
     if (k == 1000) ALOFT_CHECK(!pipeline.airborne());
   }
+  ALOFT_CHECK(ended_by_gap == 1);
   ALOFT_CHECK(flights >= 1);
   ALOFT_CHECK(pipeline.stream().gaps == 1u);
   ALOFT_CHECK(pipeline.stream().lost_us == 301000u);

@@ -4,10 +4,12 @@
 //   sensor/    the ICM-42688-P: registers, FIFO decode, driver, the sample stream's clock
 //   onboard/   release window -> lever arm -> check: the flight pipeline
 //   records/   flight records, their CRC and byte order, and the ring that stores them
-// status.hpp and cold_path.hpp are the conventions every folder uses.
+// status.hpp and cold_path.hpp are the conventions every folder uses; settings.hpp says how
+// every settings struct lists its settings once.
 #pragma once
 
 #include "aloft/cold_path.hpp"
+#include "aloft/settings.hpp"
 #include "aloft/status.hpp"
 
 #include "aloft/dynamics/angular_velocity.hpp"
@@ -36,7 +38,6 @@
 #include "aloft/sensor/stream_clock.hpp"
 #include "aloft/sensor/whole_microseconds.hpp"
 
-#include "aloft/onboard/flight_detector.hpp"
 #include "aloft/onboard/lever_arm_estimate.hpp"
 #include "aloft/onboard/lever_arm_estimator.hpp"
 #include "aloft/onboard/onboard_check.hpp"
@@ -51,3 +52,4 @@
 #include "aloft/records/flight_record_from_result.hpp"
 #include "aloft/records/little_endian.hpp"
 #include "aloft/records/record_ring.hpp"
+#include "aloft/records/settings_hash.hpp"

@@ -17,7 +17,7 @@ enum class [[nodiscard]] Status : std::uint8_t{
     tensor_breaks_triangle_inequality,  // some principal moment exceeds the sum of the other two
     invalid_dimension,                  // a mass, length or rate that must be positive is not
     zero_vector,                        // a direction was asked of a zero vector
-    not_airborne,                       // the onboard check is waiting for release or has landed
+    not_airborne,                       // no flight to report: none released, or none ended yet
     time_not_increasing,                // a sample's time stamp is not after the previous one
     bus_error,                          // the port's bus call failed
     sensor_not_found,                   // the chip's identity register holds another value

@@ -27,7 +27,7 @@ namespace {
 
 constexpr unsigned rest_samples = 200;
 constexpr unsigned samples = 1200;
-// Release is detected after release_samples (3) free-fall samples; seeds then start every
+// Release is found a few samples into free fall (3 are allowed for); seeds then start every
 // N = 10 airborne samples. Timing starts well after the K-th seed.
 constexpr unsigned first_timed_sample = rest_samples + 3 + aloft_stm32f405::live_simulations * 10 + 20;
 

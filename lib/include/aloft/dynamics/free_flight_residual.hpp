@@ -13,20 +13,45 @@
 #include "aloft/cold_path.hpp"
 #include "aloft/dynamics/inertia_tensor.hpp"
 #include "aloft/dynamics/rotation.hpp"
+#include "aloft/settings.hpp"
 
 namespace aloft {
 
 template <typename Scalar>
 struct FreeFlightSettings {
-  // Specific force left after the lever arm's is removed, counted as free flight
-  // (m/s²): floor + relative * |K r|. The floor covers sensor noise and air drag, the
-  // relative part an r, a scale factor or a filter that is off by that fraction.
+  // Specific force left after the lever arm's is removed, counted as free flight:
+  // floor + relative * |K r|.
   Scalar accel_floor_m_s2 = Scalar(2.0);
   Scalar accel_relative = Scalar(0.1);
-  // The gyro's torque over its scale (dimensionless) above which a torque acts.
   Scalar torque_relative = Scalar(0.5);
-  // Noise floor of w_dot from gyro differences (rad/s²), added to the torque's scale.
   Scalar angular_accel_floor_rad_s2 = Scalar(30);
+
+  // The one list of these settings (aloft/settings.hpp).
+  template <typename Self, typename Visitor>
+  static void visit(Self& s, Visitor&& v) {
+    v(s.accel_floor_m_s2, [] {
+      return SettingInfo{"release.free_flight.accel_floor_m_s2", "m/s²",
+                         "a sample is free while |a - K r| stays under this floor plus the relative part: "
+                         "sensor noise and air drag. Set on the generated throws of "
+                         "tests/host/test_release_detection.cpp, whose bars hold with it; not swept"};
+    });
+    v(s.accel_relative, [] {
+      return SettingInfo{"release.free_flight.accel_relative", "",
+                         "the relative part, times |K r|: an r, a scale factor or a filter 10 % off. Set "
+                         "with the floor on the same throws; not swept"};
+    });
+    v(s.torque_relative, [] {
+      return SettingInfo{"release.free_flight.torque_relative", "",
+                         "the gyro's torque over its scale above which a torque acts: a tensor 20 % off "
+                         "leaves at most about 0.2 of it, a hand that drives the rate about 1 "
+                         "(aloft/dynamics/free_flight_residual.hpp); 0.5 lies between. Derived, not swept"};
+    });
+    v(s.angular_accel_floor_rad_s2, [] {
+      return SettingInfo{"release.free_flight.angular_accel_floor_rad_s2", "rad/s²",
+                         "noise floor of w_dot from gyro differences, added to the torque's scale so a "
+                         "slow spin's noise is no torque. Set on the generated throws; not swept"};
+    });
+  }
 };
 
 // K(w, w_dot) with a = K r: the lever arm's specific force is linear in r.

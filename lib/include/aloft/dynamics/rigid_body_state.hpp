@@ -26,17 +26,34 @@ inline Status validate(const RigidBodyState<Scalar>& s) {
   return Status::ok;
 }
 
+// Checks a step known to be finite: strictly positive.
+template <typename Scalar>
+inline Status validate_finite_step(Scalar dt) {
+  return dt > Scalar(0) ? Status::ok : Status::non_positive_time_step;
+}
+
 // Checks a step: finite and strictly positive.
 template <typename Scalar>
 inline Status validate_step(Scalar dt) {
-  if (!std::isfinite(dt)) return Status::non_finite_input;
-  if (!(dt > Scalar(0))) return Status::non_positive_time_step;
-  return Status::ok;
+  return std::isfinite(dt) ? validate_finite_step(dt) : Status::non_finite_input;
 }
 
 template <typename Scalar>
 inline Scalar signed_step(Scalar dt, TimeDirection direction) {
   return direction == TimeDirection::forward ? dt : -dt;
+}
+
+// An integrator's checked step, the same for every integrator: advances `state` by dt
+// (> 0) in `direction` through integrator.step_unchecked(state, h). On a bad step or
+// state it returns the status and leaves `state` untouched.
+template <typename Integrator, typename Scalar>
+Status checked_step(const Integrator& integrator, RigidBodyState<Scalar>& state, Scalar dt,
+                    TimeDirection direction) {
+  Status s = validate_step(dt);
+  if (s == Status::ok) s = validate(state);
+  if (s != Status::ok) return s;
+  integrator.step_unchecked(state, signed_step(dt, direction));
+  return all_finite(state.orientation) ? Status::ok : Status::non_finite_input;
 }
 
 }  // namespace aloft

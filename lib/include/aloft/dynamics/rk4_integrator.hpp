@@ -20,11 +20,7 @@ class Rk4Integrator {
   // status and leaves `state` untouched.
   Status step(RigidBodyState<Scalar>& state, Scalar dt,
               TimeDirection direction = TimeDirection::forward) const {
-    Status s = validate_step(dt);
-    if (s == Status::ok) s = validate(state);
-    if (s != Status::ok) return s;
-    step_unchecked(state, signed_step(dt, direction));
-    return all_finite(state.orientation) ? Status::ok : Status::non_finite_input;
+    return checked_step(*this, state, dt, direction);
   }
 
   // The step itself, for loops that validated their inputs once (h may be negative):

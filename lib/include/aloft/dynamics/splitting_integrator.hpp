@@ -31,11 +31,7 @@ class SplittingIntegrator {
 
   Status step(RigidBodyState<Scalar>& state, Scalar dt,
               TimeDirection direction = TimeDirection::forward) const {
-    Status s = validate_step(dt);
-    if (s == Status::ok) s = validate(state);
-    if (s != Status::ok) return s;
-    step_unchecked(state, signed_step(dt, direction));
-    return all_finite(state.orientation) ? Status::ok : Status::non_finite_input;
+    return checked_step(*this, state, dt, direction);
   }
 
   void step_unchecked(RigidBodyState<Scalar>& state, Scalar h) const {

@@ -17,26 +17,63 @@
 
 #include "aloft/cold_path.hpp"
 #include "aloft/onboard/lever_arm_estimate.hpp"
+#include "aloft/settings.hpp"
 
 namespace aloft {
 
 template <typename Scalar>
 struct LeverArmEstimatorSettings {
-  Scalar estimate_min_turn_rad = Scalar(2);     // a flight's r fit joins the estimate past this turn
-  std::uint16_t half_block_samples = 16;        // the two halves alternate in blocks this long
-  Scalar halves_agree_m = Scalar(0.005);        // the halves' r agree within this
-  Scalar halves_agree_relative = Scalar(0.25);  // plus this fraction of |r|
-  // A given r gives way to the flight's fit after this many samples: enough that r over
-  // 16 ms at 4 kHz is no worse than a ruler's few millimetres.
+  Scalar estimate_min_turn_rad = Scalar(2);
+  std::uint16_t half_block_samples = 16;
+  Scalar halves_agree_m = Scalar(0.005);
+  Scalar halves_agree_relative = Scalar(0.25);
   std::uint16_t given_gives_way_after = 64;
-  std::uint16_t missed_gives_way_after = 8;  // the release's fit missed the given r: sooner
+  std::uint16_t missed_gives_way_after = 8;
   // Once the flight's fit has taken over, its r is solved anew every this many samples,
   // not at every one (at every one while the release is still on probation, where the
-  // release window dates it with that r): a 3x3 solve costs about 100 instructions (of a 2,500 budget per
-  // sample on a Cortex-M4F), while one more sample changes a least-squares fit over the
-  // 8 to 64 or more before it little. The release and landing figures of
-  // tests/host/test_release_detection.cpp were measured with it.
+  // release window dates it with that r).
   std::uint16_t solve_every_samples = 8;
+
+  // The one list of these settings (aloft/settings.hpp).
+  template <typename Self, typename Visitor>
+  static void visit(Self& s, Visitor&& v) {
+    v(s.estimate_min_turn_rad, [] {
+      return SettingInfo{"lever_arm.estimate_min_turn_rad", "rad",
+                         "a flight's r fit joins the recording's estimate only past this turn, so a "
+                         "world-fixed hand force, which turns in body axes, cannot pass for a body-fixed "
+                         "r. Not swept"};
+    });
+    v(s.half_block_samples, [] {
+      return SettingInfo{"lever_arm.half_block_samples", "samples",
+                         "the fit's two halves, which must agree, alternate in blocks this long. Not swept"};
+    });
+    v(s.halves_agree_m, [] {
+      return SettingInfo{"lever_arm.halves_agree_m", "m",
+                         "the halves' r agree within this, plus the relative part. Not swept: a ruler's "
+                         "few millimetres"};
+    });
+    v(s.halves_agree_relative, [] {
+      return SettingInfo{"lever_arm.halves_agree_relative", "", "plus this fraction of |r|. Not swept"};
+    });
+    v(s.given_gives_way_after, [] {
+      return SettingInfo{"lever_arm.given_gives_way_after", "samples",
+                         "a given r gives way to the flight's own fit after this many torque-free "
+                         "samples: r fitted over 16 ms at 4 kHz is no worse than a ruler's few "
+                         "millimetres (derived, not swept)"};
+    });
+    v(s.missed_gives_way_after, [] {
+      return SettingInfo{"lever_arm.missed_gives_way_after", "samples",
+                         "sooner when the release's fit missed the given r: measured with "
+                         "release.given_r_tolerance_m (a given r 3 mm off: 100 % within 10 ms)"};
+    });
+    v(s.solve_every_samples, [] {
+      return SettingInfo{"lever_arm.solve_every_samples", "samples",
+                         "once the flight's fit has taken over, its r is solved anew every this many "
+                         "samples: 2,797 -> 2,731 instructions per sample on the STM32F405, the release "
+                         "figures the same but one landing at 100-250 Hz; solving every 8 on probation "
+                         "too made one generated release early"};
+    });
+  }
 };
 
 // Limits the estimator shares with the release detector (ReleaseDetectorSettings).

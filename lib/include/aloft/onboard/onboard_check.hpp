@@ -1,8 +1,7 @@
 // The onboard check: the seed study's "a simulation from every sampled state", in the
-// fixed memory of a firmware. Fed one gyro sample at a time (and optionally one
-// accelerometer sample), it
-//   - waits for release and stops at landing when accelerometer samples are given
-//     (aloft/onboard/flight_detector.hpp); without them every sample counts as airborne;
+// fixed memory of a firmware. Fed one gyro sample at a time, every one of them airborne
+// (the onboard pipeline, aloft/onboard/onboard_pipeline.hpp, finds release and landing on a
+// spinning, off-centre IMU and feeds it the samples in between), it
 //   - every `seed_every` airborne samples starts a simulation from the measured rate;
 //     at most K are alive, and starting one more retires the oldest;
 //   - advances every live simulation one step per sample (torque-free body rate, RK4)
@@ -24,18 +23,31 @@
 
 #include "aloft/cold_path.hpp"
 #include "aloft/dynamics/deviation.hpp"
-#include "aloft/onboard/flight_detector.hpp"
 #include "aloft/lanes/lane_angle.hpp"
 #include "aloft/dynamics/principal_frame.hpp"
+#include "aloft/settings.hpp"
 
 namespace aloft {
 
 template <typename Scalar>
 struct OnboardCheckSettings {
   std::uint16_t seed_every = 10;  // samples between seeds (N)
-  // Maps gyro (sensor) axes into body axes; identity when the gyro is aligned.
   Quat<Scalar> sensor_to_body = Quat<Scalar>::Identity();
-  FlightDetectorSettings<Scalar> flight = {};
+
+  // The one list of these settings (aloft/settings.hpp).
+  template <typename Self, typename Visitor>
+  static void visit(Self& s, Visitor&& v) {
+    v(s.seed_every, [] {
+      return SettingInfo{"check.seed_every", "samples",
+                         "a simulation is seeded every this many airborne samples (the seed study's N): "
+                         "10 ms at 1 kHz, so K = 8 live seeds span the newest 80 ms. Not swept"};
+    });
+    v(s.sensor_to_body, [] {
+      return SettingInfo{"check.sensor_to_body", "quaternion",
+                         "sensor to body axes, for gyro and accelerometer; identity when the IMU is "
+                         "mounted aligned. A property of the mounting"};
+    });
+  }
 };
 
 // What one seeded simulation has accumulated so far.
@@ -70,37 +82,25 @@ class OnboardCheck {
       : coefficients_(frame.coefficients()),
         seed_every_(settings.seed_every > 0 ? settings.seed_every : std::uint16_t{1}),
         sensor_to_principal_(frame.to_body_matrix().transpose() *
-                             settings.sensor_to_body.normalized().toRotationMatrix()),
-        detector_(settings.flight) {}
+                             settings.sensor_to_body.normalized().toRotationMatrix()) {}
 
  public:
-  // One gyro sample (rad/s, sensor axes) taken dt seconds after the previous one (dt is
-  // ignored for the very first airborne sample). Returns ok, not_airborne (sample not
-  // used), or an error status, in which case nothing changes.
+  // One airborne gyro sample (rad/s, sensor axes) taken dt seconds after the previous
+  // one (dt is ignored for the very first). Returns ok, or an error status, in which case
+  // nothing changes.
   Status update(const Vec3<Scalar>& gyro, Scalar dt) {
-    const Status s = validate_sample(gyro, dt);
+    const Status s = all_finite(gyro) ? dt_status(dt, false) : Status::non_finite_input;
     if (s != Status::ok) return s;
-    if (detector_.phase() == FlightPhase::landed) return Status::not_airborne;
     use_sample(gyro, dt);
     return Status::ok;
   }
 
-  // The same with an accelerometer sample (m/s², sensor axes) for release and landing.
-  Status update(const Vec3<Scalar>& gyro, const Vec3<Scalar>& accel, Scalar dt) {
-    Status s = validate_sample(gyro, dt);
-    if (s == Status::ok && !all_finite(accel)) s = Status::non_finite_input;
-    if (s != Status::ok) return s;
-    if (detector_.update(accel) != FlightPhase::airborne) return Status::not_airborne;
-    use_sample(gyro, dt);
-    return Status::ok;
-  }
-
-  // update() for a gyro sample the caller has already found finite and a finite dt (the
-  // onboard pipeline tests every sample as it arrives, and feeds only airborne ones):
-  // only dt > 0 is tested, not the numbers again (about 20 instructions per sample on a
-  // Cortex-M4F). Returns ok or non_positive_time_step, in which case nothing changes.
+  // update() for a gyro sample and a dt the caller has already found finite (the onboard
+  // pipeline tests every sample as it arrives): the numbers are not tested again (about
+  // 20 instructions per sample on a Cortex-M4F). Returns ok or non_positive_time_step.
   Status update_finite(const Vec3<Scalar>& gyro, Scalar dt) {
-    if (samples_ > 0 && !(dt > Scalar(0))) return Status::non_positive_time_step;
+    const Status s = dt_status(dt, true);
+    if (s != Status::ok) return s;
     use_sample(gyro, dt);
     return Status::ok;
   }
@@ -108,14 +108,12 @@ class OnboardCheck {
   // A sample whose gyro is no measurement (an axis clipped): the live simulations step
   // over its dt, nothing is compared and no seed starts. Returns ok or an error status.
   Status skip(Scalar dt) {
-    if (samples_ == 0) return std::isfinite(dt) ? Status::ok : Status::non_finite_input;
-    const Status s = validate_step(dt);
-    if (s != Status::ok) return s;
+    const Status s = dt_status(dt, false);
+    if (s != Status::ok || samples_ == 0) return s;
     step_live(half_step_coefficients(coefficients_, dt));
     return Status::ok;
   }
 
-  FlightPhase phase() const { return detector_.phase(); }
   std::uint32_t airborne_samples() const { return samples_; }
   std::uint32_t seeds_started() const { return seeds_started_; }
   int live_simulations() const { return live_; }
@@ -169,10 +167,12 @@ class OnboardCheck {
     Scalar max_square_rel = Scalar(0);
   };
 
-  Status validate_sample(const Vec3<Scalar>& gyro, Scalar dt) const {
-    if (!all_finite(gyro)) return Status::non_finite_input;
-    if (samples_ > 0) return validate_step(dt);
-    return std::isfinite(dt) ? Status::ok : Status::non_finite_input;
+  // dt's rule, in one place: the first airborne sample has nothing to step from, so its
+  // dt need only be finite; every later one must pass validate_step (finite, > 0).
+  // known_finite: the caller has tested it already (a constant where it is inlined).
+  Status dt_status(Scalar dt, bool known_finite) const {
+    if (samples_ > 0) return known_finite ? validate_finite_step(dt) : validate_step(dt);
+    return known_finite || std::isfinite(dt) ? Status::ok : Status::non_finite_input;
   }
 
   void use_sample(const Vec3<Scalar>& gyro, Scalar dt) {
@@ -266,7 +266,6 @@ class OnboardCheck {
   EulerCoefficients<Scalar> coefficients_;
   std::uint16_t seed_every_;  // of the settings (0 taken as 1); the rest is used up front
   Mat3<Scalar> sensor_to_principal_;
-  FlightDetector<Scalar> detector_;
   Slot slots_[K] = {};
   SeedSummary<Scalar> retired_first_[kept_first_seeds] = {};
   DeviationStats<Scalar> retired_;  // over the comparisons of every retired seed

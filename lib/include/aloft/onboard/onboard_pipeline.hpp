@@ -28,6 +28,7 @@
 #include "aloft/onboard/onboard_check.hpp"
 #include "aloft/onboard/release_detector.hpp"
 #include "aloft/onboard/release_window.hpp"
+#include "aloft/settings.hpp"
 #include "aloft/sensor/stream_clock.hpp"
 #include "aloft/sensor/whole_microseconds.hpp"
 
@@ -35,25 +36,114 @@ namespace aloft {
 
 template <typename Scalar>
 struct OnboardPipelineSettings {
-  OnboardCheckSettings<Scalar> check = {};  // seed_every, sensor_to_body (gyro and accelerometer)
-  // The accelerometer's position in body axes from the centre of mass (m), when the body
-  // file gives `imu.position`; otherwise it is estimated from the data.
+  OnboardCheckSettings<Scalar> check = {};
   bool imu_position_known = false;
   Vec3<Scalar> imu_position_m = Vec3<Scalar>::Zero();
-  std::uint32_t bridge_gap_up_to_us = 20000;       // longer: live simulations end, seeded anew
-  std::uint32_t end_flight_after_gap_us = 200000;  // longer, while airborne: flight ends unlanded
-  StreamClockSettings<Scalar> clock = {};          // gaps, the running interval, the w_dot span
+  std::uint32_t bridge_gap_up_to_us = 20000;
+  std::uint32_t end_flight_after_gap_us = 200000;
+  StreamClockSettings<Scalar> clock = {};
   ReleaseDetectorSettings<Scalar> release = {};
   ReleaseWindowSettings<Scalar> release_window = {};
   LeverArmEstimatorSettings<Scalar> lever_arm = {};
-  std::uint32_t min_flight_us = 100000;           // shorter flights are dropped (a jolt, not a throw)
-  std::uint32_t rearm_after_landing_us = 300000;  // no release this soon after a landing (bounces)
-  Scalar turned_at_least_rad = Scalar(0.5);       // FlightResult::turned
-  // The check is fed this many samples behind the newest, so that a landing can still be
-  // dated back over them (the landing needs `release.landing_samples` of evidence, dated
-  // back a few more).
+  std::uint32_t min_flight_us = 100000;
+  std::uint32_t rearm_after_landing_us = 300000;
+  Scalar turned_at_least_rad = Scalar(0.5);
   std::uint16_t feed_lag_samples = 8;
+
+  // The one list of the pipeline's settings, its parts' included (aloft/settings.hpp).
+  template <typename Self, typename Visitor>
+  static void visit(Self& s, Visitor&& v) {
+    visit_settings(s.check, v);
+    visit_own(s, v);
+    visit_settings(s.clock, v);
+    visit_settings(s.release, v);
+    visit_settings(s.release_window, v);
+    visit_settings(s.lever_arm, v);
+  }
+
+ private:
+  template <typename Self, typename Visitor>
+  static void visit_own(Self& s, Visitor& v) {
+    v(s.imu_position_known, [] {
+      return SettingInfo{"imu_position_known", "",
+                         "the body file gives imu.position: r is taken from imu_position_m, else it is "
+                         "estimated from the data. A property of the body"};
+    });
+    v(s.imu_position_m, [] {
+      return SettingInfo{"imu_position_m", "m",
+                         "the accelerometer's position from the centre of mass, body axes: measured on "
+                         "the body, not tuned"};
+    });
+    v(s.bridge_gap_up_to_us, [] {
+      return SettingInfo{"bridge_gap_up_to_us", "µs",
+                         "a longer gap ends the live simulations; they are seeded anew after it. Not swept: "
+                         "20 samples at 1 kHz"};
+    });
+    v(s.end_flight_after_gap_us, [] {
+      return SettingInfo{"end_flight_after_gap_us", "µs",
+                         "a longer gap while airborne ends the flight unlanded. Not swept"};
+    });
+    v(s.min_flight_us, [] {
+      return SettingInfo{"min_flight_us", "µs",
+                         "shorter flights are dropped: a 5 cm drop; with r fitted, a lever arm fitted to "
+                         "a waving hand explained its force for up to 80 ms in generated recordings"};
+    });
+    v(s.rearm_after_landing_us, [] {
+      return SettingInfo{"rearm_after_landing_us", "µs",
+                         "no release this soon after a landing (bounces). Not swept"};
+    });
+    v(s.turned_at_least_rad, [] {
+      return SettingInfo{"turned_at_least_rad", "rad",
+                         "FlightResult::turned: a flight that turned less (the integral of |w|) is a drop "
+                         "and gets no DA. Not swept"};
+    });
+    v(s.feed_lag_samples, [] {
+      return SettingInfo{"feed_lag_samples", "samples",
+                         "the check is fed this far behind the newest sample, so a landing (3 samples of "
+                         "evidence, dated back a few more) can still be dated back over them. Derived"};
+    });
+  }
 };
+
+// The samples the pipeline holds back (OnboardPipeline::history_samples).
+constexpr int onboard_history_samples = 32;
+
+// What a firmware fixes when it is compiled; the records' settings hash takes these too.
+struct OnboardBuildConstants {
+  std::uint16_t live_simulations = 0;
+  std::uint16_t history_samples = 0;
+  std::uint16_t release_window_blocks = 0;
+
+  // The one list of them (aloft/settings.hpp).
+  template <typename Self, typename Visitor>
+  static void visit(Self& s, Visitor&& v) {
+    v(s.live_simulations, [] {
+      return SettingInfo{"K (OnboardPipeline<Scalar, K>)", "simulations",
+                         "live simulations at once; the per-sample cost grows with it. The interface's "
+                         "K = 8, at which every footprint is measured"};
+    });
+    v(s.history_samples, [] {
+      return SettingInfo{"OnboardPipeline::history_samples", "samples",
+                         "the samples held back: a release is confirmed and dated back within them. On "
+                         "tests/host/test_release_detection.cpp 28 changed one row of the real-hand "
+                         "table (23 releases in contact, not 21) and 24 dated a release early; a power "
+                         "of two keeps the ring index a mask (28 cost 49 instructions per sample on the "
+                         "STM32F405)"};
+    });
+    v(s.release_window_blocks, [] {
+      return SettingInfo{"ReleaseWindow::ring_blocks", "blocks",
+                         "blocks the release window holds: 2 window_us / block_us + 2, derived from their "
+                         "defaults (a static_assert); 10 lost 1-4 % of releases within -10...+20 ms in "
+                         "every row of the real-hand table"};
+    });
+  }
+};
+
+// A pipeline's build constants with K live simulations.
+constexpr OnboardBuildConstants onboard_build_constants(int live_simulations) {
+  return {static_cast<std::uint16_t>(live_simulations), static_cast<std::uint16_t>(onboard_history_samples),
+          static_cast<std::uint16_t>(ReleaseWindow<float>::ring_blocks)};
+}
 
 template <typename Scalar>
 struct FlightResult {
@@ -79,7 +169,7 @@ struct FlightResult {
 template <typename Scalar, int K>
 class OnboardPipeline {
  public:
-  static constexpr int history_samples = 32;
+  static constexpr int history_samples = onboard_history_samples;
 
   OnboardPipeline(const InertiaTensor<Scalar>& inertia, const OnboardPipelineSettings<Scalar>& settings)
       : inertia_(inertia),

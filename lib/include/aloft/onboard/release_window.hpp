@@ -28,30 +28,63 @@
 
 #include "aloft/cold_path.hpp"
 #include "aloft/onboard/lever_arm_estimate.hpp"
+#include "aloft/settings.hpp"
 
 namespace aloft {
 
 template <typename Scalar>
 struct ReleaseWindowSettings {
-  // Free flight over this long after the proposed release before the release is dated (µs):
-  // about the last 20-30 ms over which a real hand lets go.
   std::uint32_t window_us = 25000;
-  // Block span (µs): 5 ms is one period of the lowest structural mode (200 Hz and up cancel
-  // in the mean, 100 Hz is halved), and fine enough to date a release to a few ms.
   std::uint32_t block_us = 5000;
-  std::uint16_t fit_blocks = 3;  // the newest blocks that set r and the flight's level
+  std::uint16_t fit_blocks = 3;
   // A block's mean residual off the flight's level that is still free flight (m/s²):
-  // floor + relative |K r|. The floor: white noise averaged over a block (< 0.1), a mode's
-  // leak through the block mean, the drag turning with the body (< 0.1 over 25 ms); the
-  // relative part: scale errors of 2 % and an r off by a millimetre. Chosen on the tuned
-  // seed set of tests/host/test_release_detection.cpp, "real hands", reported on others.
+  // floor + relative |K r|.
   Scalar block_limit_floor_m_s2 = Scalar(0.8);
   Scalar block_limit_relative = Scalar(0.02);
-  std::uint32_t min_free_us = 15000;  // a shorter trailing run of free blocks: no flight yet
-  // Blocks of fewer samples (under 800 Hz at 5 ms) keep the sample-by-sample release: the
-  // anti-alias filter's tail spans a block there (tests/host/test_release_detection.cpp,
-  // 100-700 Hz: dated by blocks, 25-88 % came within 10 ms, against 98-100 %).
+  std::uint32_t min_free_us = 15000;
   std::uint16_t min_block_samples = 4;
+
+  // The one list of these settings (aloft/settings.hpp).
+  template <typename Self, typename Visitor>
+  static void visit(Self& s, Visitor&& v) {
+    v(s.window_us, [] {
+      return SettingInfo{"release_window.window_us", "µs",
+                         "free flight this long after a proposed release before it is dated over blocks: "
+                         "on the held-back real throws a hand let go over its last 20-30 ms"};
+    });
+    v(s.block_us, [] {
+      return SettingInfo{"release_window.block_us", "µs",
+                         "block span: one period of a 200 Hz mode, so structural modes average out. Chosen "
+                         "among 4-5 ms on the tuned seed set of tests/host/test_release_detection.cpp, "
+                         "\"real hands\", and reported on the held-out set"};
+    });
+    v(s.fit_blocks, [] {
+      return SettingInfo{"release_window.fit_blocks", "blocks",
+                         "the newest blocks that set r and the flight's level (15 ms of the 25). Not swept"};
+    });
+    v(s.block_limit_floor_m_s2, [] {
+      return SettingInfo{"release_window.block_limit_floor_m_s2", "m/s²",
+                         "a block's mean residual this far off the flight's level is still free: white "
+                         "noise over a block, a mode's leak, drag. Chosen among 0.4-1.0 on the tuned seed "
+                         "set, \"real hands\""};
+    });
+    v(s.block_limit_relative, [] {
+      return SettingInfo{"release_window.block_limit_relative", "",
+                         "plus this fraction of |K r| (scale errors of 2 %, r a millimetre off). Chosen "
+                         "among 0.01-0.04 on the tuned seed set"};
+    });
+    v(s.min_free_us, [] {
+      return SettingInfo{"release_window.min_free_us", "µs",
+                         "a shorter trailing run of free blocks withdraws the proposal: a body rang for "
+                         "about 15 ms after the hand let go on the held-back real throws"};
+    });
+    v(s.min_block_samples, [] {
+      return SettingInfo{"release_window.min_block_samples", "samples",
+                         "blocks of fewer samples (under 800 Hz) keep the sample-by-sample release: dated "
+                         "by blocks, 25-88 % of the 100-700 Hz generated releases came within 10 ms, "
+                         "against 98-100 %"};
+    });
+  }
 };
 
 // Where a lever arm may lie: a ball (about a given r, or about the centre of mass), and
@@ -77,8 +110,14 @@ template <typename Scalar>
 class ReleaseWindow {
  public:
   // The window's 5 closed blocks past the proposal, its own block, the open one, and 5
-  // before it: a proposal held back by ringing can be moved up to 25 ms earlier.
+  // before it: a proposal held back by ringing can be moved up to 25 ms earlier. Fixed
+  // at build time (the records' settings hash takes it), derived from the default
+  // window_us and block_us: other settings than those move the reach with them.
   static constexpr int ring_blocks = 12;
+  static_assert(ring_blocks == 2 * static_cast<int>(ReleaseWindowSettings<float>{}.window_us /
+                                                    ReleaseWindowSettings<float>{}.block_us) +
+                                   2,
+                "the ring holds the window's blocks either side of the proposal, its own and the open one");
 
   // The settings are held, not copied (a pipeline's parts share its one copy): they must
   // outlive the window.

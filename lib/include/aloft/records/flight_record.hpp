@@ -2,10 +2,13 @@
 // versioned slot of 128 bytes that a firmware appends to its record ring
 // (aloft/records/record_ring.hpp) and `aloft records` reads back from a dump. Every field is
 // little-endian and written byte by byte (aloft/records/little_endian.hpp); floats are IEEE-754
-// binary32; angles are radians. Layout of version 1:
+// binary32; angles are radians. Versions 1 and 2 share one layout and differ only in what
+// the settings hash covers (aloft/records/settings_hash.hpp): version 2 walks the settings'
+// one list with the build constants; version 1, written before, hashed a shorter list.
+// Both are read, and a record says which it is. Layout:
 //   offset size field
 //        0    4 magic "ALFR" (41 4C 46 52)
-//        4    2 version (1)
+//        4    2 version (2; 1 for records written before)
 //        6    2 record size in bytes (128)
 //        8    4 sequence number: 1, 2, ... over the life of the ring, across wraps
 //       12    4 flight number within its recording (FlightResult::flight_number)
@@ -45,7 +48,8 @@ constexpr std::uint32_t flight_record_size = 128;
 constexpr std::uint32_t flight_record_body_size = 120;  // programmed first: bytes 0..119
 constexpr std::uint32_t flight_record_crc_offset = 116;
 constexpr std::uint32_t flight_record_commit_offset = 120;
-constexpr std::uint16_t flight_record_version = 1;
+constexpr std::uint16_t flight_record_version = 2;         // the version written
+constexpr std::uint16_t flight_record_oldest_version = 1;  // the oldest one read
 constexpr std::uint32_t flight_record_seeds = 4;
 constexpr std::uint8_t flight_record_magic[4] = {0x41, 0x4C, 0x46, 0x52};   // "ALFR"
 constexpr std::uint8_t flight_record_commit[4] = {0x43, 0x4F, 0x4D, 0x54};  // "COMT"
@@ -56,6 +60,7 @@ struct FlightRecordSeed {
 };
 
 struct FlightRecord {
+  std::uint16_t version = flight_record_version;  // as read; encoding writes flight_record_version
   std::uint32_t sequence = 0;
   std::uint32_t flight_number = 0;
   std::uint64_t release_us = 0;
@@ -135,6 +140,7 @@ inline void encode_flight_record(const FlightRecord& r, std::uint8_t (&slot)[fli
 
 // The fields of a slot whose state is `valid` (left untouched otherwise).
 inline void decode_flight_record_fields(const std::uint8_t* p, FlightRecord& r) {
+  r.version = le::get_u16(p + 4);
   r.sequence = le::get_u32(p + 8);
   r.flight_number = le::get_u32(p + 12);
   r.release_us = le::get_u64(p + 16);
@@ -175,7 +181,9 @@ inline SlotState classify_slot(const std::uint8_t* slot) {
   for (std::uint32_t i = 0; i < flight_record_size && erased; ++i) erased = slot[i] == 0xFF;
   if (erased) return SlotState::erased;
   if (!bytes_equal(slot, flight_record_magic, 4)) return SlotState::no_magic;
-  if (le::get_u16(slot + 4) != flight_record_version || le::get_u16(slot + 6) != flight_record_size)
+  const std::uint16_t version = le::get_u16(slot + 4);
+  if (version < flight_record_oldest_version || version > flight_record_version ||
+      le::get_u16(slot + 6) != flight_record_size)
     return SlotState::unknown_version;
   if (!bytes_equal(slot + flight_record_commit_offset, flight_record_commit, 4))
     return SlotState::not_committed;

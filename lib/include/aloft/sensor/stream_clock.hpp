@@ -15,6 +15,7 @@
 #include <cstdint>
 
 #include "aloft/sensor/imu_sample.hpp"
+#include "aloft/settings.hpp"
 #include "aloft/status.hpp"
 #include "aloft/sensor/whole_microseconds.hpp"
 
@@ -22,13 +23,43 @@ namespace aloft {
 
 template <typename Scalar>
 struct StreamClockSettings {
-  Scalar gap_interval_factor = Scalar(3);        // stamps this many running intervals apart: a gap
-  std::uint16_t interval_mean_samples = 16;      // the running interval's memory (samples)
-  std::uint32_t derivative_half_span_us = 1000;  // w_dot from gyro samples about this far (µs) either side
-  // h bounds: 1 sample is the least a central difference takes; 4 at 4 kHz keeps the span
-  // at 1 ms there, and the history (32 samples) holds the 2h + 1 it needs many times over.
+  Scalar gap_interval_factor = Scalar(3);
+  std::uint16_t interval_mean_samples = 16;
+  std::uint32_t derivative_half_span_us = 1000;
   std::uint16_t half_span_min_samples = 1;
   std::uint16_t half_span_max_samples = 4;
+
+  // The one list of these settings (aloft/settings.hpp): unit, meaning, and what chose
+  // each value.
+  template <typename Self, typename Visitor>
+  static void visit(Self& s, Visitor&& v) {
+    v(s.gap_interval_factor, [] {
+      return SettingInfo{"clock.gap_interval_factor", "intervals",
+                         "stamps this many running sample intervals apart are a gap. Not swept: 3 means "
+                         "at least two samples are missing, far beyond a sensor clock's jitter"};
+    });
+    v(s.interval_mean_samples, [] {
+      return SettingInfo{"clock.interval_mean_samples", "samples",
+                         "memory of the running sample interval. Not swept: long enough to average "
+                         "the stamps' jitter, short enough to follow a change of rate"};
+    });
+    v(s.derivative_half_span_us, [] {
+      return SettingInfo{"clock.derivative_half_span_us", "µs",
+                         "w_dot is a central difference of gyro samples about this far either side, as "
+                         "the release detector was written: a one-sample difference at 4 kHz is too "
+                         "noisy for w_dot x r. Not swept"};
+    });
+    v(s.half_span_min_samples, [] {
+      return SettingInfo{"clock.half_span_min_samples", "samples",
+                         "fewest samples either side of that difference: 1 is the least a central "
+                         "difference takes (a definition, not a tuning)"};
+    });
+    v(s.half_span_max_samples, [] {
+      return SettingInfo{"clock.half_span_max_samples", "samples",
+                         "most samples either side: 4 keeps the span at 1 ms at 4 kHz, the fastest "
+                         "rate measured, with 2h + 1 far inside the 32-sample history"};
+    });
+  }
 };
 
 // The whole recording so far.
