@@ -28,7 +28,8 @@ using DynamicsState = Eigen::Matrix<double, 6, 1>;
 // (case00: 524 -> 517 M instructions, the same arithmetic, bit for bit).
 struct Motion {
   DynamicsState x;
-  Eigen::Vector3d rate = Eigen::Vector3d::Zero();  // rigid_rate(x.head<3>()), when rate_known; never for a rotor
+  Eigen::Vector3d rate =
+      Eigen::Vector3d::Zero();  // rigid_rate(x.head<3>()), when rate_known; never for a rotor
   bool rate_known = false;
 };
 

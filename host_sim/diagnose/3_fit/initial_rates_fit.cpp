@@ -34,7 +34,7 @@ EffectFit rates_fitted_from(const FitSetup& setup, const EffectFit& fixed,
 }
 
 FitSetup rates_setup(const EffectFit& fixed, const NominalInertia& nominal,
-                  const std::vector<FlightData>& data) {
+                     const std::vector<FlightData>& data) {
   FitSetup setup{fixed.effect, &nominal, &data, {}, 0.0, fixed.base, Eigen::VectorXd()};
   for (const FlightData& d : data) {
     setup.refs.push_back(compound_reference_index(setup.model(), *d.flight));

@@ -14,9 +14,9 @@ namespace {
 using Vec3 = Eigen::Vector3d;
 
 FitSetup solution_setup(const EffectFit& fit, const NominalInertia& nominal,
-                     const std::vector<FlightData>& flights, double impulse_time_s) {
+                        const std::vector<FlightData>& flights, double impulse_time_s) {
   return FitSetup{fit.effect,     &nominal, &flights,         {fit.flights[0].ref},
-               impulse_time_s, fit.base, Eigen::VectorXd()};
+                  impulse_time_s, fit.base, Eigen::VectorXd()};
 }
 
 bool same_values(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
