@@ -55,9 +55,13 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::ve
   return result_of(setup, fitted, p);
 }
 
-EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalInertia& nominal,
-                           const std::vector<FlightData>& data, const Eigen::VectorXd* theta_start,
-                           unsigned threads, bool readings_start_when_seeded) {
+namespace {
+
+// fit_added_effect from base's fit; where `readings_start_when_seeded`, a seeded fit is
+// also tried from the added effect's start read off the readings (SecondStart).
+EffectFit fit_added_from(const EffectFit& base, Effect added, const NominalInertia& nominal,
+                         const std::vector<FlightData>& data, const Eigen::VectorXd* theta_start,
+                         unsigned threads, bool readings_start_when_seeded) {
   if (base.effect == Effect::none && base.base.empty()) {
     return fit_effect(added, nominal, data, &base, theta_start, threads);
   }
@@ -98,6 +102,22 @@ EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalIne
     fitted = lower_from_readings(setup, problem, std::move(fitted), theta_start->head(base.theta.size()));
   }
   return result_of(setup, fitted, p);
+}
+
+}  // namespace
+
+EffectFit fit_added_effect(const EffectFit& base, Effect added, const NominalInertia& nominal,
+                           const std::vector<FlightData>& data, const Eigen::VectorXd* theta_start,
+                           unsigned threads, SecondStart second) {
+  const bool readings_when_seeded = second == SecondStart::readings_when_seeded;
+  EffectFit fit = fit_added_from(base, added, nominal, data, theta_start, threads, readings_when_seeded);
+  const bool from_nominal = second == SecondStart::base_at_nominal && theta_start == nullptr &&
+                            base.theta.size() > 0 && describe(added).start_from_readings != nullptr;
+  if (!from_nominal) return fit;
+  EffectFit at_nominal = base;
+  at_nominal.theta.setZero();
+  EffectFit other = fit_added_from(at_nominal, added, nominal, data, nullptr, threads, false);
+  return other.cost < fit.cost ? other : fit;
 }
 
 }  // namespace aloft::host::diagnose

@@ -38,7 +38,6 @@ class FlightsLeftOut : public HeldOutRule {
 
  private:
   EffectFit fit_pooled(Effect effect) const;
-  EffectFit fit_pooled_on(const Candidate& base, Effect added) const;
   void judge_leaving_flights_out(Candidate& c) const;
   std::vector<OwnFit> fit_each_flight(const Candidate& base, const Candidate& c) const;
 
