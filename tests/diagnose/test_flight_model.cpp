@@ -8,6 +8,7 @@
 #include <complex>
 
 #include "diagnose/2_model/flight_model.hpp"
+#include "diagnose/2_model/reading_derivatives.hpp"
 
 using namespace aloft::host::diagnose;
 

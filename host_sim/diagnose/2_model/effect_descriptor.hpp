@@ -68,7 +68,7 @@ constexpr double kLargestSensibleScaleError = 0.30;
 // neutral model is a limit rather than a point (neutral_at_zero false): the cost of each
 // start of a grid is looked at first (one simulation each), the best is refined, and the
 // best other start within the search window is refined too and reported when it reaches
-// another minimum (3_fit/effect_fit.hpp, OtherMinimum).
+// another minimum (3_fit/effect_fit_result.hpp, OtherMinimum).
 struct StartGrid {
   std::vector<Eigen::VectorXd> (*starts)() = nullptr;  // in the order that breaks a tie
   // Two minima are distinct when a parameter differs by more than this (theta units).

@@ -3,7 +3,7 @@
 // the clock. They start as the nominal model; each effect of a model sets or composes
 // its own terms from its slice of theta (its descriptor's `apply`), and the integrator
 // and sensor model read them. An effect that needs a term not listed here adds it here
-// and to flight_model.cpp's dynamics.
+// and to flight_dynamics.hpp's steps.
 #pragma once
 
 #include <Eigen/Core>

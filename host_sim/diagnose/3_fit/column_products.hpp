@@ -1,5 +1,5 @@
-// J^T J of a tall, narrow Jacobian (thousands of rows by at most a dozen columns), with
-// every entry summed exactly as Eigen's dot product of the two columns sums it.
+// J^T J of a tall, narrow Jacobian (thousands of rows by at most a dozen columns), each
+// entry Eigen's dot product of the two columns.
 #pragma once
 
 #include <Eigen/Core>

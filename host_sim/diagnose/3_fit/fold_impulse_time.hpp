@@ -37,7 +37,7 @@ namespace aloft::host::diagnose {
 // on `train`) or one Gauss-Newton step on `train` from `all_data` (the same model fitted
 // to every sample), the lower training cost as above, then with its jump in the middle of
 // the gap between the training samples either side of it, refitted there by one
-// Gauss-Newton step (effect_fit.hpp, refit_from_solution). The jump stays where a
+// Gauss-Newton step (refit_from_solution.hpp). The jump stays where a
 // training sample lies next to it on either side, or where the gap reaches the flight's
 // end or its settling time.
 // The samples between the training samples of `train` either side of `fit`'s jump,

@@ -62,7 +62,7 @@ struct LeastSquaresOptions {
   // last accepted point is not linearised (one Jacobian fewer; the solution is the same).
   bool normal_at_solution = true;
   // With normal_at_solution: each block's residuals and Jacobian at the solution too, in
-  // the result (a single flight's folds step from them: effect_fit.hpp).
+  // the result (a single flight's folds step from them: refit_from_solution.hpp).
   bool keep_jacobian = false;
 };
 

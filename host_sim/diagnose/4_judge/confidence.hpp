@@ -44,7 +44,7 @@ constexpr double kTieSpreads = 2.0;
 // FMA/AVX2 libm (GLIBC_TUNABLES, tests/diagnose/same_verdict_every_cpu.sh) on the 70
 // withheld-effect flights; see docs/diagnose.md, "The same verdict on every CPU".
 constexpr double kScoreRoundingTolerance = 1.0;
-// Searches over a parameter with several minima (3_fit/effect_fit.cpp: the impulse time,
+// Searches over a parameter with several minima (3_fit/start_search.cpp: the impulse time,
 // scanned over the whole flight and refined round the best two peaks; the damping rotor,
 // from a grid of 12 starts) keep the best, and report another minimum whose training
 // chi-square (over the fit's dispersion) lies within kCloseMinimum of it: 3.84 is the 95 %

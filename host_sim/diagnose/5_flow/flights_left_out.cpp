@@ -72,20 +72,6 @@ EffectFit FlightsLeftOut::fit_pooled(Effect effect) const {
   return best;
 }
 
-// `added` fitted to every flight with base's effects, started from base's fit; an effect
-// with a start read off the readings (a rotor) also from the base effects at nominal: a
-// rotor pulls the moments fitted alone far off (log-moment parameters 2.0 and -3.9 on a
-// withheld large_rotor_moments cylinder, where 5-20 % is at most 0.2), and from there the
-// pair stopped at chi2 3.3e7 where from nominal it reaches 1.3e4. The lower cost wins.
-EffectFit FlightsLeftOut::fit_pooled_on(const Candidate& base, Effect added) const {
-  EffectFit best = fit_added_effect(base.fit, added, nominal_, flights_.all, nullptr, threads_);
-  if (describe(added).start_from_readings == nullptr) return best;
-  EffectFit at_nominal = base.fit;
-  at_nominal.theta.setZero();
-  EffectFit other = fit_added_effect(at_nominal, added, nominal_, flights_.all, nullptr, threads_);
-  return other.cost < best.cost ? other : best;
-}
-
 // Leave one flight out: the effect from every flight but j, then flight j's initial rate
 // on one fold of its samples, judged on the other.
 void FlightsLeftOut::judge_leaving_flights_out(Candidate& c) const {
@@ -117,8 +103,8 @@ std::vector<OwnFit> FlightsLeftOut::fit_each_flight(const Candidate& base, const
   parallel_for(flights_.size(), threads_, [&](std::size_t j) {
     EffectFit base_j = base.fit;
     base_j.flights = {base.fit.flights[j]};
-    const EffectFit fit =
-        fit_added_effect(base_j, c.effect, nominal_, {flights_.all[j]}, &c.fit.theta, 1, true);
+    const EffectFit fit = fit_added_effect(base_j, c.effect, nominal_, {flights_.all[j]}, &c.fit.theta, 1,
+                                           SecondStart::readings_when_seeded);
     const int offset = theta_offset(model_of(fit, nominal_, 0), c.effect);
     if (offset < 0 || offset + count > fit.theta.size() || fit.theta_covariance.rows() != fit.theta.size())
       return;
@@ -137,7 +123,9 @@ Candidate FlightsLeftOut::evaluate(const Candidate& base, Effect added) const {
     c.note = "per flight only: an impulse is not shared by the flights of a session";
     return c;
   }
-  c.fit = c.base.empty() ? fit_pooled(added) : fit_pooled_on(base, added);
+  c.fit = c.base.empty() ? fit_pooled(added)
+                         : fit_added_effect(base.fit, added, nominal_, flights_.all, nullptr, threads_,
+                                            SecondStart::base_at_nominal);
   c.params = effect_parameters(model_of(c.fit, nominal_, 0), c.fit.theta);
   judge_leaving_flights_out(c);
   if (describe(added).named_only_when_told_apart && !c.base.empty())

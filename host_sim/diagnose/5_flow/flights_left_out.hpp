@@ -1,7 +1,7 @@
 // The held-out rule of a session (judge_candidates.hpp): every effect except the impulse
 // (a knock belongs to one flight) is shared by all flights, each flight keeping its own
 // initial rate. Held out: leave one flight out. The effect is fitted to the other flights
-// (one Gauss-Newton step from the all-flights solution, effect_fit.hpp); on the left-out
+// (one Gauss-Newton step from the all-flights solution, refit_from_solution.hpp); on the left-out
 // flight only the initial rate is fitted, on one fold of its samples, and the gap is
 // judged on the other fold (and the other way round), so that no sample is ever judged by
 // a fit that saw it.
@@ -38,7 +38,6 @@ class FlightsLeftOut : public HeldOutRule {
 
  private:
   EffectFit fit_pooled(Effect effect) const;
-  EffectFit fit_pooled_on(const Candidate& base, Effect added) const;
   void judge_leaving_flights_out(Candidate& c) const;
   std::vector<OwnFit> fit_each_flight(const Candidate& base, const Candidate& c) const;
 

@@ -1,6 +1,6 @@
 // `impulse`: a short external torque during flight, an angular impulse I_nom dw (body
 // axes) at one time. theta = dw (rad/s); the time is not a smooth parameter (the jump
-// moves from one sample to the next), so effect_fit.cpp searches it, and the ranking
+// moves from one sample to the next), so start_search.cpp searches it, and the ranking
 // charges it as a parameter all the same.
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/printf_text.hpp"

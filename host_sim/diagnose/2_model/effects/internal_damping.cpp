@@ -12,7 +12,7 @@ namespace aloft::host::diagnose {
 namespace {
 
 // Rotor coupling rates above this are a rigid body for every flight we see; the cap keeps
-// flight_model.cpp's explicit steps (at most 5 ms) stable (c/J h < 2).
+// flight_dynamics.hpp's explicit steps (at most 5 ms) stable (c/J h < 2).
 constexpr double kMaxRotorRate = 400.0;
 
 double logistic(double a) { return 1.0 / (1.0 + std::exp(-a)); }
