@@ -40,10 +40,40 @@ Options time_units ("s", "ms", "us"), gyro_units ("rad/s", "deg/s"), accel_units
 Returns {"t": (N,) s, "gyro": (N, 3) rad/s, and "accel": (N, 3) m/s^2 where the log has it}.)");
 }
 
+void add_report_functions(py::module_& m) {
+  m.def("diagnose", &diagnose, py::arg("body"), py::arg("imu") = py::none(), py::arg("markers") = py::none(),
+        py::arg("poses") = py::none(), py::arg("segments") = py::none(),
+        R"(`aloft diagnose`: why simulation and measurement part. Returns its --json report.
+
+Exactly one of imu, markers, poses; segments (or window="A:B") with imu. Options as the command's:
+window, time_units, gyro_units, accel_units, pose_columns, pose_sequence, osim, joint, threads,
+json, plot, corrected_body (the last three write files, as the command does).
+Runs without the GIL; Ctrl-C stops a session's diagnosis (KeyboardInterrupt, nothing written).)");
+  m.def("replay", &replay, py::arg("body"), py::arg("imu") = py::none(), py::arg("fifo") = py::none(),
+        py::arg("odr_hz") = py::none(),
+        R"(`aloft replay`: the firmware's onboard pipeline on a recording. Returns its --json report.
+
+imu: plain IMU log with ax, ay, az; or fifo: ICM-42688-P FIFO bytes with odr_hz. Unit options as the command's.)");
+  m.def("records", &records, py::arg("dump"),
+        R"(`aloft records DUMP --json`: the flights in a dump of the flight-record area.)");
+  m.def("study", &study, py::arg("body") = py::none(), py::arg("imu") = py::none(),
+        py::arg("markers") = py::none(), py::arg("poses") = py::none(), py::arg("segments") = py::none(),
+        py::arg("seed") = 1, py::arg("mc_samples") = py::none(), py::arg("threads") = py::none(),
+        py::arg("out") = py::none(),
+        R"(`aloft study`: the paper's study, on the built-in throw or a recording. Returns results.json.
+
+out: also write the output folder (results.json, rms_da.csv, experiment.csv, figure.svg, figure.png)
+as the command does; None (default) writes nothing. Other options as the command's (frame, throw, ...).
+Runs without the GIL; Ctrl-C stops it (KeyboardInterrupt, nothing written).)");
+  m.def("inspect", &inspect, py::arg("path"), py::arg("body") = py::none(),
+        R"(`aloft inspect`: the summary of a trial file (markers, poses, IMU log, segments).)");
+}
+
 }  // namespace
 
 PYBIND11_MODULE(aloft, m) {
   m.doc() = kModuleDoc;
   register_error_translation();
   add_array_functions(m);
+  add_report_functions(m);
 }
