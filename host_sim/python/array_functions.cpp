@@ -7,8 +7,10 @@
 #include "aloft/dynamics/deviation.hpp"
 #include "common/body_file.hpp"
 #include "common/commands.hpp"
+#include "common/warning.hpp"
 #include "python/command_line.hpp"
 #include "python/functions.hpp"
+#include "python/python_warnings.hpp"
 #include "readers/imu_csv_reader.hpp"
 #include "readers/imu_units.hpp"
 #include "simulate/trajectory.hpp"
@@ -40,7 +42,14 @@ py::dict simulate(py::handle body, const InputArray& w0, double duration, double
   require_size(w0, 3, "w0");
   require_size(q0, 4, "q0");
   const std::string integrator_name = integrator.is_none() ? "rk4" : py::cast<std::string>(integrator);
-  const Body read = read_body(source, body_json);
+  std::vector<std::string> warnings;
+  const Body read = [&] {
+    const WarningCapture capture;
+    Body b = read_body(source, body_json);
+    warnings = capture.messages();
+    return b;
+  }();
+  raise_python_warnings(warnings);
   const TrajectoryRequest request = simulate_request(Eigen::Vector3d(w0.at(0), w0.at(1), w0.at(2)),
                                                      Eigen::Vector4d(q0.at(0), q0.at(1), q0.at(2), q0.at(3)),
                                                      duration, rate, integrator_name, single_precision);
@@ -104,7 +113,15 @@ py::dict read_imu(py::handle path, const py::kwargs& units) {
   add_imu_unit_options(line.command(), imu_units);
   line.add_options(units);
   line.parse();
-  ImuLog log = read_imu_csv(path_text(path));
+  const std::string file = path_text(path);
+  std::vector<std::string> warnings;
+  ImuLog log = [&] {
+    const WarningCapture capture;
+    ImuLog read = read_imu_csv(file);
+    warnings = capture.messages();
+    return read;
+  }();
+  raise_python_warnings(warnings);
   convert_to_si(log, imu_units);
   py::dict out;
   out["t"] = numpy_vector(std::move(log.time_s));

@@ -5,6 +5,7 @@
 // (KeyboardInterrupt), the flag is set, the work is waited for, and the handler's
 // exception is raised: nothing has been written, since the commands write only once all
 // is computed. Otherwise the work's result is returned, or its exception rethrown here.
+// The work's warnings are raised as Python warnings once it is done (python_warnings.hpp).
 // The work must not touch Python objects.
 #pragma once
 
@@ -17,9 +18,13 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "common/stop_request.hpp"
+#include "common/warning.hpp"
+#include "python/python_warnings.hpp"
 
 namespace aloft::host::python {
 
@@ -36,12 +41,17 @@ auto run_interruptible(Work&& work) -> decltype(work()) {
   std::mutex mutex;
   std::condition_variable finished;
   bool done = false;
+  std::vector<std::string> warnings;
   std::thread worker([&] {
     const StopScope scope(&stop);
-    try {
-      result.emplace(work());
-    } catch (...) {
-      failure = std::current_exception();
+    {
+      const WarningCapture capture;
+      try {
+        result.emplace(work());
+      } catch (...) {
+        failure = std::current_exception();
+      }
+      warnings = capture.messages();
     }
     const std::lock_guard<std::mutex> lock(mutex);
     done = true;
@@ -67,6 +77,7 @@ auto run_interruptible(Work&& work) -> decltype(work()) {
   }
   worker.join();
   if (interrupt) throw std::move(*interrupt);
+  raise_python_warnings(warnings);
   if (failure) std::rethrow_exception(failure);
   return std::move(*result);
 }

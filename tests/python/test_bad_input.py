@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import aloft
-from conftest import EXAMPLES, run_program
+from conftest import EXAMPLES, RACQUET, run_program, shared_data
 
 BODY = EXAMPLES / "throw_body.json"
 IMU = EXAMPLES / "throw_imu.csv"
@@ -111,3 +111,13 @@ print(len(aloft.replay({str(BODY)!r}, imu={str(IMU)!r})["flights"]))
     done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     assert done.stdout.split() == ["FileNotFoundError", "ValueError", "ValueError", "1"]
+
+
+def test_the_commands_warnings_are_python_warnings():
+    session = shared_data("real", "racquet", "2025-01-16_17-10-11")
+    body = RACQUET / "body.json"  # moments just off the triangle inequality, an extra key
+    with pytest.warns(UserWarning, match="triangle inequality") as caught:
+        aloft.simulate(body, (0.0, 20.0, 0.0), 0.1, 100.0)
+    assert any("unknown key" in str(w.message) for w in caught)
+    with pytest.warns(UserWarning, match="triangle inequality"):
+        aloft.diagnose(body, imu=session / "gyro.csv", window="12.0:13.0")
