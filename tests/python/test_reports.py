@@ -88,3 +88,24 @@ def test_study_recording_equals_the_command_and_writes_its_folder(tmp_path):
     assert_same_report(written, ours, skip=STUDY_TIMES)
     assert sorted(p.name for p in (tmp_path / "py").iterdir()) == sorted(
         p.name for p in (tmp_path / "cli").iterdir())
+
+
+def test_diagnose_markers_equals_the_command(tmp_path):
+    case = shared_data("practice", "case10")
+    ours = aloft.diagnose(case / "body.json", markers=case / "markers.trc")
+    theirs = program_json(tmp_path, "diagnose", "--body", case / "body.json", "--markers", case / "markers.trc")
+    assert_same_report(ours, theirs)
+
+
+def test_diagnose_dict_body_writes_the_commands_corrected_body_and_plots(tmp_path):
+    case = shared_data("practice", "case01")  # wrong moments: the verdict fits a tensor
+    body = json.loads((case / "body.json").read_text())
+    ours = aloft.diagnose(body, imu=case / "imu.csv", corrected_body=tmp_path / "ours_body.json",
+                          plot=tmp_path / "ours_plots")
+    run_program("diagnose", "--body", case / "body.json", "--imu", case / "imu.csv", "--json",
+                tmp_path / "theirs.json", "--corrected-body", tmp_path / "theirs_body.json", "--plot",
+                tmp_path / "theirs_plots")
+    assert_same_report(ours, json.loads((tmp_path / "theirs.json").read_text()))
+    assert (tmp_path / "ours_body.json").read_text() == (tmp_path / "theirs_body.json").read_text()
+    ours_plots = sorted(p.name for p in (tmp_path / "ours_plots").iterdir())
+    assert ours_plots and ours_plots == sorted(p.name for p in (tmp_path / "theirs_plots").iterdir())
