@@ -14,6 +14,7 @@ host_packages=(
   libcairo2-dev libxsimd-dev libpugixml-dev zlib1g-dev
   clang libclang-rt-dev clang-format
   parallel
+  python3-dev python3-numpy pybind11-dev python3-pytest python3-matplotlib
 )
 # Tests only, never linked into aloft: the fitter weighed against Ceres (tests/diagnose/ceres/).
 comparison_packages=(libceres-dev)

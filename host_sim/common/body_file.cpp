@@ -215,11 +215,15 @@ Body parse_body_json(const std::string& text, const std::string& source) {
 Body read_body_file(const std::string& path) {
   return with_file_context(path, [&] {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path + ": cannot open body file");
+    if (!in) throw FileError(path + ": cannot open body file");
     std::ostringstream text;
     text << in.rdbuf();
     return parse_body_json(text.str(), path);
   });
+}
+
+Body read_body(const std::string& source, const std::string& json_text) {
+  return json_text.empty() ? read_body_file(source) : parse_body_json(json_text, source);
 }
 
 }  // namespace aloft::host

@@ -34,4 +34,8 @@ Body read_body_file(const std::string& path);
 // The same from JSON text already in memory; `source` names it in messages.
 Body parse_body_json(const std::string& text, const std::string& source);
 
+// The body named `source`: read from that file, or, where `json_text` is not empty, from
+// that text (a body handed over in memory, as the Python module's dict bodies are).
+Body read_body(const std::string& source, const std::string& json_text);
+
 }  // namespace aloft::host

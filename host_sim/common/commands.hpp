@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +14,14 @@ namespace aloft::host {
 // A user-facing failure: the message is printed as one line on stderr, exit code 2.
 struct Error : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+// A file that cannot be opened or read (missing, not permitted, an I/O error): the same
+// one line and exit code as any Error. The Python module raises OSError for it where it
+// raises ValueError for any other Error; `error_number` is errno at the failure.
+struct FileError : Error {
+  explicit FileError(const std::string& message, int error = errno) : Error(message), error_number(error) {}
+  int error_number;
 };
 
 void add_simulate_command(CLI::App& app);  // host_sim/simulate/

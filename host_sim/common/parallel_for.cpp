@@ -1,5 +1,7 @@
 #include "common/parallel_for.hpp"
 
+#include "common/stop_request.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -16,9 +18,14 @@ void parallel_for(std::size_t count, unsigned threads, const std::function<void(
   std::atomic<std::size_t> done{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
+  // The caller's stop flag (common/stop_request.hpp) holds in every worker too, so that
+  // loops nested in body stop as well.
+  const std::atomic<bool>* const stop = stop_flag();
   const auto worker = [&] {
+    const StopScope scope(stop);
     try {
       for (std::size_t i = next++; i < count; i = next++) {
+        stop_if_requested();
         body(i);
         ++done;
       }

@@ -2,7 +2,8 @@
 // diagnosis's flights. A worker's exception is carried back: the first one thrown stops
 // the hand-out of further indices and is rethrown in the caller once every thread has
 // joined, so an error in any flight or simulation ends the command with its one line
-// rather than std::terminate.
+// rather than std::terminate. A stop asked for through common/stop_request.hpp is
+// checked before each index and ends the loop the same way (Stopped).
 #pragma once
 
 #include <cstddef>

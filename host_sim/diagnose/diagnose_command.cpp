@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <thread>
 
@@ -20,6 +21,7 @@
 #include "diagnose/1_input/marker_fit_check.hpp"
 #include "diagnose/1_input/segment_checks.hpp"
 #include "diagnose/5_flow/diagnosis.hpp"
+#include "diagnose/diagnose_command.hpp"
 #include "diagnose/6_report/corrected_body.hpp"
 #include "diagnose/6_report/gap_plot.hpp"
 #include "diagnose/6_report/report_json.hpp"
@@ -37,15 +39,6 @@
 
 namespace aloft::host {
 namespace {
-
-struct DiagnoseOptions {
-  std::string body;
-  std::string imu, segments, window, markers, poses;
-  ImuUnits imu_units;      // --time-units, --gyro-units, --accel-units
-  PoseNaming pose_naming;  // --pose-columns / --osim --joint for a .mot/.sto
-  std::string json, plot, corrected_body;
-  int threads = 0;  // 0: every core, as aloft study
-};
 
 // "A:B" in seconds, A < B.
 std::pair<double, double> parse_window(const std::string& text) {
@@ -173,7 +166,9 @@ Trial read_trial(const DiagnoseOptions& o, const Body& body) {
   return t;
 }
 
-void run_diagnose(const DiagnoseOptions& o) {
+}  // namespace
+
+nlohmann::json diagnose_report(const DiagnoseOptions& o, const DiagnoseOutput& output) {
   const int inputs = !o.imu.empty() + !o.markers.empty() + !o.poses.empty();
   if (inputs != 1) throw Error("diagnose: give exactly one of --imu, --markers, --poses");
   if ((!o.segments.empty() || !o.window.empty()) && o.imu.empty()) {
@@ -182,7 +177,7 @@ void run_diagnose(const DiagnoseOptions& o) {
   if (!o.segments.empty() && !o.window.empty()) {
     throw Error("diagnose: give --segments or --window, not both");
   }
-  const Body body = read_body_file(o.body);
+  const Body body = read_body(o.body, o.body_json);
   const diagnose::NominalInertia nominal = diagnose::NominalInertia::of(body.inertia);
 
   const Trial trial = read_trial(o, body);
@@ -190,25 +185,28 @@ void run_diagnose(const DiagnoseOptions& o) {
   const bool session = trial.session;
   const bool found_by_detector = trial.found_by_detector;
   const std::string& source = trial.source;
+  std::ostringstream unused;
+  std::ostream& summary = output.summary ? *output.summary : unused;
 
   nlohmann::json report;
   if (session) {
-    diagnose::SessionDiagnosis d = diagnose::diagnose_session(flights, nominal, session_threads(o.threads),
-                                                              diagnose::terminal_flight_progress());
-    diagnose::clear_terminal_progress();
+    diagnose::SessionDiagnosis d = diagnose::diagnose_session(
+        flights, nominal, session_threads(o.threads),
+        output.terminal_progress ? diagnose::terminal_flight_progress() : ParallelProgress{});
+    if (output.terminal_progress) diagnose::clear_terminal_progress();
     if (found_by_detector) {
       d.pooled.notes.push_back(
           std::to_string(flights.size()) +
           " flight(s) found by the firmware's release and landing code (no --segments or --window given)");
     }
     report = diagnose::session_report(d);
-    std::cout << diagnose::session_summary(d);
+    summary << diagnose::session_summary(d);
     if (!o.plot.empty()) diagnose::write_session_plots(d, nominal, o.plot);
   } else {
     require_enough_samples(flights.front(), source);
     const diagnose::FlightDiagnosis d = diagnose::diagnose_flight(flights.front(), nominal);
     report = diagnose::flight_report(d);
-    std::cout << diagnose::flight_summary(d);
+    summary << diagnose::flight_summary(d);
     if (!o.plot.empty()) diagnose::write_flight_plots(d, nominal, o.plot);
   }
   // The same words as `aloft study`'s note on its nominal figure (docs/study.md,
@@ -217,20 +215,43 @@ void run_diagnose(const DiagnoseOptions& o) {
       "nominal model from the initial rate fitted to the whole flight (its best case); "
       "aloft study seeds a simulation from each measured sample instead, which drifts further";
   report["baseline"]["measures"] = measures;
-  std::cout << "  baseline measures: " << measures << "\n";
+  summary << "  baseline measures: " << measures << "\n";
   if (!o.json.empty()) {
     write_file_atomically(o.json, [&](std::ostream& out) { out << json_text(report) << "\n"; });
   }
   if (!o.corrected_body.empty()) {
-    const bool written = diagnose::write_corrected_body(o.body, report, o.corrected_body);
-    std::cout << "  corrected body: "
-              << (written ? o.corrected_body + " (the body file with the fitted tensor)"
-                          : "none written (the verdict changes no moment and no axis)")
-              << "\n";
+    const bool written =
+        o.body_json.empty() ? diagnose::write_corrected_body(o.body, report, o.corrected_body)
+                            : diagnose::write_corrected_body_from_text(o.body_json, report, o.corrected_body);
+    summary << "  corrected body: "
+            << (written ? o.corrected_body + " (the body file with the fitted tensor)"
+                        : "none written (the verdict changes no moment and no axis)")
+            << "\n";
   }
+  return report;
 }
 
-}  // namespace
+void add_diagnose_options(CLI::App& command, DiagnoseOptions& options) {
+  CLI::App* cmd = &command;
+  cmd->add_option("--body", options.body, "body file (JSON: docs/file-formats.md)")->required();
+  cmd->add_option("--imu", options.imu, "IMU log, plain or phyphox CSV");
+  cmd->add_option("--segments", options.segments, "segments CSV: one flight per row (pooled analysis)");
+  cmd->add_option("--window", options.window, "A:B, the flight inside the IMU log (seconds)");
+  add_imu_unit_options(*cmd, options.imu_units);
+  cmd->add_option("--markers", options.markers, "marker trajectories (.trc or .c3d)");
+  cmd->add_option("--poses", options.poses, "poses (.mot, .sto or pose CSV)");
+  add_pose_naming_options(*cmd, options.pose_naming);
+  cmd->add_option("--json", options.json, "write the JSON report here")->check(output_file());
+  cmd->add_option("--corrected-body", options.corrected_body,
+                  "write the body file with the fitted tensor here, when the verdict fits one")
+      ->check(output_file());
+  cmd->add_option("--plot", options.plot, "write DA, relative error and invariant plots (SVG, PNG) here")
+      ->check(output_folder());
+  // No CLI::Range: its description shows in the help as "INT:INT in [1 - 64]".
+  cmd->add_option("--threads", options.threads, "threads for a session, 1 to 64 (default: every core)")
+      ->type_name("N")
+      ->check(CLI::Range(1, 64).description(""));
+}
 
 void add_diagnose_command(CLI::App& app) {
   auto options = std::make_shared<DiagnoseOptions>();
@@ -238,25 +259,8 @@ void add_diagnose_command(CLI::App& app) {
       app.add_subcommand("diagnose",
                          "where the simulation parts from the measured motion, which unmodelled effect "
                          "causes it, and how far the gap shrinks with it (judged on held-out data)");
-  cmd->add_option("--body", options->body, "body file (JSON: docs/file-formats.md)")->required();
-  cmd->add_option("--imu", options->imu, "IMU log, plain or phyphox CSV");
-  cmd->add_option("--segments", options->segments, "segments CSV: one flight per row (pooled analysis)");
-  cmd->add_option("--window", options->window, "A:B, the flight inside the IMU log (seconds)");
-  add_imu_unit_options(*cmd, options->imu_units);
-  cmd->add_option("--markers", options->markers, "marker trajectories (.trc or .c3d)");
-  cmd->add_option("--poses", options->poses, "poses (.mot, .sto or pose CSV)");
-  add_pose_naming_options(*cmd, options->pose_naming);
-  cmd->add_option("--json", options->json, "write the JSON report here")->check(output_file());
-  cmd->add_option("--corrected-body", options->corrected_body,
-                  "write the body file with the fitted tensor here, when the verdict fits one")
-      ->check(output_file());
-  cmd->add_option("--plot", options->plot, "write DA, relative error and invariant plots (SVG, PNG) here")
-      ->check(output_folder());
-  // No CLI::Range: its description shows in the help as "INT:INT in [1 - 64]".
-  cmd->add_option("--threads", options->threads, "threads for a session, 1 to 64 (default: every core)")
-      ->type_name("N")
-      ->check(CLI::Range(1, 64).description(""));
-  cmd->callback([options] { run_diagnose(*options); });
+  add_diagnose_options(*cmd, *options);
+  cmd->callback([options] { (void)diagnose_report(*options, {&std::cout, true}); });
 }
 
 }  // namespace aloft::host

@@ -27,7 +27,7 @@ constexpr std::size_t kBlockBytes = 512;
 // else is refused after 512 bytes rather than read into memory.
 std::vector<std::uint8_t> read_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open file");
+  if (!in) throw FileError(path + ": cannot open file");
   std::vector<std::uint8_t> bytes(kBlockBytes);
   in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   bytes.resize(static_cast<std::size_t>(in.gcount()));

@@ -16,6 +16,7 @@
 #include "readers/accel_at_rest.hpp"
 #include "readers/imu_csv_reader.hpp"
 #include "readers/imu_units.hpp"
+#include "readers/inspect_command.hpp"
 #include "readers/marker_pose_fit.hpp"
 #include "readers/pose_naming_options.hpp"
 #include "readers/pose_reader.hpp"
@@ -34,7 +35,8 @@ double duration_of(const std::vector<double>& time_s) {
   return time_s.size() < 2 ? 0.0 : time_s.back() - time_s.front();
 }
 
-Json summarise_markers(const std::string& path, const TrialFormat& format, const std::string& body_path) {
+Json summarise_markers(const std::string& path, const TrialFormat& format, const std::string& body_path,
+                       const std::string& body_json) {
   C3dDetails details;
   const MarkerTrial trial = format.name == "c3d" ? read_c3d(path, &details) : read_trc(path);
   Json out;
@@ -65,7 +67,7 @@ Json summarise_markers(const std::string& path, const TrialFormat& format, const
                   {"parameter_repairs", details.parameter_repairs}};
   }
   if (!body_path.empty()) {
-    const Body body = read_body_file(body_path);
+    const Body body = read_body(body_path, body_json);
     PoseFitReport report;
     const PoseTrial poses = fit_poses(trial, body, &report);
     Json gaps = Json::array();
@@ -148,31 +150,35 @@ Json summarise_segments(const std::string& path) {
 
 }  // namespace
 
+void add_inspect_options(CLI::App& command, InspectOptions& options) {
+  command.add_option("file", options.file, "trial file: .trc, .c3d, .mot, .sto, pose/IMU/segments CSV")
+      ->required();
+  command.add_option("--body", options.body,
+                     "body file: also fit its marker set to each frame of a marker file");
+  add_pose_naming_options(command, options.naming);
+  add_imu_unit_options(command, options.units);
+}
+
+Json inspect_summary(const InspectOptions& o) {
+  const TrialFormat format = detect_trial_format(o.file);
+  if (!o.body.empty() && format.kind != TrialKind::markers) {
+    throw Error(o.file + ": --body applies to marker files only");
+  }
+  switch (format.kind) {
+    case TrialKind::markers: return summarise_markers(o.file, format, o.body, o.body_json);
+    case TrialKind::poses: return summarise_poses(o.file, o.naming);
+    case TrialKind::imu: return summarise_imu(o.file, o.units);
+    case TrialKind::segments: return summarise_segments(o.file);
+  }
+  return Json();
+}
+
 void add_inspect_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("inspect", "summarise a trial file (markers, poses, IMU log, segments) as JSON");
-  auto file = std::make_shared<std::string>();
-  auto body = std::make_shared<std::string>();
-  auto naming = std::make_shared<PoseNaming>();
-  cmd->add_option("file", *file, "trial file: .trc, .c3d, .mot, .sto, pose/IMU/segments CSV")->required();
-  cmd->add_option("--body", *body, "body file: also fit its marker set to each frame of a marker file");
-  add_pose_naming_options(*cmd, *naming);
-  auto units = std::make_shared<ImuUnits>();
-  add_imu_unit_options(*cmd, *units);
-  cmd->callback([file, body, naming, units] {
-    const TrialFormat format = detect_trial_format(*file);
-    if (!body->empty() && format.kind != TrialKind::markers) {
-      throw Error(*file + ": --body applies to marker files only");
-    }
-    Json summary;
-    switch (format.kind) {
-      case TrialKind::markers: summary = summarise_markers(*file, format, *body); break;
-      case TrialKind::poses: summary = summarise_poses(*file, *naming); break;
-      case TrialKind::imu: summary = summarise_imu(*file, *units); break;
-      case TrialKind::segments: summary = summarise_segments(*file); break;
-    }
-    std::cout << json_text(summary) << '\n';
-  });
+  auto options = std::make_shared<InspectOptions>();
+  add_inspect_options(*cmd, *options);
+  cmd->callback([options] { std::cout << json_text(inspect_summary(*options)) << '\n'; });
 }
 
 }  // namespace aloft::host

@@ -40,7 +40,7 @@ bool first_complete_line(const std::string& content, bool at_end, std::string& l
 
 TextFile read_text_file(const std::string& path, const FirstLineCheck& check_first_line) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open file");
+  if (!in) throw FileError(path + ": cannot open file");
   constexpr std::size_t kChunk = 1u << 20;  // 1 MiB
   std::string content;
   std::string chunk(kChunk, '\0');

@@ -50,7 +50,7 @@ static TrialFormat detect_trial_format_unguarded(const std::string& path) {
   if (extension == ".sto") return {TrialKind::poses, "sto"};
 
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open file");
+  if (!in) throw FileError(path + ": cannot open file");
   std::string head(4096, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));

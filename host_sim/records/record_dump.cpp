@@ -18,15 +18,15 @@ std::vector<std::uint8_t> read_bytes(const std::string& path) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) throw Error(path + ": a folder, not a flight record dump");
   std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw Error(path + ": cannot be opened");
+  if (!in) throw FileError(path + ": cannot be opened");
   const std::streamoff size = in.tellg();
-  if (size < 0) throw Error(path + ": cannot be read");
+  if (size < 0) throw FileError(path + ": cannot be read");
   if (size == 0) throw Error(path + ": empty file, not a flight record dump");
   if (static_cast<std::uint64_t>(size) > largest_dump_bytes)
     throw Error(path + ": " + std::to_string(size) + " bytes, too large to be a flight record dump");
   std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
   in.seekg(0);
-  if (!in.read(reinterpret_cast<char*>(bytes.data()), size)) throw Error(path + ": cannot be read");
+  if (!in.read(reinterpret_cast<char*>(bytes.data()), size)) throw FileError(path + ": cannot be read");
   return bytes;
 }
 

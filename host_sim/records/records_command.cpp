@@ -133,13 +133,19 @@ nlohmann::json flight_json(const ListedRecord& listed) {
           {"settings_hash", hex32(r.settings_hash)}};
 }
 
-void print_json(const std::string& path, const RecordDump& dump) {
+}  // namespace
+
+nlohmann::json records_json(const std::string& path, const RecordDump& dump) {
   nlohmann::json flights = nlohmann::json::array(), problems = nlohmann::json::array();
   for (const ListedRecord& r : dump.records) flights.push_back(flight_json(r));
   for (const DumpProblem& p : dump.problems) problems.push_back({{"offset", p.offset}, {"reason", p.reason}});
-  const nlohmann::json report = {
-      {"file", path}, {"slots", dump.slots}, {"flights", flights}, {"problems", problems}};
-  std::cout << json_text(report) << '\n';
+  return {{"file", path}, {"slots", dump.slots}, {"flights", flights}, {"problems", problems}};
+}
+
+namespace {
+
+void print_json(const std::string& path, const RecordDump& dump) {
+  std::cout << json_text(records_json(path, dump)) << '\n';
 }
 
 struct RecordsOptions {

@@ -5,9 +5,18 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "records/record_dump.hpp"
 
 namespace aloft::host {
 
 void add_records_command(CLI::App& app);  // host_sim/records/
+
+// What `aloft records --json` prints for the dump read from `path`: {"file", "slots",
+// "flights", "problems"}; shared with the Python module (aloft.records).
+nlohmann::json records_json(const std::string& path, const RecordDump& dump);
 
 }  // namespace aloft::host

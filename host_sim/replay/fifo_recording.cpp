@@ -28,9 +28,9 @@ std::string hex_byte(std::uint8_t value) {
 
 std::vector<std::uint8_t> read_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot be opened");
+  if (!in) throw FileError(path + ": cannot be opened");
   std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw Error(path + ": read failed");
+  if (in.bad()) throw FileError(path + ": read failed");
   return bytes;
 }
 

@@ -16,21 +16,13 @@
 #include "readers/imu_units.hpp"
 #include "replay/fifo_recording.hpp"
 #include "replay/imu_csv_recording.hpp"
+#include "replay/replay_command.hpp"
 #include "replay/replay_report_json.hpp"
 #include "replay/replay_report_text.hpp"
 #include "replay/replay_run.hpp"
 
 namespace aloft::host {
 namespace {
-
-struct ReplayOptions {
-  std::string body_path;
-  std::string imu_path;
-  ImuUnits imu_units;  // --time-units, --gyro-units, --accel-units
-  std::string fifo_path;
-  double odr_hz = 0.0;
-  std::string json_path;
-};
 
 Recording read_recording(const ReplayOptions& o) {
   if (!o.imu_path.empty()) {
@@ -43,9 +35,9 @@ Recording read_recording(const ReplayOptions& o) {
 }
 
 void run_replay_command(const ReplayOptions& o) {
-  const Body body = read_body_file(o.body_path);
-  const Recording recording = read_recording(o);
-  const ReplayResult result = run_replay(replay_settings_from_body(body), o.body_path, recording);
+  const ReplayRun run = run_replay_options(o);
+  const Recording& recording = run.recording;
+  const ReplayResult& result = run.result;
   if (!o.json_path.empty()) {
     const nlohmann::json report = replay_report_json(recording, result);
     write_file_atomically(o.json_path, [&](std::ostream& out) { out << json_text(report) << '\n'; });
@@ -55,26 +47,39 @@ void run_replay_command(const ReplayOptions& o) {
 
 }  // namespace
 
-void add_replay_command(CLI::App& app) {
-  auto options = std::make_shared<ReplayOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "replay", "run the firmware's onboard pipeline (float) on a recording; finds the flights");
-  cmd->add_option("--body", options->body_path,
+ReplayRun run_replay_options(const ReplayOptions& o) {
+  const Body body = read_body(o.body_path, o.body_json);
+  ReplayRun run;
+  run.recording = read_recording(o);
+  run.result = run_replay(replay_settings_from_body(body), o.body_path, run.recording);
+  return run;
+}
+
+void add_replay_options(CLI::App& command, ReplayOptions& options) {
+  CLI::App* cmd = &command;
+  cmd->add_option("--body", options.body_path,
                   "body file (JSON: docs/file-formats.md); imu.position, if given, is used")
       ->required();
   CLI::Option_group* input = cmd->add_option_group("input", "the recording: exactly one of");
-  input->add_option("--imu", options->imu_path, "plain IMU log t,gx,gy,gz,ax,ay,az (s, rad/s, m/s^2)");
-  add_imu_unit_options(*cmd, options->imu_units);
+  input->add_option("--imu", options.imu_path, "plain IMU log t,gx,gy,gz,ax,ay,az (s, rad/s, m/s^2)");
+  add_imu_unit_options(*cmd, options.imu_units);
   CLI::Option* fifo =
-      input->add_option("--fifo", options->fifo_path, "ICM-42688-P FIFO bytes (docs/file-formats.md)");
+      input->add_option("--fifo", options.fifo_path, "ICM-42688-P FIFO bytes (docs/file-formats.md)");
   input->require_option(1);
-  cmd->add_option("--odr-hz", options->odr_hz, "the FIFO's output data rate, Hz (with --fifo)")
+  cmd->add_option("--odr-hz", options.odr_hz, "the FIFO's output data rate, Hz (with --fifo)")
       ->needs(fifo)
       ->type_name("HZ")
       ->check(CLI::PositiveNumber.description(""));
   fifo->needs(cmd->get_option("--odr-hz"));
-  cmd->add_option("--json", options->json_path, "write the report as JSON (keys: docs/file-formats.md)")
+  cmd->add_option("--json", options.json_path, "write the report as JSON (keys: docs/file-formats.md)")
       ->check(output_file());
+}
+
+void add_replay_command(CLI::App& app) {
+  auto options = std::make_shared<ReplayOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "replay", "run the firmware's onboard pipeline (float) on a recording; finds the flights");
+  add_replay_options(*cmd, *options);
   cmd->callback([options] { run_replay_command(*options); });
 }
 

@@ -58,19 +58,11 @@ struct SimulateOptions {
 
 void run_simulate(const SimulateOptions& o) {
   const Body body = read_body_file(o.body_path);
-  TrajectoryRequest request;
   const std::vector<double> w = parse_numbers(o.w0, 3, "--w0");
   const std::vector<double> q = parse_numbers(o.q0, 4, "--q0");
-  request.initial.omega_body = Eigen::Vector3d(w[0], w[1], w[2]);
-  request.initial.orientation = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
-  if (!aloft::is_unit(request.initial.orientation)) {
-    throw Error("--q0: quaternion is not of unit length");
-  }
-  request.initial.orientation.normalize();
-  request.duration_s = o.duration_s;
-  request.rate_hz = o.rate_hz;
-  request.integrator = integrator_from_name(o.integrator);
-  request.precision = o.single_precision ? Precision::single_precision : Precision::double_precision;
+  const TrajectoryRequest request =
+      simulate_request(Eigen::Vector3d(w[0], w[1], w[2]), Eigen::Vector4d(q[0], q[1], q[2], q[3]),
+                       o.duration_s, o.rate_hz, o.integrator, o.single_precision);
   const std::vector<TrajectorySample> samples = simulate_trajectory(body.inertia, request);
   write_file_atomically(o.out_path, [&](std::ostream& out) {
     out << "t,qw,qx,qy,qz,wx,wy,wz\n";

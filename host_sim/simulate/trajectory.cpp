@@ -57,6 +57,23 @@ std::vector<TrajectorySample> run_in(const InertiaTensor<Scalar>& inertia, const
 
 }  // namespace
 
+TrajectoryRequest simulate_request(const Eigen::Vector3d& w0, const Eigen::Vector4d& q0_wxyz,
+                                   double duration_s, double rate_hz, const std::string& integrator,
+                                   bool single_precision) {
+  TrajectoryRequest request;
+  request.initial.omega_body = w0;
+  request.initial.orientation = Eigen::Quaterniond(q0_wxyz[0], q0_wxyz[1], q0_wxyz[2], q0_wxyz[3]);
+  if (!aloft::is_unit(request.initial.orientation)) {
+    throw Error("--q0: quaternion is not of unit length");
+  }
+  request.initial.orientation.normalize();
+  request.duration_s = duration_s;
+  request.rate_hz = rate_hz;
+  request.integrator = integrator_from_name(integrator);
+  request.precision = single_precision ? Precision::single_precision : Precision::double_precision;
+  return request;
+}
+
 IntegratorKind integrator_from_name(const std::string& name) {
   if (name == "rk4") return IntegratorKind::rk4;
   if (name == "splitting") return IntegratorKind::splitting;

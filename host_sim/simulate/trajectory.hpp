@@ -36,4 +36,11 @@ std::vector<TrajectorySample> simulate_trajectory(const InertiaTensor<double>& i
 
 IntegratorKind integrator_from_name(const std::string& name);  // "rk4" | "splitting"
 
+// The request `aloft simulate` makes: omega in body axes (rad/s), the orientation q0
+// (w, x, y, z), refused unless of unit length and then normalised, the duration (s), the
+// rate (Hz), the integrator by name and the precision. Throws Error as the command does.
+TrajectoryRequest simulate_request(const Eigen::Vector3d& w0, const Eigen::Vector4d& q0_wxyz,
+                                   double duration_s, double rate_hz, const std::string& integrator,
+                                   bool single_precision);
+
 }  // namespace aloft::host

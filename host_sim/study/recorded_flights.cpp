@@ -148,7 +148,7 @@ nlohmann::json time_gaps(const std::vector<double>& time_s) {
 
 RecordedTrial load_recorded_trial(const RecordingInput& in) {
   RecordedTrial out;
-  out.body = read_body_file(in.body_path);
+  out.body = read_body(in.body_path, in.body_json);
   nlohmann::json& d = out.description;
   d["body"] = in.body_path;
 

@@ -24,6 +24,7 @@ namespace aloft::host {
 
 struct RecordingInput {
   std::string body_path;
+  std::string body_json;  // the body's content when handed over in memory (body_path names it)
   std::string markers_path;
   std::string poses_path;
   std::string imu_path;

@@ -24,22 +24,12 @@
 #include "study/paper_calibration_report.hpp"
 #include "study/paper_cylinder.hpp"
 #include "study/recorded_flights.hpp"
+#include "study/study_command.hpp"
 #include "study/study_outputs.hpp"
 #include "study/throw_options.hpp"
 
 namespace aloft::host {
 namespace {
-
-struct StudyOptions {
-  std::string out_dir = "aloft-study";
-  std::uint64_t seed = 1;
-  std::size_t mc_samples = paper::kMonteCarloSimulations;
-  unsigned threads = 0;        // 0: every core
-  std::string frame = "both";  // body, world or both (study/da_frame.hpp)
-  RecordingInput recording;
-  ThrowOptions throw_options;
-  bool calibrate_to_paper = false;
-};
 
 // What the nominal figure of a recording measures, beside `aloft diagnose`'s baseline for
 // the same data (docs/study.md, "Study and diagnose on the same data"): different questions.
@@ -52,7 +42,9 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-void check_options(const StudyOptions& o) {
+}  // namespace
+
+void check_study_options(const StudyOptions& o) {
   const RecordingInput& r = o.recording;
   const int sources = !r.markers_path.empty() + !r.poses_path.empty() + !r.imu_path.empty();
   if (r.body_path.empty() && sources > 0) {
@@ -84,6 +76,8 @@ void check_options(const StudyOptions& o) {
     throw Error("study: --frame world needs orientations; an IMU recording has only body rates");
   }
 }
+
+namespace {
 
 // The frames to report: an IMU recording has no world frame, so "both" is body there.
 std::vector<DaFrame> frames_to_report(const StudyOptions& o) {
@@ -153,7 +147,10 @@ StudyResult run_study(const StudyOptions& o) {
   return result;
 }
 
-void write_outputs(const std::string& dir, const std::vector<std::pair<std::string, std::string>>& files) {
+}  // namespace
+
+void write_study_folder(const std::string& dir,
+                        const std::vector<std::pair<std::string, std::string>>& files) {
   replace_folder_atomically(dir, [&](const std::string& fresh) {
     for (const auto& file : files) {
       // Not a structured binding: a lambda capturing one is C++20, and clang refuses it.
@@ -163,6 +160,8 @@ void write_outputs(const std::string& dir, const std::vector<std::pair<std::stri
     }
   });
 }
+
+namespace {
 
 // "study: calibrate: grid 120 / 1120" now and then on stderr: the search takes minutes.
 std::function<void(const std::string&, std::size_t, std::size_t)> calibration_progress() {
@@ -187,38 +186,24 @@ void calibrate(const StudyOptions& o) {
   s.progress = calibration_progress();
   const CalibrationResult result = calibrate_to_paper(s, frames_to_report(o));
   if (::isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
-  write_outputs(o.out_dir, {{"calibration.json", json_text(calibration_json(result, s)) + "\n"}});
+  write_study_folder(o.out_dir, {{"calibration.json", json_text(calibration_json(result, s)) + "\n"}});
   std::fputs(calibration_table(result).c_str(), stdout);
   std::printf("wall time %.1f s on %u thread%s; wrote %s/calibration.json\n", result.wall_time_s, s.threads,
               s.threads == 1 ? "" : "s", o.out_dir.c_str());
 }
 
 void study(const StudyOptions& o) {
-  check_options(o);
+  check_study_options(o);
   clean_after_killed_runs(o.out_dir);
   if (o.calibrate_to_paper) return calibrate(o);
-  const Clock::time_point start = Clock::now();
-  StudyResult result = run_study(o);
-
-  const Clock::time_point outputs_start = Clock::now();
-  const FigureFiles figure = render_study_figure(result);
-  const std::string experiment = experiment_csv(result);
-  const std::string rms_da = rms_da_csv(result);
-  const std::string table = comparison_table(result);
-  result.phase_time_s.emplace_back("outputs", seconds_since(outputs_start));
-  result.wall_time_s = seconds_since(start);
-  const std::string results = json_text(results_json(result)) + "\n";
-
-  write_outputs(o.out_dir, {{"experiment.csv", experiment},
-                            {"rms_da.csv", rms_da},
-                            {"figure.svg", figure.svg},
-                            {"figure.png", figure.png},
-                            {"results.json", results}});
+  const StudyOutputs outputs = compute_study(o);
+  const StudyResult& result = outputs.result;
+  write_study_folder(o.out_dir, outputs.files);
 
   std::printf("aloft study: %s, %zu flight%s, seed %llu, %u thread%s\n", result.input.c_str(),
               result.flights.size(), result.flights.size() == 1 ? "" : "s",
               static_cast<unsigned long long>(result.seed), result.threads, result.threads == 1 ? "" : "s");
-  std::fputs(table.c_str(), stdout);
+  std::fputs(outputs.table.c_str(), stdout);
   if (!result.built_in) std::printf("nominal: %s\n", kNominalMeasures);
   std::printf("wall time %.2f s (", result.wall_time_s);
   for (std::size_t i = 0; i < result.phase_time_s.size(); ++i) {
@@ -231,36 +216,62 @@ void study(const StudyOptions& o) {
 
 }  // namespace
 
+StudyOutputs compute_study(const StudyOptions& o) {
+  const Clock::time_point start = Clock::now();
+  StudyOutputs outputs;
+  StudyResult& result = outputs.result;
+  result = run_study(o);
+
+  const Clock::time_point outputs_start = Clock::now();
+  const FigureFiles figure = render_study_figure(result);
+  const std::string experiment = experiment_csv(result);
+  const std::string rms_da = rms_da_csv(result);
+  outputs.table = comparison_table(result);
+  result.phase_time_s.emplace_back("outputs", seconds_since(outputs_start));
+  result.wall_time_s = seconds_since(start);
+  outputs.results = results_json(result);
+  outputs.files = {{"experiment.csv", experiment},
+                   {"rms_da.csv", rms_da},
+                   {"figure.svg", figure.svg},
+                   {"figure.png", figure.png},
+                   {"results.json", json_text(outputs.results) + "\n"}};
+  return outputs;
+}
+
+void add_study_options(CLI::App& command, StudyOptions& options) {
+  CLI::App* cmd = &command;
+  cmd->add_option("--out", options.out_dir, "output folder (default aloft-study)")->check(output_folder());
+  cmd->add_option("--seed", options.seed, "seed of the Monte Carlo draws (default 1)")->check(whole_number());
+  cmd->add_option("--mc-samples", options.mc_samples,
+                  "simulations per Monte Carlo analysis and flight (default 5000)")
+      ->check(whole_number());
+  cmd->add_option("--threads", options.threads, "worker threads (default: every core)")
+      ->check(whole_number());
+  cmd->add_option("--frame", options.frame,
+                  "axes in which simulated and measured omega are compared: body, world or "
+                  "both (default both; IMU input: body only)");
+  cmd->add_option("--body", options.recording.body_path,
+                  "body file of a recording (JSON: docs/file-formats.md)");
+  cmd->add_option("--markers", options.recording.markers_path, "marker trajectories (.trc, .c3d)");
+  cmd->add_option("--poses", options.recording.poses_path, "poses (.mot, .sto, pose .csv)");
+  add_pose_naming_options(*cmd, options.recording.pose_naming);
+  cmd->add_option("--imu", options.recording.imu_path, "IMU log (plain or phyphox .csv)");
+  cmd->add_option("--segments", options.recording.segments_path, "flights within the IMU log");
+  add_imu_unit_options(*cmd, options.recording.imu_units);
+  add_throw_options(*cmd, options.throw_options);
+  cmd->add_flag("--calibrate-to-paper", options.calibrate_to_paper,
+                "search the throw (spin rate, axis, marker noise) that matches the paper's GF "
+                "and CP rows, per frame, and predict its Monte Carlo rows (docs/study.md); writes "
+                "calibration.json");
+}
+
 void add_study_command(CLI::App& app) {
   auto options = std::make_shared<StudyOptions>();
   auto* cmd =
       app.add_subcommand("study",
                          "the seed paper's inertia study: GF vs CP and 12 Monte Carlo analyses, on the "
                          "built-in throw or on a recording");
-  cmd->add_option("--out", options->out_dir, "output folder (default aloft-study)")->check(output_folder());
-  cmd->add_option("--seed", options->seed, "seed of the Monte Carlo draws (default 1)")
-      ->check(whole_number());
-  cmd->add_option("--mc-samples", options->mc_samples,
-                  "simulations per Monte Carlo analysis and flight (default 5000)")
-      ->check(whole_number());
-  cmd->add_option("--threads", options->threads, "worker threads (default: every core)")
-      ->check(whole_number());
-  cmd->add_option("--frame", options->frame,
-                  "axes in which simulated and measured omega are compared: body, world or "
-                  "both (default both; IMU input: body only)");
-  cmd->add_option("--body", options->recording.body_path,
-                  "body file of a recording (JSON: docs/file-formats.md)");
-  cmd->add_option("--markers", options->recording.markers_path, "marker trajectories (.trc, .c3d)");
-  cmd->add_option("--poses", options->recording.poses_path, "poses (.mot, .sto, pose .csv)");
-  add_pose_naming_options(*cmd, options->recording.pose_naming);
-  cmd->add_option("--imu", options->recording.imu_path, "IMU log (plain or phyphox .csv)");
-  cmd->add_option("--segments", options->recording.segments_path, "flights within the IMU log");
-  add_imu_unit_options(*cmd, options->recording.imu_units);
-  add_throw_options(*cmd, options->throw_options);
-  cmd->add_flag("--calibrate-to-paper", options->calibrate_to_paper,
-                "search the throw (spin rate, axis, marker noise) that matches the paper's GF "
-                "and CP rows, per frame, and predict its Monte Carlo rows (docs/study.md); writes "
-                "calibration.json");
+  add_study_options(*cmd, *options);
   cmd->callback([options] { study(*options); });
 }
 

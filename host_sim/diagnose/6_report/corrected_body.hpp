@@ -18,4 +18,8 @@ nlohmann::json fitted_tensor(const nlohmann::json& report);
 bool write_corrected_body(const std::string& body_path, const nlohmann::json& report,
                           const std::string& out_path);
 
+// The same from the body file's text, for a body handed over in memory.
+bool write_corrected_body_from_text(const std::string& body_text, const nlohmann::json& report,
+                                    const std::string& out_path);
+
 }  // namespace aloft::host::diagnose
