@@ -1,8 +1,9 @@
 # The firmware images' host tools (port/host_tools/) in a cross build, whose compiler
 # targets the board. As LLVM builds its native tools for a cross build, this project is
 # configured a second time, for the build machine: in ALOFT_HOST_TOOLS_DIR (host-tools/ of
-# this build folder unless set), with the host's compiler and ALOFT_HOST_TOOLS_ONLY (lib/, port/'s headers and fakes, the
-# few host_sim/ libraries the tools link, port/host_tools; no tests). The custom target
+# this build folder unless set), with the host's compiler and ALOFT_HOST_TOOLS_ONLY (lib/,
+# port/'s headers and fakes, the few host_sim/ libraries the tools link, port/host_tools;
+# no tests). The custom target
 # aloft_host_tools, in `all`, builds there the tools the images asked for; that build
 # follows host_sim/'s own CMakeLists.txt, so no source list is kept here.
 #   aloft_host_tool(NAME...)  asks for tools; sets ALOFT_HOST_<NAME> (cache, for tests/)
