@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages aloft needs, and nothing when they are all present.
 #   scripts/install-deps.sh host   build and run the host program and its tests (gcc, and
-#                                  clang with its sanitizer and libFuzzer runtimes)
+#                                  clang with its sanitizer and libFuzzer runtimes;
+#                                  ccache, which the scripts use when it is there)
 #   scripts/install-deps.sh all    also Ceres (a comparison test) and the ARM cross
 #                                  toolchains and QEMU (target tests: armhf, cortex-m4f,
 #                                  stm32f405 on netduinoplus2)
@@ -15,6 +16,7 @@ host_packages=(
   clang libclang-rt-dev clang-format
   parallel
   python3-dev python3-numpy pybind11-dev python3-pytest python3-matplotlib
+  ccache
 )
 # Tests only, never linked into aloft: the fitter weighed against Ceres (tests/diagnose/ceres/).
 comparison_packages=(libceres-dev)
