@@ -3,10 +3,12 @@
 # The `host` test preset runs every test; the `quick` preset (scripts/test.sh --quick) and
 # the sanitizer stage (`host-asan`) leave out the label `slow`.
 #
-#   aloft_slow_test(NAME name COST seconds COMMAND cmd... SMALL_COMMAND cmd...)
+#   aloft_slow_test(NAME name COST seconds COMMAND cmd... SMALL_COMMAND cmd...
+#                   [SMALL_COST seconds])
 #       name        the whole test, labelled `slow`: run once, in the gcc host stage
 #       name_small  one small case of it (a Catch2 filter, or a small size), run in every
-#                   stage, so the sanitizers still go through the slow test's code
+#                   stage, so the sanitizers still go through the slow test's code;
+#                   SMALL_COST, its seconds under the sanitizers, where it is longest
 #   aloft_catch_test_per_file(NAME name TARGET target COST seconds...
 #                             [SLOW file... SMALL_COMMAND cmd...])
 #       one ctest entry per test_<file>.cpp of a Catch2 program, name_<file> (its test
@@ -18,8 +20,9 @@
 #       labels a test registered by hand `slow`, with its COST; its small case, which
 #       every stage runs, is registered beside it
 #   aloft_test_cost(name seconds)
-#       ctest starts the costly tests first under -j. COST is the seconds the gcc host
-#       stage measured for the test; once a build folder has run a test, ctest's own
+#       ctest starts the costly tests first under -j. COST is the seconds measured in
+#       the stage where the test is longest (the gcc host stage for the slow tests, the
+#       sanitizer stage for the small cases); once a build folder has run a test, ctest's own
 #       Testing/Temporary/CTestCostData.txt takes over
 #
 # A Catch2 small case passes -w NoTests: a filter that matches no test case then fails the
@@ -31,13 +34,16 @@ function(aloft_test_cost name seconds)
 endfunction()
 
 function(aloft_slow_test)
-  cmake_parse_arguments(PARSE_ARGV 0 arg "" "NAME;COST" "COMMAND;SMALL_COMMAND")
+  cmake_parse_arguments(PARSE_ARGV 0 arg "" "NAME;COST;SMALL_COST" "COMMAND;SMALL_COMMAND")
   if(NOT arg_NAME OR NOT arg_COMMAND OR NOT arg_SMALL_COMMAND OR "${arg_COST}" STREQUAL "")
     message(FATAL_ERROR "aloft_slow_test: NAME, COST, COMMAND and SMALL_COMMAND are required")
   endif()
   add_test(NAME ${arg_NAME} COMMAND ${arg_COMMAND})
   aloft_label_slow(${arg_NAME} ${arg_COST})
   add_test(NAME ${arg_NAME}_small COMMAND ${arg_SMALL_COMMAND})
+  if(arg_SMALL_COST)
+    aloft_test_cost(${arg_NAME}_small ${arg_SMALL_COST})
+  endif()
 endfunction()
 
 function(aloft_label_slow name seconds)
