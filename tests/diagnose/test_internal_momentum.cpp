@@ -192,7 +192,8 @@ bool kind_wanted(const std::string& kind) {
 
 const VerdictEffect* named_rotor(const Verdict& v) {
   for (const VerdictEffect& e : v.effects) {
-    if (e.effect == Effect::internal_momentum) return &e;
+    // Steady or spun up: both report as internal_momentum.
+    if (std::string(effect_name(e.effect)) == "internal_momentum") return &e;
   }
   return nullptr;
 }

@@ -118,6 +118,17 @@ struct EffectDescriptor {
   // session also tries the two fitted together at its first step
   // (4_judge/joint_candidates.hpp; none: no such effect).
   Effect jointly_with = Effect::none;
+  // A variant of another effect, reported under that effect's name (`name` is the same): a
+  // rotor whose speed changes beside the steady rotor. Not a candidate of its own, nor added
+  // at a later step: tried where the effect it varies fits as well as the best of the rest
+  // (4_judge/variant_candidates.hpp). none: not a variant.
+  Effect variant_of = Effect::none;
+  // What of a flight's own fit the flights of a session must agree on (told_apart.hpp,
+  // between_flight_scatter.hpp): the part the physics shares, with its covariance and its
+  // degrees of freedom (a wheel's axis; each throw starts and speeds its motor its own way).
+  // nullptr: every parameter.
+  int (*shared_part)(const Eigen::VectorXd& theta, const Eigen::MatrixXd& covariance, Eigen::VectorXd& part,
+                     Eigen::MatrixXd& part_covariance) = nullptr;
   // Effects a gyro alone cannot tell from this one whatever the flight (SPEC §4), padded
   // with `none`.
   std::array<Effect, 2> gyro_equivalents{};

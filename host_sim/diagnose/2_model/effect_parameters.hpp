@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <cmath>
 
 #include "diagnose/2_model/nominal_inertia.hpp"
 
@@ -27,6 +28,19 @@ struct EffectParameters {
   Eigen::Vector3d vector = Eigen::Vector3d::Zero();  // impulse N·m·s, bias rad/s, scale
   double time_s = 0.0;                               // impulse
   double rate_error = 0.0;                           // clock_drift
+  // internal_momentum spun up by a motor (`vector`: its final h): when it starts after the
+  // flight's first sample, its time constant, and the end of the data it describes
+  // (seconds after the first sample: the flight's, or a session's longest), where the
+  // report gives h (set by the flow; 0: unknown, h at the end read as the final h).
+  bool spin_up = false;
+  double spin_up_start_s = 0.0, spin_up_time_constant_s = 0.0, spin_up_end_s = 0.0;
+  // h at spin_up_end_s.
+  Eigen::Vector3d spin_up_h_at_end() const {
+    if (!(spin_up_end_s > 0.0)) return vector;
+    const double u = spin_up_end_s - spin_up_start_s;
+    return u <= 0.0 ? Eigen::Vector3d::Zero()
+                    : Eigen::Vector3d((1.0 - std::exp(-u / spin_up_time_constant_s)) * vector);
+  }
 };
 
 // For principal axis i (columns of `axes`, body axes), the body axis it lies nearest:

@@ -42,6 +42,7 @@ bool is_sensor_effect(Effect effect) { return describe(effect).sensor; }
 std::vector<Effect> candidate_effects(bool gyro_input) {
   std::vector<Effect> out;
   for (Effect e : registered_effects()) {
+    if (describe(e).variant_of != Effect::none) continue;  // tried by variant_candidates.hpp
     if (gyro_input || !is_sensor_effect(e)) out.push_back(e);
   }
   return out;

@@ -4,6 +4,7 @@
 
 #include "diagnose/2_model/flight_dynamics.hpp"
 #include "diagnose/2_model/reading_walks.hpp"
+#include "diagnose/2_model/spin_up_walk.hpp"
 #include "diagnose/2_model/walk_layout.hpp"
 
 namespace aloft::host::diagnose {
@@ -52,9 +53,14 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   const std::size_t n = flight.size();
   readings.resize(n);
   if (n == 0) return;
-  FlightDynamics dynamics(model_terms(model, theta), flight);
+  const ModelTerms terms = model_terms(model, theta);
+  FlightDynamics dynamics(terms, flight);
   dynamics.set_impulse_scale(model.nominal.tensor);
   const WalkLayoutKey key = layout_key(model, flight, ref, stepping, dynamics);
+  if (has_spin_up(terms)) {
+    predict_spin_up_readings(dynamics, terms, flight, ref, omega_ref, key.jump_time, readings, read);
+    return;
+  }
   const WalkLayout& layout = walk_layout(flight.time_s, key);
   const ReadingWalks walks(dynamics, key.jump_time, readings, layout.weights, rate_at_impulse, read);
   const Motion start = start_at(omega_ref);
@@ -107,12 +113,13 @@ void predict_readings_pair(const EffectModel& model, const Flight& flight, std::
                            const Eigen::VectorXd& theta, std::vector<Eigen::Vector3d>& readings_a,
                            std::vector<Eigen::Vector3d>& readings_b, ReadSamples read) {
   const std::size_t n = flight.size();
-  if (n == 0 || (ref != 0 && ref + 1 != n)) {
+  const ModelTerms terms = model_terms(model, theta);
+  if (n == 0 || (ref != 0 && ref + 1 != n) || has_spin_up(terms)) {
     predict_one_after_the_other(model, flight, ref, omega_a, theta, omega_b, theta, readings_a, readings_b,
                                 read);
     return;
   }
-  FlightDynamics dynamics(model_terms(model, theta), flight);
+  FlightDynamics dynamics(terms, flight);
   dynamics.set_impulse_scale(model.nominal.tensor);
   const WalkLayoutKey key = layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics);
   one_walks_side_by_side(paired_steps(dynamics), dynamics, dynamics, walk_layout(flight.time_s, key),
@@ -129,8 +136,13 @@ void predict_readings_two(const EffectModel& model, const Flight& flight, std::s
     return;
   }
   const std::size_t n = flight.size();
-  FlightDynamics dynamics_a(model_terms(model, theta_a), flight),
-      dynamics_b(model_terms(model, theta_b), flight);
+  const ModelTerms terms_a = model_terms(model, theta_a), terms_b = model_terms(model, theta_b);
+  if (has_spin_up(terms_a) || has_spin_up(terms_b)) {
+    predict_one_after_the_other(model, flight, ref, omega_a, theta_a, omega_b, theta_b, readings_a,
+                                readings_b, read);
+    return;
+  }
+  FlightDynamics dynamics_a(terms_a, flight), dynamics_b(terms_b, flight);
   dynamics_a.set_impulse_scale(model.nominal.tensor);
   dynamics_b.set_impulse_scale(model.nominal.tensor);
   const WalkLayoutKey key = layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics_a);

@@ -1,9 +1,11 @@
 #include "diagnose/4_judge/between_flight_scatter.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/SVD>
 
 #include <algorithm>
 
+#include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/printf_text.hpp"
 
 namespace aloft::host::diagnose {
@@ -18,11 +20,38 @@ const Candidate* own_candidate(const Analysis& a, Effect effect) {
 
 // The scatter of the flights' own estimates `theta` (their covariances `covariance`
 // widened already) about their precision-weighted mean; none for fewer than 3.
-std::optional<BetweenFlightScatter> scatter_of(Effect effect, const std::vector<Eigen::VectorXd>& theta,
-                                               const std::vector<Eigen::MatrixXd>& covariance) {
+std::optional<BetweenFlightScatter> scatter_of(Effect effect, std::vector<Eigen::VectorXd> theta,
+                                               std::vector<Eigen::MatrixXd> covariance) {
   const int n = static_cast<int>(theta.size());
   if (n < 3) return std::nullopt;
-  const Eigen::Index p = theta.front().size();
+  // Where the physics shares only part of the effect (a wheel's axis, not its speed), that
+  // part, with its own degrees of freedom.
+  Eigen::Index p = theta.front().size();
+  if (const auto part_of = describe(effect).shared_part) {
+    for (std::size_t j = 0; j < theta.size(); ++j) {
+      Eigen::VectorXd part;
+      Eigen::MatrixXd part_covariance;
+      p = part_of(theta[j], covariance[j], part, part_covariance);
+      if (p == 0) return std::nullopt;
+      theta[j] = part;
+      covariance[j] = part_covariance;
+    }
+    // A part with fewer degrees of freedom than entries (a unit axis: 2 of 3) is compared
+    // in the p directions it moves in: those across the parts' mean, where each part's
+    // covariance is full; along the mean it is zero up to rounding, which a pseudo-inverse
+    // would read as a precision of 1e20.
+    if (p < theta.front().size()) {
+      Eigen::VectorXd mean = Eigen::VectorXd::Zero(theta.front().size());
+      for (const Eigen::VectorXd& t : theta) mean += t;
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Eigen::MatrixXd(mean.normalized().transpose()),
+                                                  Eigen::ComputeFullV);
+      const Eigen::MatrixXd across = svd.matrixV().rightCols(p);
+      for (std::size_t j = 0; j < theta.size(); ++j) {
+        theta[j] = across.transpose() * theta[j];
+        covariance[j] = across.transpose() * covariance[j] * across;
+      }
+    }
+  }
   std::vector<Eigen::MatrixXd> precision;
   Eigen::MatrixXd weight = Eigen::MatrixXd::Zero(p, p);
   Eigen::VectorXd weighted = Eigen::VectorXd::Zero(p);
@@ -69,7 +98,8 @@ std::optional<BetweenFlightScatter> between_flight_scatter(Effect effect,
 
 std::optional<BetweenFlightScatter> between_flight_scatter(const Candidate& candidate,
                                                            const std::vector<const Analysis*>& flights) {
-  if (candidate.base.empty()) return between_flight_scatter(candidate.effect, flights);
+  if (candidate.base.empty() && candidate.flights_own_fits.empty())
+    return between_flight_scatter(candidate.effect, flights);
   std::vector<Eigen::VectorXd> theta;
   std::vector<Eigen::MatrixXd> covariance;
   for (std::size_t j = 0; j < candidate.flights_own_fits.size() && j < flights.size(); ++j) {

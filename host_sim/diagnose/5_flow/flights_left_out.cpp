@@ -128,7 +128,10 @@ Candidate FlightsLeftOut::evaluate(const Candidate& base, Effect added) const {
                                             SecondStart::base_at_nominal);
   c.params = effect_parameters(model_of(c.fit, nominal_, 0), c.fit.theta);
   judge_leaving_flights_out(c);
-  if (describe(added).named_only_when_told_apart && !c.base.empty())
+  // On a base, or a variant (its flights' own analyses did not all try it): each
+  // flight's own fit, for the agreement test of told_apart.hpp.
+  if (describe(added).named_only_when_told_apart &&
+      (!c.base.empty() || describe(added).variant_of != Effect::none))
     c.flights_own_fits = fit_each_flight(base, c);
   if (!std::isfinite(c.heldout_rms_rel_err)) {
     // Leaving a flight out of a nearly degenerate joint fit (two effects the pool can

@@ -4,6 +4,7 @@
 #include "diagnose/4_judge/joint_candidates.hpp"
 #include "diagnose/4_judge/plausibility.hpp"
 #include "diagnose/4_judge/stepwise_selection.hpp"
+#include "diagnose/4_judge/variant_candidates.hpp"
 
 namespace aloft::host::diagnose {
 
@@ -15,6 +16,8 @@ void judge_candidates(Analysis& analysis, const RankingContext& context, const H
   for (Effect effect : candidate_effects(context.gyro_input)) {
     analysis.candidates.push_back(effect == Effect::none ? nominal_model : evaluate(nominal_model, effect));
   }
+  for (Candidate& variant : variant_candidates(analysis.candidates, context, evaluate))
+    analysis.candidates.push_back(std::move(variant));
   for (Candidate& pair : joint_candidates(analysis.candidates, context, evaluate))
     analysis.candidates.push_back(std::move(pair));
   rule_out_senseless(analysis.candidates);

@@ -12,6 +12,7 @@
 #include "diagnose/4_judge/flight_agreement.hpp"
 #include "diagnose/4_judge/flip_period_summary.hpp"
 #include "diagnose/4_judge/onset.hpp"
+#include "diagnose/4_judge/spin_up_end.hpp"
 #include "diagnose/5_flow/diagnosis.hpp"
 #include "diagnose/5_flow/flights_left_out.hpp"
 #include "diagnose/5_flow/judge_candidates.hpp"
@@ -156,6 +157,9 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
   RankingContext context = pool.judged.ranking_context(nominal, resolution);
   context.own_analyses = pool.own;
   judge_candidates(analysis, context, FlightsLeftOut(pool.judged, pool.own, nominal, none_all, workers));
+  double longest = 0.0;
+  for (const Flight* f : pool.judged.flights) longest = std::max(longest, f->end_s() - f->start_s());
+  set_spin_up_end(analysis, longest);
   note_disagreeing_flights(analysis, pool.judged.flights, pool.own);
   note_between_flight_scatter(analysis, pool.own);
   add_flip_periods(session, pool, none_all, flights, nominal);

@@ -137,6 +137,23 @@ std::string internal_momentum_text(const EffectParameters& p) {
 
 nlohmann::json internal_momentum_json(const EffectParameters& p) { return {{"h_N_m_s", json_vec(p.vector)}}; }
 
+// `internal_momentum` spun up by a motor: the final h, the profile, and h at the end of the
+// data (SPEC §4: h_N_m_s is h at the flight's end).
+std::string internal_momentum_spin_up_text(const EffectParameters& p) {
+  const Eigen::Vector3d end = p.spin_up_h_at_end();
+  return printf_text(
+      "a wheel spun up %.0f ms after the first sample, time constant %.0f ms, to h = (%.3g, %.3g, "
+      "%.3g) N m s in body axes (|h| %.3g N m s; %.3g N m s at the end of the data)",
+      1000.0 * p.spin_up_start_s, 1000.0 * p.spin_up_time_constant_s, p.vector(0), p.vector(1), p.vector(2),
+      p.vector.norm(), end.norm());
+}
+
+nlohmann::json internal_momentum_spin_up_json(const EffectParameters& p) {
+  return {{"h_N_m_s", json_vec(p.spin_up_h_at_end())},    {"profile", "first_order_spin_up"},
+          {"final_h_N_m_s", json_vec(p.vector)},          {"start_s", p.spin_up_start_s},
+          {"time_constant_s", p.spin_up_time_constant_s}, {"end_s", p.spin_up_end_s}};
+}
+
 constexpr std::array kWords = {
 #define ALOFT_EFFECT(name) EffectWords{name##_text, name##_json},
 #include "diagnose/2_model/effects/effect_list.def"

@@ -1,0 +1,95 @@
+#include "diagnose/2_model/spin_up_walk.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "diagnose/2_model/walk_layout.hpp"
+
+namespace aloft::host::diagnose {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+using State = DynamicsState;
+
+// The body and the rotor's profile on the walk's clock (the reference's time plus true
+// time elapsed: recorded time times the clock factor).
+struct SpinUpBody {
+  const FlightDynamics& dynamics;
+  Vec3 final_momentum;
+  double start = 0.0;  // t0 on the walk's clock
+  double time_constant = 0.05;
+
+  State rate(double t, const State& x, bool running) const {
+    State dx = dynamics.rate(x);
+    if (!running) return dx;
+    const double decay = std::exp(-std::max(t - start, 0.0) / time_constant);
+    const Vec3 h = (1.0 - decay) * final_momentum, h_rate = (decay / time_constant) * final_momentum;
+    dx.head<3>() += dynamics.shell_inverse() * (h.cross(Vec3(x.head<3>())) - h_rate);
+    return dx;
+  }
+  // One RK4 step of signed length h from t; the motor's side from the step's middle.
+  void step(double t, double h, State& x) const {
+    const bool running = t + 0.5 * h > start;
+    const State k1 = rate(t, x, running);
+    const State k2 = rate(t + 0.5 * h, x + 0.5 * h * k1, running);
+    const State k3 = rate(t + 0.5 * h, x + 0.5 * h * k2, running);
+    const State k4 = rate(t + h, x + h * k3, running);
+    x += (h / 6.0) * (k1 + 2.0 * (k2 + k3) + k4);
+  }
+  // From t to u (either way) in steps no longer than kMaxStep.
+  void advance(double t, double u, State& x) const {
+    if (t == u) return;
+    const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(u - t) / kMaxStep - 1e-9)));
+    const double h = (u - t) / steps;
+    for (int i = 0; i < steps; ++i) step(t + i * h, h, x);
+  }
+};
+
+// From t to u, stopping at the motor's start and at an impulse's instant (applied forwards
+// with +1, backwards with -1) where they lie strictly between.
+void advance_across(const SpinUpBody& body, double t, double u, double jump_time, bool has_jump, Motion& m) {
+  std::vector<double> stops;
+  const auto between = [&](double s) { return (s - t) * (u - s) > 0.0; };
+  if (between(body.start)) stops.push_back(body.start);
+  if (has_jump && between(jump_time)) stops.push_back(jump_time);
+  std::sort(stops.begin(), stops.end(), [&](double a, double b) { return (a - b) * (u - t) < 0.0; });
+  double at = t;
+  for (double s : stops) {
+    body.advance(at, s, m.x);
+    if (has_jump && s == jump_time) body.dynamics.apply_jump(m, u > t ? 1.0 : -1.0);
+    at = s;
+  }
+  body.advance(at, u, m.x);
+}
+
+}  // namespace
+
+void predict_spin_up_readings(const FlightDynamics& dynamics, const ModelTerms& terms, const Flight& flight,
+                              std::size_t ref, const Vec3& omega_ref, double jump_time,
+                              std::vector<Vec3>& readings, ReadSamples read) {
+  const std::size_t n = flight.size();
+  readings.resize(n);
+  if (n == 0) return;
+  const double t_ref = flight.time_s[ref], factor = dynamics.time_factor();
+  const auto walk_time = [&](double t) { return t_ref + (t - t_ref) * factor; };
+  const SpinUpBody body{dynamics, terms.spin_up_momentum,
+                        walk_time(flight.time_s.front() + terms.spin_up_start_s),
+                        terms.spin_up_time_constant_s};
+  Motion start;
+  start.x.head<3>() = omega_ref;
+  start.x.tail<3>() = omega_ref;  // a damping rotor co-rotating at the reference
+  readings[ref] = dynamics.reading(start.x);
+  const bool jumps = dynamics.has_jump();
+  Motion m = start;
+  for (std::size_t k = ref + 1; k < n; ++k) {
+    advance_across(body, walk_time(flight.time_s[k - 1]), walk_time(flight.time_s[k]), jump_time, jumps, m);
+    if (read.wanted(k)) readings[k] = dynamics.reading(m.x);
+  }
+  m = start;
+  for (std::size_t k = ref; k-- > 0;) {
+    advance_across(body, walk_time(flight.time_s[k + 1]), walk_time(flight.time_s[k]), jump_time, jumps, m);
+    if (read.wanted(k)) readings[k] = dynamics.reading(m.x);
+  }
+}
+
+}  // namespace aloft::host::diagnose

@@ -1,0 +1,40 @@
+// Variants of an effect (descriptor `variant_of`: a rotor whose speed a motor changes,
+// beside the steady rotor) are tried at the first step only where the effect they vary
+// already fits about as well as the best of the rest: its held-out chi-square at most
+// kVariantReach times the lowest of every candidate's, and it takes at least
+// kMinimumStepShrink of the held-out gap (the bar a second effect meets at a step of its
+// own; on noise alone every candidate's chi-square is about the lowest). A wheel spun up after release is,
+// to a steady rotor fitted to the whole flight, a rotor of the wrong size early on: the
+// steady rotor still fits better than any other effect (held-back real wheel sessions:
+// 30,156 against 33,540 for the next), while on flights without a rotor it does not, and
+// there the variant costs nothing (a flight's diagnosis would otherwise fit five more
+// parameters, by a step a sample, everywhere).
+#pragma once
+
+#include <vector>
+
+#include "diagnose/4_judge/analysis.hpp"
+#include "diagnose/4_judge/candidate_ranking.hpp"
+#include "diagnose/4_judge/stepwise_selection.hpp"
+
+namespace aloft::host::diagnose {
+
+// Measured on the generated flight-controller sessions (tuning seeds): the steady rotor's
+// held-out chi-square on spin-up sessions lies at 1.00 of the lowest (it is the lowest);
+// 1.5 leaves room for a wheel on a body whose moments are also off.
+constexpr double kVariantReach = 1.5;
+
+// A variant tried is kept only where it shrinks its parent's held-out error by
+// kMinimumStepShrink as well: on steady-rotor sessions the spin-up fitted beside the steady
+// rotor took up the moments' share (the tensor's ratios read beside it 1-2 % off on 4 of
+// 15 sessions, within 0.07 % beside the steady rotor), where on spin-up sessions it takes
+// 17-62 % of what the steady rotor leaves (tuning seeds).
+// The variants to add to a session's first-step candidates `first` (each effect alone,
+// judged held out, not yet ranked; `context.own_analyses` its flights' own analyses). None
+// for one flight: a variant named only where told apart (a rotor) is never named there,
+// and fitting it would cost a flight's diagnosis half as much again (case00: 286 -> 453 M
+// instructions).
+std::vector<Candidate> variant_candidates(const std::vector<Candidate>& first, const RankingContext& context,
+                                          const CandidateEvaluator& evaluate);
+
+}  // namespace aloft::host::diagnose
