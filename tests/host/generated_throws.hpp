@@ -19,7 +19,13 @@
 //   - the body rings after release and after a catch: one or two structural modes at
 //     100–800 Hz along fixed body directions, decaying over 5–30 ms, up to 8 m/s² in
 //     single samples.
-// TrueFlight::release_s is where the hand's force reaches zero; `force_below_1_s` is where
+// With `retouch` (RecordingSpec) a finger touches again as the body leaves, as in the one
+// held-back real throw whose release came 14.9 ms early: after the let-go the hand's force
+// is gone for 2-4 ms (the body flies free), then a finger pushes for 5-15 ms at 3-4 m/s²
+// at the centre of mass (rising and falling over 1-3 ms each), with the torque of its
+// contact point 1-2 radii of gyration off the centre; then the hand is gone.
+// TrueFlight::release_s is where the hand's force reaches zero for good (after the
+// re-touch); `force_below_1_s` is where
 // it last fell below 1 m/s² (a tenth of g), which no accelerometer tells from its noise
 // and the air's drag: a release dated between the two is not early.
 // The accelerometer at r reads R^T f + w_dot x r + w x (w x r); both sensors pass a
@@ -50,6 +56,7 @@ enum class LandingKind { catch_by_hand, impact };
 struct TrueFlight {
   double release_s = 0;
   double force_below_1_s = 0;  // the hand's force at the centre of mass last fell below 1 m/s²
+  double first_let_go_s = 0;   // with a re-touch: where the force first fell away (else release_s)
   double landing_s = 0;
   double release_rate_rad_s = 0;
 };
@@ -84,6 +91,9 @@ struct RecordingSpec {
   // Slow let-go, hand torque to the end of it, ringing body (see the file comment), from
   // draws of their own so that the rest of the recording is drawn as without.
   bool real_hand = false;
+  // A finger touching again for 5-15 ms after the let-go (see the file comment), from
+  // draws of its own.
+  bool retouch = false;
   std::uint32_t seed = 1;
 };
 
@@ -112,6 +122,13 @@ class ThrowGenerator {
   double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
   double hand_uniform(double lo, double hi) {
     return std::uniform_real_distribution<double>(lo, hi)(hand_rng_);
+  }
+  double retouch_uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(retouch_rng_);
+  }
+  V3 retouch_unit() {
+    const double x = retouch_uniform(-1, 1), y = retouch_uniform(-1, 1), z = retouch_uniform(-1, 1);
+    return V3(x, y, z).normalized();
   }
   double normal() { return std::normal_distribution<double>(0.0, 1.0)(rng_); }
   // The draws of one expression are made one statement at a time: the order in which a
@@ -215,13 +232,60 @@ class ThrowGenerator {
       const double sigma = torque_to_the_end || spec_.real_hand ? u * u : u * u * (3 - 2 * u);
       step(f, w0 + (w_rel - w0) * sigma);
     }
-    out_.flights.push_back({t_, std::min(force_below_1_s, t_), 0.0, w_rel.norm()});
+    const double first_let_go_s = t_;
+    if (spec_.retouch) {
+      const double th = theta0 + 1.57;
+      const V3 push = drop ? V3(0, 0, 1) : (V3(std::cos(th), 0, std::sin(th)) + 0.3 * across).normalized();
+      force_below_1_s = retouch(push);
+    }
+    out_.flights.push_back({t_, std::min(force_below_1_s, t_), first_let_go_s, 0.0, w_rel.norm()});
     if (spec_.real_hand) start_ringing();
     fly(drop ? uniform(0.15, 0.5) : uniform(0.25, 0.8));
     out_.flights.back().landing_s = t_;
     const LandingKind landing = uniform(0, 1) < 0.5 ? LandingKind::catch_by_hand : LandingKind::impact;
     if (spec_.real_hand && landing == LandingKind::catch_by_hand) start_ringing();
     land(landing);
+  }
+
+  // The finger that touches again (see the file comment): the hand's force gone for 2-4 ms,
+  // then a push near the swing's last direction with a torque, integrated with Euler's
+  // equations (RK4 on the fine grid); returns the last instant the force was >= 1 m/s².
+  double retouch(const V3& push_world) {
+    const double gap = retouch_uniform(0.002, 0.004);
+    const double touch = retouch_uniform(0.005, 0.015);
+    const double peak = retouch_uniform(3.0, 4.0);
+    const double rise = retouch_uniform(0.001, 0.003);
+    const double fall = retouch_uniform(0.001, 0.003);
+    const V3 dir = (push_world + 0.5 * retouch_unit()).normalized();
+    // Mass from the mean moment and a radius of gyration; the contact 1-2 radii out.
+    const double gyration_m = retouch_uniform(0.03, 0.06);
+    const double mass_kg = out_.true_tensor.trace() / 3.0 / (gyration_m * gyration_m);
+    const V3 contact = retouch_unit() * (gyration_m * retouch_uniform(1.0, 2.0));
+    const M3& inertia = out_.true_tensor;
+    const M3 inverse = inertia.inverse();
+    const double start = t_;
+    double last_above_1 = t_;
+    while (t_ < start + gap + touch - 0.5 * fine_dt_) {
+      const double s = t_ - start - gap;  // into the touch
+      double level = 0.0;
+      if (s >= 0.0) {
+        const double up = s < rise ? 0.5 - 0.5 * std::cos(3.14159265 * s / rise) : 1.0;
+        const double left = touch - s;
+        const double down = left < fall ? 0.5 - 0.5 * std::cos(3.14159265 * left / fall) : 1.0;
+        level = peak * std::min(up, down);
+      }
+      const V3 f_world = level * dir;
+      const V3 torque_per_mass = contact.cross(orientation_.conjugate() * f_world);
+      auto rate = [&](const V3& w) -> V3 { return inverse * (mass_kg * torque_per_mass - w.cross(inertia * w)); };
+      const double h = fine_dt_;
+      const V3 k1 = rate(omega_);
+      const V3 k2 = rate(omega_ + 0.5 * h * k1);
+      const V3 k3 = rate(omega_ + 0.5 * h * k2);
+      const V3 k4 = rate(omega_ + h * k3);
+      if (level >= 1.0) last_above_1 = t_ + fine_dt_;
+      step(f_world, omega_ + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4));
+    }
+    return last_above_1;
   }
 
   // The fraction of the swing's force left with a fraction x of the let-go to go: the fast
@@ -364,6 +428,8 @@ class ThrowGenerator {
   std::mt19937 jitter_rng_{spec_.seed ^ 0x5EEDu};
   // The real hand's draws (let-go span, ringing): the same throws with and without it.
   std::mt19937 hand_rng_{spec_.seed ^ 0x4A4Du};
+  // The re-touch's draws: the same throws with and without it.
+  std::mt19937 retouch_rng_{spec_.seed ^ 0x70C4u};
   struct RingingMode {
     double amplitude_m_s2 = 0;
     double frequency_hz = 0;

@@ -222,3 +222,68 @@ TEST_CASE("replay: an off-centre accelerometer (imu.position given) still finds 
   CHECK(std::abs(double(f.at("landing_s")) - g.landing_s) <= 0.005);
   CHECK(f.at("imu_position_from") == "body");
 }
+
+// A body's rotor and a log's rotor_rad_s go together (replay/rotor_match.hpp): either
+// without the other is refused with one line naming both files, exit 2, no report; a
+// column whose speed is 0 throughout is ignored with a warning.
+TEST_CASE("replay: a rotor without its speed, or a speed without a rotor, is refused", "[replay][bad][rotor]") {
+  ScratchDir dir;
+  const aloft::test::ThrowSpec spec = aloft::test::rotor_throw_spec();
+  const aloft::test::GeneratedThrow with_rotor = aloft::test::generate_throw(spec);
+  aloft::test::ThrowSpec plain_spec = spec;
+  plain_spec.rotor.reset();
+  const aloft::test::GeneratedThrow plain = aloft::test::generate_throw(plain_spec);
+  const std::string rotor_body = dir.write("wheel.json", aloft::test::body_json_text(spec.tensor_kg_m2, {}, spec.rotor));
+  const std::string plain_body = dir.write("plain.json", aloft::test::body_json_text(spec.tensor_kg_m2, {}));
+  const std::string rotor_csv = dir.write("wheel_log.csv", aloft::test::imu_csv_text(with_rotor));
+  const std::string plain_csv = dir.write("plain_log.csv", aloft::test::imu_csv_text(plain));
+  const std::string report = dir.path("report.json");
+  const auto run = [&](const std::string& body, const std::string& input) {
+    std::filesystem::remove(report);
+    return run_aloft(dir, "replay --body '" + body + "' " + input + " --json '" + report + "'");
+  };
+  const auto expect_refused = [&](const aloft::test::RunResult& r, std::initializer_list<std::string> fragments) {
+    INFO("stderr: " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(aloft::test::count_lines(r.err) == 1);
+    for (const std::string& fragment : fragments) CHECK(r.err.find(fragment) != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(report));
+    CHECK(r.out.empty());
+  };
+  SECTION("a body with a rotor, a log without its speed") {
+    expect_refused(run(rotor_body, "--imu '" + plain_csv + "'"),
+                   {"wheel.json", "plain_log.csv", "rotor_rad_s", "torque"});
+  }
+  SECTION("a log with the speed, a body without a rotor") {
+    expect_refused(run(plain_body, "--imu '" + rotor_csv + "'"),
+                   {"plain.json", "wheel_log.csv", "rotor_rad_s", "\"rotor\""});
+  }
+  SECTION("a body with a rotor and a FIFO recording, which holds no rotor speed") {
+    // Two packets 3 of an ICM-42688-P at rest (SPEC §5), 1 ms apart: they decode.
+    std::string bytes;
+    for (const unsigned stamp : {1000u, 2000u}) {
+      const unsigned char packet[16] = {0x68, 0, 0, 0, 0, 0x08, 0, 0, 0, 0, 0, 0, 0, 0,
+                                        static_cast<unsigned char>(stamp >> 8u), static_cast<unsigned char>(stamp)};
+      bytes.append(reinterpret_cast<const char*>(packet), sizeof packet);
+    }
+    const std::string fifo = dir.write("rest.bin", bytes);
+    expect_refused(run(rotor_body, "--fifo '" + fifo + "' --odr-hz 1000"), {"wheel.json", "rest.bin", "rotor"});
+    // The same bytes with the plain body decode and replay: the refusal is the rotor's.
+    CHECK(run(plain_body, "--fifo '" + fifo + "' --odr-hz 1000").exit_code == 0);
+  }
+  SECTION("a speed of 0 throughout and no rotor: the column is ignored, with a warning") {
+    aloft::test::GeneratedThrow stopped = plain;
+    stopped.rotor_rad_s.assign(plain.t_s.size(), 0.0);
+    const std::string csv = dir.write("stopped.csv", aloft::test::imu_csv_text(stopped));
+    const auto r = run(plain_body, "--imu '" + csv + "'");
+    INFO("stderr: " << r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(r.err.find("warning") != std::string::npos);
+    CHECK(r.err.find("stopped.csv") != std::string::npos);
+    CHECK(r.err.find("ignored") != std::string::npos);
+    // It replays as the log without the column does.
+    const json ignored = json::parse(aloft::test::read_file(report));
+    REQUIRE(run(plain_body, "--imu '" + plain_csv + "'").exit_code == 0);
+    CHECK(json::parse(aloft::test::read_file(report)).at("flights") == ignored.at("flights"));
+  }
+}
