@@ -24,6 +24,14 @@
 // is gone for 2-4 ms (the body flies free), then a finger pushes for 5-15 ms at 3-4 m/s²
 // at the centre of mass (rising and falling over 1-3 ms each), with the torque of its
 // contact point 1-2 radii of gyration off the centre; then the hand is gone.
+// With `rotor` (RecordingSpec) the body carries a rotor whose speed the firmware logs
+// (rotor_flight.hpp): J 0.3-1.2 % of the body's smallest moment about a random axis; in
+// each spinning throw it starts from rest 0-60 ms after the release and spins up over
+// 0.15-0.25 s (a ramp or a first-order rise) to ±300-1500 rad/s, holds that for
+// 0.05-0.2 s (the pulse) and brakes to rest over 0.05-0.15 s; the flight lasts 0.15-0.35 s
+// longer so that most of it is airborne, and is the gyrostat's, I ω̇ + ω × (I ω + h) = −ḣ.
+// Every sample carries the speed as DShot telemetry gives it: a frame every 0.125-2 ms,
+// 1-4 ms late, 9 significant bits, held between frames.
 // TrueFlight::release_s is where the hand's force reaches zero for good (after the
 // re-touch); `force_below_1_s` is where
 // it last fell below 1 m/s² (a tenth of g), which no accelerometer tells from its noise
@@ -42,7 +50,8 @@
 
 #include "aloft/sensor/imu_sample.hpp"
 #include "aloft/dynamics/inertia_tensor.hpp"
-#include "low_pass.hpp"  // tests/diagnose/generator
+#include "low_pass.hpp"      // tests/diagnose/generator
+#include "rotor_flight.hpp"  // tests/diagnose/generator
 
 namespace aloft_test {
 
@@ -57,6 +66,11 @@ struct TrueFlight {
   double release_s = 0;
   double force_below_1_s = 0;  // the hand's force at the centre of mass last fell below 1 m/s²
   double first_let_go_s = 0;   // with a re-touch: where the force first fell away (else release_s)
+  // With a rotor, the total angular momentum R(q) (I ω + h) in world axes at the release
+  // and at the landing (constant in flight), and the rotor's profile (recording clock).
+  V3 momentum_world_release = V3::Zero();
+  V3 momentum_world_landing = V3::Zero();
+  aloft::test::RotorProfile rotor_profile{0.0, 0.2, false, 0.0, 0.0, 0.1};
   double landing_s = 0;
   double release_rate_rad_s = 0;
 };
@@ -71,6 +85,12 @@ struct Recording {
   Q sensor_to_body = Q::Identity();
   M3 true_tensor = M3::Identity();
   M3 nominal_tensor = M3::Identity();  // what the pipeline is told (maybe wrong)
+  // With a rotor: its moment about its axis (kg m^2) and the axis (body axes), and each
+  // sample's speed as the firmware logged it (rad/s, parallel to samples).
+  double rotor_inertia_kg_m2 = 0;
+  V3 rotor_axis = V3::UnitZ();
+  aloft::test::RotorTelemetry rotor_telemetry;
+  std::vector<double> rotor_rad_s;
 };
 
 struct RecordingSpec {
@@ -94,6 +114,8 @@ struct RecordingSpec {
   // A finger touching again for 5-15 ms after the let-go (see the file comment), from
   // draws of its own.
   bool retouch = false;
+  // A rotor whose speed is logged (see the file comment), from draws of its own.
+  bool rotor = false;
   std::uint32_t seed = 1;
 };
 
@@ -129,6 +151,9 @@ class ThrowGenerator {
   V3 retouch_unit() {
     const double x = retouch_uniform(-1, 1), y = retouch_uniform(-1, 1), z = retouch_uniform(-1, 1);
     return V3(x, y, z).normalized();
+  }
+  double rotor_uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rotor_rng_);
   }
   double normal() { return std::normal_distribution<double>(0.0, 1.0)(rng_); }
   // The draws of one expression are made one statement at a time: the order in which a
@@ -177,6 +202,7 @@ class ThrowGenerator {
     gyro_filter_ = aloft::generator::LowPass(cutoff_hz_, fine_step());
     accel_filter_ = aloft::generator::LowPass(cutoff_hz_, fine_step());
     if (spec_.sensor_errors) pick_sensor_errors();
+    if (spec_.rotor) pick_rotor(moments.minCoeff());
   }
 
   // Datasheet-sized errors of a MEMS IMU after a factory trim: accelerometer bias
@@ -240,7 +266,14 @@ class ThrowGenerator {
     }
     out_.flights.push_back({t_, std::min(force_below_1_s, t_), first_let_go_s, 0.0, w_rel.norm()});
     if (spec_.real_hand) start_ringing();
-    fly(drop ? uniform(0.15, 0.5) : uniform(0.25, 0.8));
+    const double airborne = drop ? uniform(0.15, 0.5) : uniform(0.25, 0.8);
+    if (spec_.rotor && !drop) {
+      rotor_profile_ = draw_rotor_profile(t_);
+      out_.flights.back().rotor_profile = rotor_profile_;
+      fly_with_rotor(airborne + rotor_uniform(0.15, 0.35));
+    } else {
+      fly(airborne);
+    }
     out_.flights.back().landing_s = t_;
     const LandingKind landing = uniform(0, 1) < 0.5 ? LandingKind::catch_by_hand : LandingKind::impact;
     if (spec_.real_hand && landing == LandingKind::catch_by_hand) start_ringing();
@@ -321,6 +354,29 @@ class ThrowGenerator {
     return sum;
   }
 
+  // The rotor's body-fixed constants, once per recording.
+  void pick_rotor(double smallest_moment) {
+    out_.rotor_inertia_kg_m2 = smallest_moment * rotor_uniform(0.003, 0.012);
+    const double x = rotor_uniform(-1, 1), y = rotor_uniform(-1, 1), z = rotor_uniform(-1, 1);
+    out_.rotor_axis = V3(x, y, z).normalized();
+    aloft::test::RotorTelemetry& telemetry = out_.rotor_telemetry;
+    telemetry.period_s = rotor_uniform(0.000125, 0.002);
+    telemetry.delay_s = rotor_uniform(0.001, 0.004);
+    telemetry.first_frame_s = rotor_uniform(0.0, telemetry.period_s);
+    telemetry.pole_pairs = rotor_uniform(0, 1) < 0.5 ? 6 : 7;
+  }
+
+  aloft::test::RotorProfile draw_rotor_profile(double release_s) {
+    aloft::test::RotorProfile p;
+    p.start_s = release_s + rotor_uniform(0.0, 0.06);
+    p.spin_up_s = rotor_uniform(0.15, 0.25);
+    p.first_order = rotor_uniform(0, 1) < 0.5;
+    p.full_rad_s = (rotor_uniform(0, 1) < 0.5 ? -1.0 : 1.0) * rotor_uniform(300.0, 1500.0);
+    p.hold_s = rotor_uniform(0.05, 0.2);
+    p.brake_s = rotor_uniform(0.05, 0.15);
+    return p;
+  }
+
   void fly(double seconds) {
     const double end = t_ + seconds;
     const V3 drag = unit_times(0, 0.3);
@@ -335,6 +391,24 @@ class ThrowGenerator {
       const V3 k4 = rate(omega_ + h * k3);
       step(orientation_ * drag, omega_ + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4));
     }
+  }
+
+  // The gyrostat (rotor_flight.hpp): its own RK4 on orientation and rate, split at the
+  // profile's corners; the world momentum at both ends is kept for the tests.
+  void fly_with_rotor(double seconds) {
+    const double end = t_ + seconds;
+    const V3 drag = unit_times(0, 0.3);
+    const aloft::test::RotorFlight flight(out_.true_tensor, out_.rotor_inertia_kg_m2, out_.rotor_axis,
+                                          rotor_profile_);
+    aloft::test::GyrostatState state;
+    state.q = orientation_;
+    state.w = omega_;
+    out_.flights.back().momentum_world_release = flight.world_momentum(t_, state);
+    while (t_ < end) {
+      flight.advance(t_, fine_dt_, state);
+      step(orientation_ * drag, state.w);
+    }
+    out_.flights.back().momentum_world_landing = flight.world_momentum(t_, state);
   }
 
   void land(LandingKind kind) {
@@ -411,6 +485,7 @@ class ThrowGenerator {
     clip(s.gyro_rad_s, 69.8, aloft::imu_gyro_clipped, s.flags);
     clip(s.accel_m_s2, 156.9, aloft::imu_accel_clipped, s.flags);
     out_.samples.push_back(s);
+    if (spec_.rotor) out_.rotor_rad_s.push_back(out_.rotor_telemetry.logged(t_, rotor_profile_));
   }
 
   static void clip(V3& v, double limit, std::uint8_t flag, std::uint8_t& flags) {
@@ -430,6 +505,9 @@ class ThrowGenerator {
   std::mt19937 hand_rng_{spec_.seed ^ 0x4A4Du};
   // The re-touch's draws: the same throws with and without it.
   std::mt19937 retouch_rng_{spec_.seed ^ 0x70C4u};
+  // The rotor's draws: the same throws with and without it (but for the longer flights).
+  std::mt19937 rotor_rng_{spec_.seed ^ 0x2070u};
+  aloft::test::RotorProfile rotor_profile_{0.0, 0.2, false, 0.0, 0.0, 0.1};
   struct RingingMode {
     double amplitude_m_s2 = 0;
     double frequency_hz = 0;

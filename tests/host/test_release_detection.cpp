@@ -430,3 +430,30 @@ TEST_CASE("release after a finger's re-touch, real hand: never more than 10 ms e
     CHECK(t->percent(t->found) >= 97.0);
   }
 }
+
+// The generator's rotor (generated_throws.hpp, rotor): in flight the body is the
+// gyrostat, so its total angular momentum R(q) (I ω + h) in world axes is the same at the
+// landing as at the release, and the rotor turned in flight.
+TEST_CASE("generated rotor throws conserve the world angular momentum in flight", "[release][rotor]") {
+  int flights = 0;
+  for (std::uint32_t seed = 7600; seed < 7610; ++seed) {
+    RecordingSpec spec;
+    spec.rotor = true;
+    spec.seed = seed;
+    const Recording rec = aloft_test::ThrowGenerator(spec).generate();
+    REQUIRE(rec.rotor_rad_s.size() == rec.samples.size());
+    for (const aloft_test::TrueFlight& f : rec.flights) {
+      if (f.rotor_profile.full_rad_s == 0.0) continue;  // a throw without a turn: no rotor run
+      ++flights;
+      // A throw released without a turn has L = 0: the rotor's full momentum is the scale.
+      const double l = f.momentum_world_release.norm();
+      const double h = rec.rotor_inertia_kg_m2 * std::abs(f.rotor_profile.full_rad_s);
+      INFO("seed " << seed << " release " << f.release_s << " s: |L| " << l << ", |h| at full speed " << h);
+      CHECK((f.momentum_world_landing - f.momentum_world_release).norm() <= 1e-9 * (l + h));
+      // The rotor ran in flight, and its share of |L| is not small.
+      CHECK(f.rotor_profile.start_s < f.landing_s);
+      CHECK(h > 0.01 * l);
+    }
+  }
+  CHECK(flights >= 20);
+}

@@ -141,9 +141,10 @@ TEST_CASE("rotor telemetry: DShot's quantised, delayed, held speed", "[rotor][ge
     CHECK(std::abs(read) >= std::abs(speed));
     CHECK(read * speed > 0.0);
   }
-  // Below 917 eRPM (13.1 rad/s at 7 pole pairs) the period does not fit: stopped.
-  CHECK(telemetry.quantised(13.0) == 0.0);
-  CHECK(telemetry.quantised(13.2) > 13.0);
+  // Below 917 eRPM (a period of 65,408 µs; 13.72 rad/s at 7 pole pairs) the period does
+  // not fit: stopped.
+  CHECK(telemetry.quantised(13.70) == 0.0);
+  CHECK(telemetry.quantised(13.74) >= 13.74);
   CHECK(telemetry.quantised(0.0) == 0.0);
   // Quantised for real: two speeds 0.1 % apart near full speed read the same.
   CHECK(telemetry.quantised(800.0) == telemetry.quantised(800.8));
