@@ -66,13 +66,14 @@ struct TrueFlight {
   double release_s = 0;
   double force_below_1_s = 0;  // the hand's force at the centre of mass last fell below 1 m/s²
   double first_let_go_s = 0;   // with a re-touch: where the force first fell away (else release_s)
+  double retouch_start_s = 0;  // with a re-touch: where the finger touched again (else release_s)
+  double landing_s = 0;
+  double release_rate_rad_s = 0;
   // With a rotor, the total angular momentum R(q) (I ω + h) in world axes at the release
   // and at the landing (constant in flight), and the rotor's profile (recording clock).
   V3 momentum_world_release = V3::Zero();
   V3 momentum_world_landing = V3::Zero();
   aloft::test::RotorProfile rotor_profile{0.0, 0.2, false, 0.0, 0.0, 0.1};
-  double landing_s = 0;
-  double release_rate_rad_s = 0;
 };
 
 struct Recording {
@@ -259,12 +260,14 @@ class ThrowGenerator {
       step(f, w0 + (w_rel - w0) * sigma);
     }
     const double first_let_go_s = t_;
+    double retouch_start_s = t_;
     if (spec_.retouch) {
       const double th = theta0 + 1.57;
       const V3 push = drop ? V3(0, 0, 1) : (V3(std::cos(th), 0, std::sin(th)) + 0.3 * across).normalized();
-      force_below_1_s = retouch(push);
+      force_below_1_s = retouch(push, retouch_start_s);
     }
-    out_.flights.push_back({t_, std::min(force_below_1_s, t_), first_let_go_s, 0.0, w_rel.norm()});
+    out_.flights.push_back(
+        {t_, std::min(force_below_1_s, t_), first_let_go_s, retouch_start_s, 0.0, w_rel.norm()});
     if (spec_.real_hand) start_ringing();
     const double airborne = drop ? uniform(0.15, 0.5) : uniform(0.25, 0.8);
     if (spec_.rotor && !drop) {
@@ -282,8 +285,9 @@ class ThrowGenerator {
 
   // The finger that touches again (see the file comment): the hand's force gone for 2-4 ms,
   // then a push near the swing's last direction with a torque, integrated with Euler's
-  // equations (RK4 on the fine grid); returns the last instant the force was >= 1 m/s².
-  double retouch(const V3& push_world) {
+  // equations (RK4 on the fine grid); returns the last instant the force was >= 1 m/s²,
+  // and where the finger touched in `touched_s`.
+  double retouch(const V3& push_world, double& touched_s) {
     const double gap = retouch_uniform(0.002, 0.004);
     const double touch = retouch_uniform(0.005, 0.015);
     const double peak = retouch_uniform(3.0, 4.0);
@@ -297,6 +301,7 @@ class ThrowGenerator {
     const M3& inertia = out_.true_tensor;
     const M3 inverse = inertia.inverse();
     const double start = t_;
+    touched_s = start + gap;
     double last_above_1 = t_;
     while (t_ < start + gap + touch - 0.5 * fine_dt_) {
       const double s = t_ - start - gap;  // into the touch

@@ -47,10 +47,12 @@ struct RotorProfile {
     if (first_order) return full_rad_s * -std::expm1(-s / tau_s());
     return s < spin_up_s ? full_rad_s * s / spin_up_s : full_rad_s;
   }
-  double driven_rate(double t) const {
-    const double s = t - start_s;
+  // The spin-up's acceleration at t on the piece that holds `piece` (the formula of that
+  // piece, so that a step ending on a corner keeps its own piece's value there).
+  double driven_rate(double t, double piece) const {
+    const double s = piece - start_s;
     if (s < 0.0) return 0.0;
-    if (first_order) return full_rad_s / tau_s() * std::exp(-s / tau_s());
+    if (first_order) return full_rad_s / tau_s() * std::exp(-(t - start_s) / tau_s());
     return s < spin_up_s ? full_rad_s / spin_up_s : 0.0;
   }
   double brake_rate() const { return full_rad_s / brake_s; }  // signed, as the speed
@@ -59,10 +61,13 @@ struct RotorProfile {
     if (t < brake_start_s()) return driven(t);
     return t < stop_s() ? driven(brake_start_s()) - brake_rate() * (t - brake_start_s()) : 0.0;
   }
-  double acceleration(double t) const {  // d speed / dt; right-continuous at the corners
-    if (t < brake_start_s()) return driven_rate(t);
-    return t < stop_s() ? -brake_rate() : 0.0;
+  // d speed / dt at t, by the formula of the piece between corners that holds `piece`
+  // (by default t's own: right-continuous at the corners).
+  double acceleration(double t, double piece) const {
+    if (piece < brake_start_s()) return driven_rate(t, piece);
+    return piece < stop_s() ? -brake_rate() : 0.0;
   }
+  double acceleration(double t) const { return acceleration(t, t); }
   // Where the acceleration jumps (the ramp's end is no corner of a first-order rise).
   std::array<double, 4> corners() const {
     return {start_s, first_order ? start_s : start_s + spin_up_s, brake_start_s(), stop_s()};
@@ -85,9 +90,13 @@ class RotorFlight {
         profile_(profile) {}
 
   Eigen::Vector3d h(double t) const { return rotor_inertia_ * profile_.speed(t) * axis_; }
-  Eigen::Vector3d h_dot(double t) const { return rotor_inertia_ * profile_.acceleration(t) * axis_; }
-  Eigen::Vector3d omega_dot(double t, const Eigen::Vector3d& w) const {
-    return inverse_ * (-w.cross(inertia_ * w + h(t)) - h_dot(t));
+  Eigen::Vector3d h_dot(double t, double piece) const {
+    return rotor_inertia_ * profile_.acceleration(t, piece) * axis_;
+  }
+  // ω̇ at t (on t's own piece of the profile, or on the one holding `piece`).
+  Eigen::Vector3d omega_dot(double t, const Eigen::Vector3d& w) const { return omega_dot(t, w, t); }
+  Eigen::Vector3d omega_dot(double t, const Eigen::Vector3d& w, double piece) const {
+    return inverse_ * (-w.cross(inertia_ * w + h(t)) - h_dot(t, piece));
   }
   // I ω + h turned into world axes: constant in free flight.
   Eigen::Vector3d world_momentum(double t, const GyrostatState& s) const {
@@ -112,19 +121,19 @@ class RotorFlight {
     Eigen::Vector4d q;  // Eigen's coefficient order x, y, z, w
     Eigen::Vector3d w;
   };
-  Rate rate(double t, const Eigen::Vector4d& q, const Eigen::Vector3d& w) const {
+  Rate rate(double t, const Eigen::Vector4d& q, const Eigen::Vector3d& w, double piece) const {
     const Eigen::Quaterniond dq = Eigen::Quaterniond(q) * Eigen::Quaterniond(0.0, w.x(), w.y(), w.z());
-    return {0.5 * dq.coeffs(), omega_dot(t, w)};
+    return {0.5 * dq.coeffs(), omega_dot(t, w, piece)};
   }
-  // At a corner the step's right-hand side must be the one of the interval it opens:
-  // evaluated a hair inside it.
+  // A step never crosses a corner, so every stage takes ḣ from the piece the step lies in
+  // (named by its midpoint), also at its ends, where a corner's other piece begins.
   void rk4_step(double t, double h, GyrostatState& s) const {
-    const double inside = 1e-12 * h;
+    const double piece = t + 0.5 * h;
     const Eigen::Vector4d q0 = s.q.coeffs();
-    const Rate k1 = rate(t + inside, q0, s.w);
-    const Rate k2 = rate(t + 0.5 * h, q0 + 0.5 * h * k1.q, s.w + 0.5 * h * k1.w);
-    const Rate k3 = rate(t + 0.5 * h, q0 + 0.5 * h * k2.q, s.w + 0.5 * h * k2.w);
-    const Rate k4 = rate(t + h - inside, q0 + h * k3.q, s.w + h * k3.w);
+    const Rate k1 = rate(t, q0, s.w, piece);
+    const Rate k2 = rate(t + 0.5 * h, q0 + 0.5 * h * k1.q, s.w + 0.5 * h * k1.w, piece);
+    const Rate k3 = rate(t + 0.5 * h, q0 + 0.5 * h * k2.q, s.w + 0.5 * h * k2.w, piece);
+    const Rate k4 = rate(t + h, q0 + h * k3.q, s.w + h * k3.w, piece);
     const Eigen::Vector4d q1 = q0 + h / 6.0 * (k1.q + 2.0 * (k2.q + k3.q) + k4.q);
     s.q = Eigen::Quaterniond(q1).normalized();
     s.w += h / 6.0 * (k1.w + 2.0 * (k2.w + k3.w) + k4.w);
