@@ -83,7 +83,8 @@ BodyRotor parse_rotor(const json& j, const std::string& source) {
       fail(source, "unknown key \"rotor." + item.key() + "\" (a rotor has \"inertia_kg_m2\" and \"axis\")");
     }
   }
-  if (!j.contains("inertia_kg_m2")) fail(source, "missing \"rotor.inertia_kg_m2\" (kg m^2, about its spin axis)");
+  if (!j.contains("inertia_kg_m2"))
+    fail(source, "missing \"rotor.inertia_kg_m2\" (kg m^2, about its spin axis)");
   if (!j.contains("axis")) fail(source, "missing \"rotor.axis\" (its spin axis in body axes, [x, y, z])");
   BodyRotor rotor;
   rotor.inertia_kg_m2 = number(j["inertia_kg_m2"], "rotor.inertia_kg_m2", source);
@@ -100,7 +101,8 @@ BodyRotor parse_rotor(const json& j, const std::string& source) {
 // The body's tensor is the whole assembly's, rotor included, so its moment about any
 // axis through the centre of mass is at least the rotor's about its own parallel axis:
 // a rotor at or above it is in another unit (g cm^2?) or belongs to another body.
-void check_rotor_fits(const BodyRotor& rotor, const InertiaTensor<double>& inertia, const std::string& source) {
+void check_rotor_fits(const BodyRotor& rotor, const InertiaTensor<double>& inertia,
+                      const std::string& source) {
   const double body_moment = rotor.axis.dot(inertia.tensor() * rotor.axis);
   if (rotor.inertia_kg_m2 < body_moment) return;
   char text[200];

@@ -1,11 +1,13 @@
 #include "replay/rotor_match.hpp"
 
+#include <cstdint>
+
 #include "common/commands.hpp"
 #include "common/warning.hpp"
 
 namespace aloft::host {
 
-void check_rotor_matches(const Body& body, const std::string& body_source, const Recording& recording) {
+void check_rotor_matches(const Body& body, const std::string& body_source, Recording& recording) {
   if (body.rotor && !recording.has_rotor_speed) {
     const std::string what = recording.format == "imu_csv"
                                  ? "has no rotor_rad_s column"
@@ -18,6 +20,11 @@ void check_rotor_matches(const Body& body, const std::string& body_source, const
     if (recording.max_abs_rotor_rad_s == 0.0) {
       warn(recording.path + ": rotor_rad_s is 0 in every sample and " + body_source +
            " has no \"rotor\": the column is ignored");
+      for (ImuSample<float>& s : recording.samples) {
+        s.rotor_rad_s = 0.0f;
+        s.flags = static_cast<std::uint8_t>(s.flags & ~imu_rotor_speed);
+      }
+      recording.has_rotor_speed = false;
       return;
     }
     throw Error(recording.path + ": a rotor_rad_s column (the rotor turns), but " + body_source +

@@ -8,7 +8,7 @@
 //   - a recording with the speed and a body without a rotor is refused as well (SPEC §3),
 //     unless the speed is 0 in every sample: a rotor that never turned has no momentum
 //     and no torque, so the flight is what it would be without it; then a warning says
-//     the column is ignored.
+//     the column is ignored (the speeds are taken out of the samples).
 // Each refusal is one line that names both files and what to add.
 #pragma once
 
@@ -20,6 +20,6 @@
 namespace aloft::host {
 
 // Throws Error (one line naming `body_source` and the recording) or warns, as above.
-void check_rotor_matches(const Body& body, const std::string& body_source, const Recording& recording);
+void check_rotor_matches(const Body& body, const std::string& body_source, Recording& recording);
 
 }  // namespace aloft::host

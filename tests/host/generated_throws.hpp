@@ -86,12 +86,12 @@ struct Recording {
   Q sensor_to_body = Q::Identity();
   M3 true_tensor = M3::Identity();
   M3 nominal_tensor = M3::Identity();  // what the pipeline is told (maybe wrong)
-  // With a rotor: its moment about its axis (kg m^2) and the axis (body axes), and each
-  // sample's speed as the firmware logged it (rad/s, parallel to samples).
+  // With a rotor: its moment about its axis (kg m^2), the axis (body axes) and the
+  // telemetry; each sample carries the speed as the firmware logged it (rotor_rad_s,
+  // flagged imu_rotor_speed).
   double rotor_inertia_kg_m2 = 0;
   V3 rotor_axis = V3::UnitZ();
   aloft::test::RotorTelemetry rotor_telemetry;
-  std::vector<double> rotor_rad_s;
 };
 
 struct RecordingSpec {
@@ -314,7 +314,9 @@ class ThrowGenerator {
       }
       const V3 f_world = level * dir;
       const V3 torque_per_mass = contact.cross(orientation_.conjugate() * f_world);
-      auto rate = [&](const V3& w) -> V3 { return inverse * (mass_kg * torque_per_mass - w.cross(inertia * w)); };
+      auto rate = [&](const V3& w) -> V3 {
+        return inverse * (mass_kg * torque_per_mass - w.cross(inertia * w));
+      };
       const double h = fine_dt_;
       const V3 k1 = rate(omega_);
       const V3 k2 = rate(omega_ + 0.5 * h * k1);
@@ -489,8 +491,11 @@ class ThrowGenerator {
     s.accel_m_s2 = accel_scale_.cwiseProduct(accel_axes_ * accel_f) + accel_bias_ + accel_noise_ * normal3();
     clip(s.gyro_rad_s, 69.8, aloft::imu_gyro_clipped, s.flags);
     clip(s.accel_m_s2, 156.9, aloft::imu_accel_clipped, s.flags);
+    if (spec_.rotor) {
+      s.rotor_rad_s = out_.rotor_telemetry.logged(t_, rotor_profile_);
+      s.flags = static_cast<std::uint8_t>(s.flags | aloft::imu_rotor_speed);
+    }
     out_.samples.push_back(s);
-    if (spec_.rotor) out_.rotor_rad_s.push_back(out_.rotor_telemetry.logged(t_, rotor_profile_));
   }
 
   static void clip(V3& v, double limit, std::uint8_t flag, std::uint8_t& flags) {

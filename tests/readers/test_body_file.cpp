@@ -97,7 +97,8 @@ TEST_CASE("body file: rotor is a wheel's moment and its spin axis in body axes",
   const std::string head = R"({"inertia": {"principal": [0.002, 0.003, 0.004]}, "rotor": )";
   SECTION("given: the moment as written, the axis normalised") {
     WarningCapture warnings;
-    const auto body = read_body_file(dir.write("r.json", head + R"({"inertia_kg_m2": 1.5e-5, "axis": [0, 3, 4]}})"));
+    const auto body =
+        read_body_file(dir.write("r.json", head + R"({"inertia_kg_m2": 1.5e-5, "axis": [0, 3, 4]}})"));
     REQUIRE(body.rotor.has_value());
     CHECK(body.rotor->inertia_kg_m2 == 1.5e-5);
     CHECK(body.rotor->axis.x() == 0.0);
@@ -106,7 +107,8 @@ TEST_CASE("body file: rotor is a wheel's moment and its spin axis in body axes",
     CHECK(warnings.messages().empty());
   }
   SECTION("an axis of any length is a direction: tiny and huge components") {
-    const auto tiny = read_body_file(dir.write("t.json", head + R"({"inertia_kg_m2": 1e-5, "axis": [1e-200, 0, 0]}})"));
+    const auto tiny =
+        read_body_file(dir.write("t.json", head + R"({"inertia_kg_m2": 1e-5, "axis": [1e-200, 0, 0]}})"));
     CHECK(tiny.rotor->axis.x() == 1.0);
     const auto huge =
         read_body_file(dir.write("h.json", head + R"({"inertia_kg_m2": 1e-5, "axis": [1e300, -1e300, 0]}})"));

@@ -33,8 +33,8 @@ TEST_CASE("plain IMU CSV: gyro only and with accelerometer", "[readers][imu]") {
 TEST_CASE("plain IMU CSV: the rotor's speed in rotor_rad_s", "[readers][imu][rotor]") {
   ScratchDir dir;
   // Any column order, any case; rad/s as written (the gyro's units do not apply to it).
-  const auto log = read_imu_csv(dir.write(
-      "r.csv", "t,gx,gy,gz,Rotor_Rad_S,ax,ay,az\n0,1,2,3,0,0,0,9.8\n0.001,1,2,3,-412.5,0,0,9.8\n"));
+  const auto log = read_imu_csv(
+      dir.write("r.csv", "t,gx,gy,gz,Rotor_Rad_S,ax,ay,az\n0,1,2,3,0,0,0,9.8\n0.001,1,2,3,-412.5,0,0,9.8\n"));
   REQUIRE(log.rotor_rad_s.size() == 2);
   CHECK(log.rotor_rad_s[0] == 0.0);
   CHECK(log.rotor_rad_s[1] == -412.5);
@@ -115,7 +115,8 @@ TEST_CASE("bad IMU logs: one-line errors naming file, line and problem", "[reade
   SECTION("a rotor speed that is not a finite number: as any other cell") {
     for (const char* cell : {"NaN", "inf", "-Infinity"}) {
       INFO(cell);
-      const auto p = dir.write("r.csv", std::string("t,gx,gy,gz,rotor_rad_s\n0,1,2,3,10\n0.001,1,2,3,") + cell + "\n");
+      const auto p =
+          dir.write("r.csv", std::string("t,gx,gy,gz,rotor_rad_s\n0,1,2,3,10\n0.001,1,2,3,") + cell + "\n");
       CHECK_ONE_LINE_ERROR(read_imu_csv(p), p + ":3:", "rotor_rad_s", "not finite");
     }
     const auto empty = dir.write("e.csv", "t,gx,gy,gz,rotor_rad_s\n0,1,2,3,\n");

@@ -62,8 +62,8 @@ TEST_CASE("rotor flight: the world angular momentum I ω + h is constant", "[rot
       GyrostatState s;
       s.w = spec.omega_release_rad_s;
       const Drift d = momentum_drift(flight, spec.tensor_kg_m2, s, 0.9);
-      INFO("first order " << first_order << ", full " << full << " rad/s: drift " << d.total
-                          << ", without h " << d.without_rotor);
+      INFO("first order " << first_order << ", full " << full << " rad/s: drift " << d.total << ", without h "
+                          << d.without_rotor);
       CHECK(d.total < 1e-10);
       // The rotor carries a large share of the momentum mid-flight: leaving h out breaks it.
       CHECK(d.without_rotor > 0.1);
@@ -122,7 +122,8 @@ TEST_CASE("rotor throw: the accelerometer reads the specific force of the gyrost
     worst = std::max(worst, (g.accel_m_s2[k] - expected).norm());
     // What a torque-free body would read there: the rotor's torque is not in it.
     const Eigen::Vector3d torque_free = inertia.inverse() * -w.cross(inertia * w);
-    rotor_share = std::max(rotor_share, (g.accel_m_s2[k] - torque_free.cross(r) - w.cross(w.cross(r))).norm());
+    rotor_share =
+        std::max(rotor_share, (g.accel_m_s2[k] - torque_free.cross(r) - w.cross(w.cross(r))).norm());
   }
   INFO("worst " << worst << " m/s^2; the rotor's torque adds up to " << rotor_share << " m/s^2");
   CHECK(worst < 2e-3);

@@ -33,7 +33,7 @@ namespace aloft::test {
 struct RotorProfile {
   double start_s = 0.0;  // spin-up starts (the recording's clock)
   double spin_up_s = 0.2;
-  bool first_order = false;  // false: a ramp
+  bool first_order = false;   // false: a ramp
   double full_rad_s = 600.0;  // signed: a positive speed turns right-handed about the axis
   double hold_s = 0.1;
   double brake_s = 0.1;  // from full speed to rest
