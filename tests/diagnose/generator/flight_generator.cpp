@@ -8,7 +8,7 @@
 
 #include "aloft/dynamics/inertia_tensor.hpp"
 #include "body_catalogue.hpp"
-#include "low_pass.hpp"
+#include "gyro_filter.hpp"
 #include "perturbed_rigid_body.hpp"
 #include "seeded_random.hpp"
 
@@ -293,7 +293,7 @@ std::vector<std::string> equivalent_class(const std::string& effect, DataKind ki
 // act later in the flight, or change so little over the pre-roll that the filter does not
 // see it).
 template <typename Reading>
-void settle_on_motion_before(LowPass& filter, const FlightPhysics& physics, const Eigen::Vector3d& omega0,
+void settle_on_motion_before(GyroFilter& filter, const FlightPhysics& physics, const Eigen::Vector3d& omega0,
                              double cutoff_hz, double rate_hz, const Reading& reading) {
   FlightPhysics backwards;
   backwards.inertia_kg_m2 = physics.inertia_kg_m2;
@@ -495,8 +495,25 @@ void add_dissipation_measured(const FlightSpec& spec, const std::vector<TrueSamp
   }
 }
 
-// The gyro's readings in sensor axes, low-passed if the spec says so, with their noise;
-// returns the spread of the noise as it is in the readings.
+// Readings per independent sample of white noise behind the spec's filter: (sum h)^2 /
+// sum h^2 of its impulse response, summed until the response has died away (40 time
+// constants of the cutoff).
+double filter_correlation(const FlightSpec& spec) {
+  if (!(spec.gyro_cutoff_hz > 0.0)) return 1.0;
+  GyroFilter filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, 1.0 / spec.imu_rate_hz);
+  const int steps = static_cast<int>(std::ceil(40.0 * spec.imu_rate_hz / spec.gyro_cutoff_hz)) + 10;
+  double sum = 0.0, squares = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    const double h = filter(Eigen::Vector3d(k == 0 ? 1.0 : 0.0, 0.0, 0.0)).x();
+    sum += h;
+    squares += h * h;
+  }
+  return sum * sum / squares;
+}
+
+// The gyro's readings in sensor axes, low-passed if the spec says so, with their noise,
+// quantised if it says so; returns the spread of the noise as it is in the readings
+// (quantisation included).
 Eigen::Vector3d record_gyro(const FlightSpec& spec, const Throw& thrown, const InjectedEffect& effect,
                             const TrueFlight& flight, SeededRandom& noise_rng, host::ImuLog& log) {
   const double step_s = 1.0 / spec.imu_rate_hz;
@@ -505,12 +522,14 @@ Eigen::Vector3d record_gyro(const FlightSpec& spec, const Throw& thrown, const I
   // The filter is linear: the readings' noise is the filtered noise sequence, kept
   // apart to measure its spread; filtering reading and noise separately adds up to
   // filtering their sum.
-  LowPass signal_filter(spec.gyro_cutoff_hz, step_s), noise_filter(spec.gyro_cutoff_hz, step_s);
+  GyroFilter signal_filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, step_s),
+      noise_filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, step_s);
   if (spec.gyro_cutoff_hz > 0.0) {
     settle_on_motion_before(
         signal_filter, effect.physics, thrown.omega0_body, spec.gyro_cutoff_hz, spec.imu_rate_hz,
         [&](const Eigen::Vector3d& w) { return gain.cwiseProduct(body_to_sensor * w) + effect.bias; });
   }
+  const double q = spec.gyro_quantum_rad_s;
   Eigen::Vector3d noise_squares = Eigen::Vector3d::Zero();
   for (const FlightState& state : flight.states) {
     const Eigen::Vector3d w_sensor = body_to_sensor * state.omega_body;
@@ -520,8 +539,13 @@ Eigen::Vector3d record_gyro(const FlightSpec& spec, const Throw& thrown, const I
       reading = signal_filter(reading);
       noise = noise_filter(noise);
     }
+    Eigen::Vector3d logged = reading + noise;
+    if (q > 0.0) {
+      logged = (logged / q).array().round().matrix() * q;
+      noise = logged - reading;
+    }
     noise_squares += noise.cwiseAbs2();
-    log.gyro_rad_s.push_back(reading + noise);
+    log.gyro_rad_s.push_back(logged);
   }
   return (noise_squares / static_cast<double>(flight.states.size())).cwiseSqrt();
 }
@@ -667,6 +691,7 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
     f.imu.format = "imu_csv";
     f.imu.time_s = flight.recorded_s;
     f.gyro_noise_in_readings_rad_s = record_gyro(spec, thrown, effect, flight, noise_rng, f.imu);
+    f.gyro_noise_correlation = filter_correlation(spec);
     if (spec.accelerometer) record_accelerometer(spec, body, effect, flight, dynamics, noise_rng, f.imu);
   } else {
     record_markers(spec, thrown, flight, f.true_samples, noise_rng, f.markers);

@@ -91,6 +91,12 @@ struct FlightSpec {
   // its readings, signal and noise alike, settled on the first one (issue 31: fast,
   // filtered gyros, whose noise is correlated). 0: none (every earlier flight).
   double gyro_cutoff_hz = 0.0;
+  // The low-pass's order: 2, the Butterworth above; 1, a flight controller's first-order
+  // PT1 (first_order_low_pass.hpp), whose noise stays correlated over fs / (pi fc) readings.
+  int gyro_filter_order = 2;
+  // > 0: each reading rounded to a multiple of this after the noise (a flight controller
+  // logs 1/16.4 deg/s, the ICM-42688's and MPU-6000's step at +-2000 deg/s). 0: none.
+  double gyro_quantum_rad_s = 0.0;
   bool accelerometer = false;
   double accel_noise_m_s2 = 0.05;
 
@@ -172,6 +178,10 @@ struct GeneratedFlight {
   // standard deviation of the added noise sequence itself, the truth a noise floor is
   // measured against.
   Eigen::Vector3d gyro_noise_in_readings_rad_s = Eigen::Vector3d::Zero();
+  // IMU: readings per independent sample of that noise, from the filter itself:
+  // (sum h)^2 / sum h^2 of its impulse response h (1 without a low-pass), the factor by
+  // which a fit that counts readings overstates its evidence.
+  double gyro_noise_correlation = 1.0;
 };
 
 // Deterministic in (spec, seed) on every platform. The draws come from three
