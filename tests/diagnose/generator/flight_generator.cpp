@@ -61,6 +61,8 @@ struct Throw {
   Eigen::Vector3d com0_m;
   Eigen::Vector3d velocity0_m_s;
   std::vector<Eigen::Vector3d> markers_m;  // body axes
+  // A rotor spun up after release (FlightSpec::rotor_spin_up): this throw's profile.
+  double spin_up_start_s = 0.0, spin_up_time_constant_s = 0.0, spin_up_speed = 1.0;
 };
 
 Throw draw_throw(const BodyModel& body, const FlightSpec& spec, SeededRandom& rng) {
@@ -93,6 +95,13 @@ Throw draw_throw(const BodyModel& body, const FlightSpec& spec, SeededRandom& rn
     bool spread = true;
     for (const auto& other : t.markers_m) spread = spread && (m - other).norm() >= min_gap;
     if (spread) t.markers_m.push_back(m);
+  }
+  // Drawn last, and only for a spun-up rotor, so that every other throw keeps its draws.
+  if (spec.rotor_spin_up) {
+    t.spin_up_start_s = rng.uniform(spec.spin_up_start_low_s, spec.spin_up_start_high_s);
+    t.spin_up_time_constant_s =
+        rng.uniform(spec.spin_up_time_constant_low_s, spec.spin_up_time_constant_high_s);
+    t.spin_up_speed = 1.0 + rng.uniform(-spec.spin_up_speed_spread, spec.spin_up_speed_spread);
   }
   return t;
 }
@@ -259,10 +268,20 @@ InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, con
                 {"duration_s", e.physics.impulse_duration_s}};
   } else if (effect == "internal_momentum") {
     const double typical_l = p.moments.mean() * 10.0;
-    e.physics.internal_momentum_N_m_s =
+    const Eigen::Vector3d h =
         rng.uniform(spec.rotor_fraction_low, spec.rotor_fraction_high) * typical_l * rng.unit_vector();
-    e.params = {{"h_N_m_s", to_json(e.physics.internal_momentum_N_m_s)},
-                {"h_fraction_of_L", e.physics.internal_momentum_N_m_s.norm() / l0.norm()}};
+    if (spec.rotor_spin_up) {
+      e.physics.spin_up = {thrown.spin_up_speed * h, thrown.spin_up_start_s, thrown.spin_up_time_constant_s};
+      const Eigen::Vector3d at_end = e.physics.spin_up.momentum(thrown.duration_s);
+      e.params = {{"h_N_m_s", to_json(at_end)},
+                  {"final_h_N_m_s", to_json(e.physics.spin_up.final_momentum_N_m_s)},
+                  {"start_s", thrown.spin_up_start_s},
+                  {"time_constant_s", thrown.spin_up_time_constant_s},
+                  {"h_fraction_of_L", at_end.norm() / l0.norm()}};
+    } else {
+      e.physics.internal_momentum_N_m_s = h;
+      e.params = {{"h_N_m_s", to_json(h)}, {"h_fraction_of_L", h.norm() / l0.norm()}};
+    }
   } else {
     throw std::invalid_argument("unknown effect '" + effect + "'");
   }
@@ -314,7 +333,7 @@ void settle_on_motion_before(GyroFilter& filter, const FlightPhysics& physics, c
 // transverse part stays below a quarter of |h|.
 bool rotor_along_symmetry_axis(const Principal& p, const FlightPhysics& physics) {
   const int symmetry = symmetry_axis_index(p.moments);
-  const Eigen::Vector3d& h = physics.internal_momentum_N_m_s;
+  const Eigen::Vector3d h = physics.internal_momentum_N_m_s + physics.spin_up.final_momentum_N_m_s;
   if (symmetry < 0 || h.norm() == 0.0) return false;
   return std::abs(h.normalized().dot(p.axes.col(symmetry))) >= std::cos(15.0 * kDegree);
 }
@@ -349,6 +368,7 @@ InjectedEffect combine(InjectedEffect first, const InjectedEffect& second, const
   }
   first.physics.aero_k_N_m_s2 += second.physics.aero_k_N_m_s2;
   first.physics.internal_momentum_N_m_s += second.physics.internal_momentum_N_m_s;
+  if (second.physics.spin_up.present()) first.physics.spin_up = second.physics.spin_up;
   if (second.physics.rotor_inertia_kg_m2 > 0.0) {
     first.physics.rotor_inertia_kg_m2 = second.physics.rotor_inertia_kg_m2;
     first.physics.rotor_damping_N_m_s = second.physics.rotor_damping_N_m_s;
@@ -475,7 +495,7 @@ std::vector<TrueSample> true_samples_of(const FlightSpec& spec, const Throw& thr
     s.orientation = state.orientation;
     s.omega_body = state.omega_body;
     s.kinetic_energy_J = dynamics.kinetic_energy(state);
-    s.angular_momentum_world = state.orientation * dynamics.angular_momentum(state);
+    s.angular_momentum_world = state.orientation * dynamics.angular_momentum(state, s.t_s);
     if (spec.data == DataKind::markers) {
       s.com_position_m = thrown.com0_m + thrown.velocity0_m_s * s.t_s + 0.5 * kGravity * s.t_s * s.t_s;
     }

@@ -108,6 +108,15 @@ struct FlightSpec {
   // internal_momentum: |h| drawn in this range of a typical |L| (10 rad/s about the mean
   // moment), in any direction.
   double rotor_fraction_low = 0.005, rotor_fraction_high = 0.10;
+  // internal_momentum spun up by a motor after release (rotor_spin_up.hpp) instead of
+  // spinning steadily: its axis and |h| (the range above) drawn once from the seed, as for a
+  // steady rotor; each throw starts the motor spin_up_start_s after release, with time
+  // constant spin_up_time_constant_s and a final speed spin_up_speed_spread either side of
+  // the drawn one (each drawn from the throw's seed: a slightly different profile each throw).
+  bool rotor_spin_up = false;
+  double spin_up_start_low_s = 0.02, spin_up_start_high_s = 0.08;
+  double spin_up_time_constant_low_s = 0.04, spin_up_time_constant_high_s = 0.08;
+  double spin_up_speed_spread = 0.15;
 
   // A compound flight: a second effect at the same time (empty or "none": one effect).
   // Its magnitude is drawn as for a flight of its own; truth.params then holds each
@@ -151,7 +160,9 @@ struct FlightTruth {
 //   impulse: time_s (pulse start), angular_impulse_N_m_s (body axes), duration_s.
 //   aero_torque: k_N_m_s2, L_drop_fraction (|L| lost over the flight, from the truth).
 //   gyro_bias: bias_rad_s; gyro_scale: scale_error; clock_drift: rate_error.
-//   internal_momentum: h_N_m_s (body axes), h_fraction_of_L (|h| over the throw's |L0|).
+//   internal_momentum: h_N_m_s (body axes), h_fraction_of_L (|h| over the throw's |L0|);
+//     spun up (FlightSpec::rotor_spin_up): h_N_m_s is h at the flight's end, and
+//     final_h_N_m_s, start_s and time_constant_s describe the profile.
 
 // The noise-free truth at each data sample (true time, not the sensor's clock).
 struct TrueSample {
