@@ -100,7 +100,7 @@ TEST_CASE("phone-like sessions: right class on every one with an effect, a blank
   const auto start = std::chrono::steady_clock::now();
   int right = 0, total = 0, confident = 0, confident_right = 0;
   int effect_sessions = 0, effect_right = 0, noise_confident = 0;
-  for (const gen::SessionCase& c : gen::phone_like_session_cases()) {
+  for (const gen::PhoneSessionCase& c : gen::phone_like_session_cases()) {
     const gen::PhoneLikeSession s = gen::generate_phone_like_session(c.flight.spec, c.flights, c.flight.seed);
     const std::vector<Segment> segments = read_back(s.segments_csv, c.flight.name);
     REQUIRE(segments.size() == static_cast<std::size_t>(c.flights));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "diagnose/1_input/time_gaps.hpp"
+#include "diagnose/4_judge/low_pass_shape.hpp"
 #include "diagnose/4_judge/noise_spectrum.hpp"
 
 namespace aloft::host::diagnose {
@@ -81,6 +82,7 @@ struct SpectralFloor {
   Eigen::Vector3d sigma = Eigen::Vector3d::Zero();
   double correlation = 1.0;
   double cutoff_hz = 0.0;  // the low-pass fitted (0: none)
+  int order = 0;           // its shape (low_pass_shape.hpp; 0: none)
 };
 
 // The longest run of usable samples with no time gap inside.
@@ -122,24 +124,6 @@ std::size_t end_of_motion_band(const NoiseSpectrum& s) {
   return 0;
 }
 
-// A digital 2nd-order Butterworth low-pass's power gain (bilinear transform, as a MEMS
-// gyro's and the generator's): 1 / (1 + (tan(pi f / fs) / tan(pi fc / fs))^4); 1 for no
-// filter (cutoff_hz <= 0).
-// Split in two so that a search over cutoffs takes each frequency's tangent once.
-constexpr double kPi = 3.14159265358979323846;
-double frequency_tangent(double f_hz, double sample_hz) {
-  return std::tan(kPi * std::min(f_hz, 0.4999 * sample_hz) / sample_hz);
-}
-double cutoff_tangent(double cutoff_hz, double sample_hz) { return std::tan(kPi * cutoff_hz / sample_hz); }
-double gain_of_tangents(double frequency_tangent, double cutoff_tangent) {
-  const double r = frequency_tangent / cutoff_tangent;
-  return 1.0 / (1.0 + r * r * r * r);
-}
-double low_pass_gain(double f_hz, double cutoff_hz, double sample_hz) {
-  if (cutoff_hz <= 0.0) return 1.0;
-  return gain_of_tangents(frequency_tangent(f_hz, sample_hz), cutoff_tangent(cutoff_hz, sample_hz));
-}
-
 // The bins the noise's shape is fitted on: from the motion band's end down to
 // kFitDepth below the highest (beyond that lie rounding and the filter's zero at the
 // Nyquist rate).
@@ -148,9 +132,8 @@ constexpr double kFitDepth = 1e-4;
 // The low-pass's gain as the spectrum's bins see it (through the window's response,
 // noise_spectrum.hpp), bins first .. last - 1.
 std::vector<double> gain_in_bins(const NoiseSpectrum& s, std::size_t first, std::size_t last,
-                                 double cutoff_hz) {
-  return expected_densities(s, first, last,
-                            [&](double f) { return low_pass_gain(f, cutoff_hz, s.sample_hz); });
+                                 const LowPassShape& shape) {
+  return expected_densities(s, first, last, [&](double f) { return shape.gain(f); });
 }
 
 // Below the motion band's edge the bins hold the motion and the noise: the noise's
@@ -170,70 +153,108 @@ constexpr std::size_t kFirstBoundingBin = 3;
 
 // The low-pass whose shape, as the bins see it, fits the three axes' spectrum above the
 // motion band best (in log power, the level for each cutoff its best) and exceeds none of
-// the bins below it kBelowEdgeSlack times (each excess's log counts as a misfit): cutoffs
-// on a log grid of 64 from kLowestCutoffBins bins to the Nyquist rate, and none. Returns
-// the cutoff (0: none). Measured on the grid of test_filtered_noise_floor.cpp (tuning and
-// withheld seeds): worst x1.74 and x1.53 from 2 bins, x1.79 and x1.64 from 1 bin (a
-// flight whose knee hides under the motion's band runs further down), x1.80 and x1.53
+// the bins below it kBelowEdgeSlack times (each excess's log counts as a misfit): for each
+// shape of low_pass_shape.hpp (the Butterworth first, then the PT1: a tie keeps the
+// earlier), cutoffs on a log grid of 64 from kLowestCutoffBins bins to the Nyquist rate,
+// and none after the Butterworth's. A PT1's cutoffs start at the motion band's edge: with
+// its knee below the edge the bins above see only its 1/f^2 roll-off, which a motion's own
+// tail has as well where the motion is not smooth (a knock, a string's buzz: the real
+// racquet flights of 2025-01-16 fitted a PT1 at 6.2 Hz, the grid's lowest, at 3 of 6
+// flights, weighting them 30 times less), where a Butterworth's 1/f^4 is the sensor's. A
+// flight controller's PT1 (50-500 Hz) lies far above a tumble's band. Measured on the grid of
+// test_filtered_noise_floor.cpp (tuning and withheld seeds): worst x1.74 and x1.53 from 2 bins, x1.79 and
+// x1.64 from 1 bin (a flight whose knee hides under the motion's band runs further down), x1.80 and x1.53
 // with no bound below the edge.
 constexpr double kLowestCutoffBins = 2.0;
-double fitted_cutoff(const NoiseSpectrum& s, std::size_t edge) {
+// Bins fitted hold at least this many times the rounding's density (rounding_density,
+// below): nearer it, a bin's median over a few segments less the rounding scatters about
+// zero, and the bins that come out above it, kept, bend the roll-off flat.
+constexpr double kAboveRounding = 10.0;
+double shape_misfit(const NoiseSpectrum& s, std::size_t first, std::size_t edge,
+                    const std::vector<std::size_t>& bins, const std::vector<double>& gain) {
+  double mean = 0.0, squares = 0.0;
+  for (std::size_t j : bins) {
+    const double r = std::log(s.density[j].sum() / gain[j - first]);
+    mean += r;
+    squares += r * r;
+  }
+  const double n = static_cast<double>(bins.size());
+  double misfit = squares - mean * mean / n;
+  const double log_level = mean / n;
+  for (std::size_t j = first; j < edge; ++j) {
+    const double excess = log_level + std::log(gain[j - first] / kBelowEdgeSlack / s.density[j].sum());
+    if (excess > 0.0) misfit += excess * excess;
+  }
+  return misfit;
+}
+LowPassShape fitted_low_pass(const NoiseSpectrum& s, std::size_t edge, double rounding) {
   std::vector<std::size_t> bins;
   double highest = 0.0;
   const std::size_t last = s.density.size() - 1, first = std::min(kFirstBoundingBin, edge);
   for (std::size_t j = edge; j < last; ++j) highest = std::max(highest, s.density[j].sum());
   for (std::size_t j = edge; j < last; ++j) {
-    if (s.density[j].sum() >= kFitDepth * highest && s.density[j].sum() > 0.0) bins.push_back(j);
+    if (s.density[j].sum() >= kFitDepth * highest && s.density[j].sum() > 3.0 * kAboveRounding * rounding)
+      bins.push_back(j);
   }
-  double best_cutoff = 0.0, best_misfit = -1.0;
+  LowPassShape best(LowPassShape::kButterworth, 0.0, s.sample_hz);
+  double best_misfit = -1.0;
   const double low = kLowestCutoffBins * s.bin_hz, high = 0.5 * s.sample_hz;
-  std::vector<double> tangents = response_frequencies(s, first, last), fine(tangents.size());
-  for (double& f : tangents) f = frequency_tangent(f, s.sample_hz);
-  for (int i = 0; i <= 64; ++i) {
-    const double cutoff = i == 64 ? 0.0 : low * std::pow(high / low, i / 63.0);
-    const double at_cutoff = cutoff_tangent(cutoff, s.sample_hz);
-    for (std::size_t k = 0; k < fine.size(); ++k)
-      fine[k] = cutoff <= 0.0 ? 1.0 : gain_of_tangents(tangents[k], at_cutoff);
-    const std::vector<double> gain = densities_seen(s, fine);
-    double mean = 0.0, squares = 0.0;
-    for (std::size_t j : bins) {
-      const double r = std::log(s.density[j].sum() / gain[j - first]);
-      mean += r;
-      squares += r * r;
-    }
-    const double n = static_cast<double>(bins.size());
-    double misfit = squares - mean * mean / n;
-    const double log_level = mean / n;
-    for (std::size_t j = first; j < edge; ++j) {
-      const double excess = log_level + std::log(gain[j - first] / kBelowEdgeSlack / s.density[j].sum());
-      if (excess > 0.0) misfit += excess * excess;
-    }
-    if (best_misfit < 0.0 || misfit < best_misfit) {
-      best_misfit = misfit;
-      best_cutoff = cutoff;
+  const std::vector<double> frequencies = response_frequencies(s, first, last);
+  std::vector<double> abscissae(frequencies.size()), fine(frequencies.size());
+  for (int order : {LowPassShape::kButterworth, LowPassShape::kFirstOrder}) {
+    for (std::size_t k = 0; k < frequencies.size(); ++k)
+      abscissae[k] = LowPassShape::abscissa(order, frequencies[k], s.sample_hz);
+    for (int i = 0; i <= 64; ++i) {
+      if (i == 64 && order != LowPassShape::kButterworth) break;
+      const double from = order == LowPassShape::kFirstOrder ? std::max(low, edge * s.bin_hz) : low;
+      const LowPassShape shape(order, i == 64 ? 0.0 : from * std::pow(high / from, i / 63.0), s.sample_hz);
+      for (std::size_t k = 0; k < fine.size(); ++k) fine[k] = shape.gain_at(abscissae[k]);
+      const double misfit = shape_misfit(s, first, edge, bins, densities_seen(s, fine));
+      if (best_misfit < 0.0 || misfit < best_misfit) {
+        best_misfit = misfit;
+        best = shape;
+      }
     }
   }
-  return best_cutoff;
+  return best;
+}
+
+// Readings rounded to a step q carry a white noise of variance q^2 / 12 on each axis
+// besides the filtered one, flat to the Nyquist rate: one-sided density 2 (q^2 / 12) / fs.
+// Behind a low-pass the filtered noise falls below it well before the Nyquist rate (a
+// flight controller's 1/16.4 deg/s behind a 100 Hz Butterworth at 1 kHz: past about
+// 400 Hz), where a shape fitted to the bins as they are would read the rounding's plateau
+// as a first-order roll-off, 40 times the correlation there is. It is taken off each bin,
+// and bins that hold less than twice it (three axes summed) are not fitted.
+double rounding_density(double resolution, double sample_hz) {
+  return 2.0 * resolution * resolution / 12.0 / sample_hz;
+}
+NoiseSpectrum without_rounding(NoiseSpectrum s, double rounding) {
+  for (Eigen::Vector3d& d : s.density) d = (d.array() - rounding).max(0.0).matrix();
+  return s;
 }
 
 // The noise's variance per axis: its power above the motion's band, and below it the
-// fitted low-pass's shape at the level the bins above the band give it; and its
-// correlation, that level (the density at low frequencies) over a white noise's of the
-// same variance.
-std::optional<SpectralFloor> floor_from_spectrum(const Flight& flight, const std::vector<char>& gap_after) {
+// fitted low-pass's shape at the level the bins above the band give it, and the
+// rounding's; and its correlation, the density at low frequencies over a white noise's of
+// the same variance.
+std::optional<SpectralFloor> floor_from_spectrum(const Flight& flight, const std::vector<char>& gap_after,
+                                                 double resolution) {
   double rate_hz = 0.0;
   const std::vector<Eigen::Vector3d> run = longest_clean_run(flight, gap_after, rate_hz);
   const NoiseSpectrum all = welch_spectrum(run, rate_hz);
   const std::size_t edge = all.density.empty() ? 0 : end_of_motion_band(all);
   if (edge == 0 || edge + kPlateauBins > all.density.size()) return std::nullopt;
   // An impulse's step shows most over the octave just above the motion's band.
-  const NoiseSpectrum s = without_outlying_segments(all, edge, std::min(2 * edge, all.density.size()));
-  const double cutoff = fitted_cutoff(s, edge);
+  const double rounding = rounding_density(resolution, rate_hz);
+  const NoiseSpectrum s = without_rounding(
+      without_outlying_segments(all, edge, std::min(2 * edge, all.density.size())), rounding);
+  const LowPassShape filter = fitted_low_pass(s, edge, rounding);
   // The level: the bins' power over the shape's, summed over the band above the motion
   // to kFitDepth (each bin weighed by the shape, so the flat part counts most).
   Eigen::Vector3d power = Eigen::Vector3d::Zero(), variance = Eigen::Vector3d::Zero();
   double shape = 0.0, below = 0.0;
-  const std::vector<double> seen = gain_in_bins(s, edge, s.density.size() - 1, cutoff);
+  const std::vector<double> seen = gain_in_bins(s, edge, s.density.size() - 1, filter);
   for (std::size_t j = edge; j + 1 < s.density.size(); ++j) {
     if (seen[j - edge] < kFitDepth) break;
     power += s.density[j];
@@ -244,13 +265,14 @@ std::optional<SpectralFloor> floor_from_spectrum(const Flight& flight, const std
   // motion's harmonics too, which outweigh a quiet gyro's noise behind a 20 Hz low-pass).
   for (std::size_t j = 0; j < s.density.size(); ++j) {
     const double width = (j == 0 || j + 1 == s.density.size()) ? 0.5 : 1.0;
-    below += width * low_pass_gain(j * s.bin_hz, cutoff, s.sample_hz) * s.bin_hz;
+    below += width * filter.gain(j * s.bin_hz) * s.bin_hz;
   }
-  variance = level * below;
+  variance = (level * below).array() + rounding * 0.5 * s.sample_hz;
   SpectralFloor out;
   out.sigma = variance.cwiseSqrt();
-  out.correlation = std::max(1.0, level.sum() * 0.5 * s.sample_hz / variance.sum());
-  out.cutoff_hz = cutoff;
+  out.correlation = std::max(1.0, (level.sum() + 3.0 * rounding) * 0.5 * s.sample_hz / variance.sum());
+  out.cutoff_hz = filter.cutoff_hz();
+  out.order = filter.cutoff_hz() > 0.0 ? filter.order() : 0;
   return out;
 }
 
@@ -294,13 +316,15 @@ NoiseFloor estimate_noise_floor(const Flight& flight) {
     }
   }
   if (flight.gyro_input && !flight.rates_from_differences) {
-    const std::optional<SpectralFloor> spectral = floor_from_spectrum(flight, gap_after);
+    const std::optional<SpectralFloor> spectral =
+        floor_from_spectrum(flight, gap_after, reading_resolution(flight));
     if (spectral && spectral->sigma.norm() > kUnderstated * best.sigma.norm()) {
       best.sigma = spectral->sigma.cwiseMax(1e-6);
       best.correlation = spectral->correlation;
       best.reliable = true;
       best.method = "spectrum";
       best.low_pass_hz = spectral->cutoff_hz;
+      best.low_pass_order = spectral->order;
     }
   }
   hold_at_resolution(best, flight);

@@ -1,6 +1,7 @@
 #include "diagnose/6_report/report_json.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/6_report/effect_words.hpp"
@@ -236,6 +237,12 @@ json flight_report(const FlightDiagnosis& d) {
                         {"method", d.noise.method},
                         {"resolution_rad_s", d.noise.resolution},
                         {"reliable", d.noise.reliable}};
+  // Only where the spectrum gave the floor (the other methods take the noise as white).
+  if (std::string(d.noise.method) == "spectrum") {
+    out["noise_floor"]["readings_per_independent_sample"] = d.noise.correlation;
+    out["noise_floor"]["low_pass_hz"] = d.noise.low_pass_hz;
+    out["noise_floor"]["low_pass_order"] = d.noise.low_pass_order;
+  }
   out["unusable_samples"] = d.unusable_samples;
   if (!d.comment.empty()) out["comment"] = d.comment;
   if (d.flight && !d.flight->contacts.empty()) out["contact"] = contact_json(d.flight->contacts);

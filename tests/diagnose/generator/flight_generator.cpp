@@ -8,7 +8,7 @@
 
 #include "aloft/dynamics/inertia_tensor.hpp"
 #include "body_catalogue.hpp"
-#include "low_pass.hpp"
+#include "gyro_filter.hpp"
 #include "perturbed_rigid_body.hpp"
 #include "seeded_random.hpp"
 
@@ -61,6 +61,8 @@ struct Throw {
   Eigen::Vector3d com0_m;
   Eigen::Vector3d velocity0_m_s;
   std::vector<Eigen::Vector3d> markers_m;  // body axes
+  // A rotor spun up after release (FlightSpec::rotor_spin_up): this throw's profile.
+  double spin_up_start_s = 0.0, spin_up_time_constant_s = 0.0, spin_up_speed = 1.0;
 };
 
 Throw draw_throw(const BodyModel& body, const FlightSpec& spec, SeededRandom& rng) {
@@ -93,6 +95,13 @@ Throw draw_throw(const BodyModel& body, const FlightSpec& spec, SeededRandom& rn
     bool spread = true;
     for (const auto& other : t.markers_m) spread = spread && (m - other).norm() >= min_gap;
     if (spread) t.markers_m.push_back(m);
+  }
+  // Drawn last, and only for a spun-up rotor, so that every other throw keeps its draws.
+  if (spec.rotor_spin_up) {
+    t.spin_up_start_s = rng.uniform(spec.spin_up_start_low_s, spec.spin_up_start_high_s);
+    t.spin_up_time_constant_s =
+        rng.uniform(spec.spin_up_time_constant_low_s, spec.spin_up_time_constant_high_s);
+    t.spin_up_speed = 1.0 + rng.uniform(-spec.spin_up_speed_spread, spec.spin_up_speed_spread);
   }
   return t;
 }
@@ -259,10 +268,20 @@ InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, con
                 {"duration_s", e.physics.impulse_duration_s}};
   } else if (effect == "internal_momentum") {
     const double typical_l = p.moments.mean() * 10.0;
-    e.physics.internal_momentum_N_m_s =
+    const Eigen::Vector3d h =
         rng.uniform(spec.rotor_fraction_low, spec.rotor_fraction_high) * typical_l * rng.unit_vector();
-    e.params = {{"h_N_m_s", to_json(e.physics.internal_momentum_N_m_s)},
-                {"h_fraction_of_L", e.physics.internal_momentum_N_m_s.norm() / l0.norm()}};
+    if (spec.rotor_spin_up) {
+      e.physics.spin_up = {thrown.spin_up_speed * h, thrown.spin_up_start_s, thrown.spin_up_time_constant_s};
+      const Eigen::Vector3d at_end = e.physics.spin_up.momentum(thrown.duration_s);
+      e.params = {{"h_N_m_s", to_json(at_end)},
+                  {"final_h_N_m_s", to_json(e.physics.spin_up.final_momentum_N_m_s)},
+                  {"start_s", thrown.spin_up_start_s},
+                  {"time_constant_s", thrown.spin_up_time_constant_s},
+                  {"h_fraction_of_L", at_end.norm() / l0.norm()}};
+    } else {
+      e.physics.internal_momentum_N_m_s = h;
+      e.params = {{"h_N_m_s", to_json(h)}, {"h_fraction_of_L", h.norm() / l0.norm()}};
+    }
   } else {
     throw std::invalid_argument("unknown effect '" + effect + "'");
   }
@@ -293,7 +312,7 @@ std::vector<std::string> equivalent_class(const std::string& effect, DataKind ki
 // act later in the flight, or change so little over the pre-roll that the filter does not
 // see it).
 template <typename Reading>
-void settle_on_motion_before(LowPass& filter, const FlightPhysics& physics, const Eigen::Vector3d& omega0,
+void settle_on_motion_before(GyroFilter& filter, const FlightPhysics& physics, const Eigen::Vector3d& omega0,
                              double cutoff_hz, double rate_hz, const Reading& reading) {
   FlightPhysics backwards;
   backwards.inertia_kg_m2 = physics.inertia_kg_m2;
@@ -314,7 +333,7 @@ void settle_on_motion_before(LowPass& filter, const FlightPhysics& physics, cons
 // transverse part stays below a quarter of |h|.
 bool rotor_along_symmetry_axis(const Principal& p, const FlightPhysics& physics) {
   const int symmetry = symmetry_axis_index(p.moments);
-  const Eigen::Vector3d& h = physics.internal_momentum_N_m_s;
+  const Eigen::Vector3d h = physics.internal_momentum_N_m_s + physics.spin_up.final_momentum_N_m_s;
   if (symmetry < 0 || h.norm() == 0.0) return false;
   return std::abs(h.normalized().dot(p.axes.col(symmetry))) >= std::cos(15.0 * kDegree);
 }
@@ -349,6 +368,7 @@ InjectedEffect combine(InjectedEffect first, const InjectedEffect& second, const
   }
   first.physics.aero_k_N_m_s2 += second.physics.aero_k_N_m_s2;
   first.physics.internal_momentum_N_m_s += second.physics.internal_momentum_N_m_s;
+  if (second.physics.spin_up.present()) first.physics.spin_up = second.physics.spin_up;
   if (second.physics.rotor_inertia_kg_m2 > 0.0) {
     first.physics.rotor_inertia_kg_m2 = second.physics.rotor_inertia_kg_m2;
     first.physics.rotor_damping_N_m_s = second.physics.rotor_damping_N_m_s;
@@ -475,7 +495,7 @@ std::vector<TrueSample> true_samples_of(const FlightSpec& spec, const Throw& thr
     s.orientation = state.orientation;
     s.omega_body = state.omega_body;
     s.kinetic_energy_J = dynamics.kinetic_energy(state);
-    s.angular_momentum_world = state.orientation * dynamics.angular_momentum(state);
+    s.angular_momentum_world = state.orientation * dynamics.angular_momentum(state, s.t_s);
     if (spec.data == DataKind::markers) {
       s.com_position_m = thrown.com0_m + thrown.velocity0_m_s * s.t_s + 0.5 * kGravity * s.t_s * s.t_s;
     }
@@ -495,8 +515,25 @@ void add_dissipation_measured(const FlightSpec& spec, const std::vector<TrueSamp
   }
 }
 
-// The gyro's readings in sensor axes, low-passed if the spec says so, with their noise;
-// returns the spread of the noise as it is in the readings.
+// Readings per independent sample of white noise behind the spec's filter: (sum h)^2 /
+// sum h^2 of its impulse response, summed until the response has died away (40 time
+// constants of the cutoff).
+double filter_correlation(const FlightSpec& spec) {
+  if (!(spec.gyro_cutoff_hz > 0.0)) return 1.0;
+  GyroFilter filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, 1.0 / spec.imu_rate_hz);
+  const int steps = static_cast<int>(std::ceil(40.0 * spec.imu_rate_hz / spec.gyro_cutoff_hz)) + 10;
+  double sum = 0.0, squares = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    const double h = filter(Eigen::Vector3d(k == 0 ? 1.0 : 0.0, 0.0, 0.0)).x();
+    sum += h;
+    squares += h * h;
+  }
+  return sum * sum / squares;
+}
+
+// The gyro's readings in sensor axes, low-passed if the spec says so, with their noise,
+// quantised if it says so; returns the spread of the noise as it is in the readings
+// (quantisation included).
 Eigen::Vector3d record_gyro(const FlightSpec& spec, const Throw& thrown, const InjectedEffect& effect,
                             const TrueFlight& flight, SeededRandom& noise_rng, host::ImuLog& log) {
   const double step_s = 1.0 / spec.imu_rate_hz;
@@ -505,12 +542,14 @@ Eigen::Vector3d record_gyro(const FlightSpec& spec, const Throw& thrown, const I
   // The filter is linear: the readings' noise is the filtered noise sequence, kept
   // apart to measure its spread; filtering reading and noise separately adds up to
   // filtering their sum.
-  LowPass signal_filter(spec.gyro_cutoff_hz, step_s), noise_filter(spec.gyro_cutoff_hz, step_s);
+  GyroFilter signal_filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, step_s),
+      noise_filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, step_s);
   if (spec.gyro_cutoff_hz > 0.0) {
     settle_on_motion_before(
         signal_filter, effect.physics, thrown.omega0_body, spec.gyro_cutoff_hz, spec.imu_rate_hz,
         [&](const Eigen::Vector3d& w) { return gain.cwiseProduct(body_to_sensor * w) + effect.bias; });
   }
+  const double q = spec.gyro_quantum_rad_s;
   Eigen::Vector3d noise_squares = Eigen::Vector3d::Zero();
   for (const FlightState& state : flight.states) {
     const Eigen::Vector3d w_sensor = body_to_sensor * state.omega_body;
@@ -520,8 +559,13 @@ Eigen::Vector3d record_gyro(const FlightSpec& spec, const Throw& thrown, const I
       reading = signal_filter(reading);
       noise = noise_filter(noise);
     }
+    Eigen::Vector3d logged = reading + noise;
+    if (q > 0.0) {
+      logged = (logged / q).array().round().matrix() * q;
+      noise = logged - reading;
+    }
     noise_squares += noise.cwiseAbs2();
-    log.gyro_rad_s.push_back(reading + noise);
+    log.gyro_rad_s.push_back(logged);
   }
   return (noise_squares / static_cast<double>(flight.states.size())).cwiseSqrt();
 }
@@ -667,6 +711,7 @@ GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed) {
     f.imu.format = "imu_csv";
     f.imu.time_s = flight.recorded_s;
     f.gyro_noise_in_readings_rad_s = record_gyro(spec, thrown, effect, flight, noise_rng, f.imu);
+    f.gyro_noise_correlation = filter_correlation(spec);
     if (spec.accelerometer) record_accelerometer(spec, body, effect, flight, dynamics, noise_rng, f.imu);
   } else {
     record_markers(spec, thrown, flight, f.true_samples, noise_rng, f.markers);

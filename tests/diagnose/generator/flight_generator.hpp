@@ -91,6 +91,12 @@ struct FlightSpec {
   // its readings, signal and noise alike, settled on the first one (issue 31: fast,
   // filtered gyros, whose noise is correlated). 0: none (every earlier flight).
   double gyro_cutoff_hz = 0.0;
+  // The low-pass's order: 2, the Butterworth above; 1, a flight controller's first-order
+  // PT1 (first_order_low_pass.hpp), whose noise stays correlated over fs / (pi fc) readings.
+  int gyro_filter_order = 2;
+  // > 0: each reading rounded to a multiple of this after the noise (a flight controller
+  // logs 1/16.4 deg/s, the ICM-42688's and MPU-6000's step at +-2000 deg/s). 0: none.
+  double gyro_quantum_rad_s = 0.0;
   bool accelerometer = false;
   double accel_noise_m_s2 = 0.05;
 
@@ -102,6 +108,15 @@ struct FlightSpec {
   // internal_momentum: |h| drawn in this range of a typical |L| (10 rad/s about the mean
   // moment), in any direction.
   double rotor_fraction_low = 0.005, rotor_fraction_high = 0.10;
+  // internal_momentum spun up by a motor after release (rotor_spin_up.hpp) instead of
+  // spinning steadily: its axis and |h| (the range above) drawn once from the seed, as for a
+  // steady rotor; each throw starts the motor spin_up_start_s after release, with time
+  // constant spin_up_time_constant_s and a final speed spin_up_speed_spread either side of
+  // the drawn one (each drawn from the throw's seed: a slightly different profile each throw).
+  bool rotor_spin_up = false;
+  double spin_up_start_low_s = 0.02, spin_up_start_high_s = 0.08;
+  double spin_up_time_constant_low_s = 0.04, spin_up_time_constant_high_s = 0.08;
+  double spin_up_speed_spread = 0.15;
 
   // A compound flight: a second effect at the same time (empty or "none": one effect).
   // Its magnitude is drawn as for a flight of its own; truth.params then holds each
@@ -145,7 +160,9 @@ struct FlightTruth {
 //   impulse: time_s (pulse start), angular_impulse_N_m_s (body axes), duration_s.
 //   aero_torque: k_N_m_s2, L_drop_fraction (|L| lost over the flight, from the truth).
 //   gyro_bias: bias_rad_s; gyro_scale: scale_error; clock_drift: rate_error.
-//   internal_momentum: h_N_m_s (body axes), h_fraction_of_L (|h| over the throw's |L0|).
+//   internal_momentum: h_N_m_s (body axes), h_fraction_of_L (|h| over the throw's |L0|);
+//     spun up (FlightSpec::rotor_spin_up): h_N_m_s is h at the flight's end, and
+//     final_h_N_m_s, start_s and time_constant_s describe the profile.
 
 // The noise-free truth at each data sample (true time, not the sensor's clock).
 struct TrueSample {
@@ -172,6 +189,10 @@ struct GeneratedFlight {
   // standard deviation of the added noise sequence itself, the truth a noise floor is
   // measured against.
   Eigen::Vector3d gyro_noise_in_readings_rad_s = Eigen::Vector3d::Zero();
+  // IMU: readings per independent sample of that noise, from the filter itself:
+  // (sum h)^2 / sum h^2 of its impulse response h (1 without a low-pass), the factor by
+  // which a fit that counts readings overstates its evidence.
+  double gyro_noise_correlation = 1.0;
 };
 
 // Deterministic in (spec, seed) on every platform. The draws come from three

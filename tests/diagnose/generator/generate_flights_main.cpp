@@ -64,7 +64,7 @@ void write_phone_like(const std::string& out, nlohmann::json& all) {
     const PhoneLikeFlight p = generate_phone_like_flight(c.spec, c.seed);
     write_logged(p.flight, p.segments_csv, out, c.name, c.seed, all);
   }
-  for (const SessionCase& c : phone_like_session_cases()) {
+  for (const PhoneSessionCase& c : phone_like_session_cases()) {
     const PhoneLikeSession s = generate_phone_like_session(c.flight.spec, c.flights, c.flight.seed);
     write_logged(s.first, s.segments_csv, out, c.flight.name, c.flight.seed, all);
   }

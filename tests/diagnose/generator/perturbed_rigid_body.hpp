@@ -28,6 +28,8 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+#include "rotor_spin_up.hpp"
+
 namespace aloft::generator {
 
 struct FlightPhysics {
@@ -42,6 +44,9 @@ struct FlightPhysics {
   // A rotor spinning at a steady rate inside (a gyrostat): its angular momentum h, fixed
   // in body axes, adds -w × h to the torque and h to the body's angular momentum.
   Eigen::Vector3d internal_momentum_N_m_s = Eigen::Vector3d::Zero();
+  // A rotor a motor spins up from rest after release (rotor_spin_up.hpp): h(t) on top of
+  // the steady one, and its reaction torque -dh/dt.
+  RotorSpinUp spin_up;
 };
 
 struct FlightState {
@@ -58,8 +63,9 @@ class PerturbedRigidBody {
   std::vector<FlightState> sample(const FlightState& initial, const std::vector<double>& times_s,
                                   double max_step_s = 1e-4) const;
 
-  // Total angular momentum in body axes (shell plus rotor).
-  Eigen::Vector3d angular_momentum(const FlightState& s) const;
+  // Total angular momentum in body axes (shell plus rotor), at time t (a spinning-up
+  // rotor's h changes; without one t changes nothing).
+  Eigen::Vector3d angular_momentum(const FlightState& s, double t = 0.0) const;
   // Total kinetic energy (shell plus rotor).
   double kinetic_energy(const FlightState& s) const;
   // dw/dt of the shell at time t, for the accelerometer's tangential term.
@@ -71,8 +77,10 @@ class PerturbedRigidBody {
     Eigen::Vector3d w_dot;
     Eigen::Vector3d wr_dot;
   };
+  // `motor`: whether a spinning-up rotor's motor runs (its rate steps at the start, so
+  // a step beside it says on which side it lies); -1: by t.
   Derivative derivative(double t, const Eigen::Vector4d& q, const Eigen::Vector3d& w,
-                        const Eigen::Vector3d& wr) const;
+                        const Eigen::Vector3d& wr, int motor = -1) const;
   Eigen::Vector3d external_torque(double t, const Eigen::Vector3d& w) const;
   void rk4_step(double t, double h, FlightState& s) const;
   void advance(double t0, double t1, double max_step_s, FlightState& s) const;

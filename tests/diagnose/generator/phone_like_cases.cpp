@@ -26,14 +26,14 @@ std::vector<FlightCase> phone_like_flight_cases() {
   return cases;
 }
 
-std::vector<SessionCase> phone_like_session_cases() {
+std::vector<PhoneSessionCase> phone_like_session_cases() {
   const char* effects[] = {"none",       "inertia_moments",     "inertia_axes", "gyro_bias",
                            "gyro_scale", "sensor_misalignment", "clock_drift"};
   const auto& bodies = body_names();
-  std::vector<SessionCase> cases;
+  std::vector<PhoneSessionCase> cases;
   std::uint64_t seed = 20261125;
   for (std::size_t i = 0; i < 7; ++i) {
-    SessionCase c;
+    PhoneSessionCase c;
     c.flight.spec.effect = effects[i];
     c.flight.spec.body = bodies[i % bodies.size()];
     c.flight.name = std::string("session_") + effects[i];

@@ -18,10 +18,12 @@ namespace aloft::generator {
 
 std::vector<FlightCase> phone_like_flight_cases();
 
-struct SessionCase {
+// (Not rotor_cases.hpp's SessionCase: two classes of one name in one library broke
+// std::vector's instantiations, one definition taking the other's place at link time.)
+struct PhoneSessionCase {
   FlightCase flight;  // spec and seed of the session (generate_phone_like_session)
   int flights = 3;
 };
-std::vector<SessionCase> phone_like_session_cases();
+std::vector<PhoneSessionCase> phone_like_session_cases();
 
 }  // namespace aloft::generator
