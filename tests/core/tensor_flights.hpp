@@ -83,7 +83,8 @@ class TensorFlight {
     const double dt = dt_us_ * 1e-6;
     if (sample_ > 0) advance(dt);
     Eigen::Vector3d x = omega_;
-    if (spec_.noise_rad_s > 0) x += spec_.noise_rad_s * Eigen::Vector3d(normal_.next(), normal_.next(), normal_.next());
+    if (spec_.noise_rad_s > 0)
+      x += spec_.noise_rad_s * Eigen::Vector3d(normal_.next(), normal_.next(), normal_.next());
     if (sample_ == 0 || spec_.filter_tau_s <= 0) {
       filtered_ = x;
     } else {
@@ -138,7 +139,8 @@ class TensorFlight {
 
 // The flight through a TensorEstimator<S> whose nominal tensor is `nominal` (body axes).
 template <typename S>
-aloft::TensorEstimate<S> estimate_flight(const TensorFlightSpec& spec, const aloft::TensorEstimatorSettings<S>& settings,
+aloft::TensorEstimate<S> estimate_flight(const TensorFlightSpec& spec,
+                                         const aloft::TensorEstimatorSettings<S>& settings,
                                          const aloft::Rotor<S>& rotor, const Eigen::Matrix3d& nominal) {
   aloft::InertiaTensor<S> nominal_tensor;
   (void)aloft::InertiaTensor<S>::make_from_tensor(nominal.cast<S>(), nominal_tensor);
@@ -162,7 +164,8 @@ template <typename S>
 double worst_axis_angle(const aloft::TensorEstimate<S>& e, const Eigen::Quaterniond& truth) {
   const Eigen::Matrix3d a = e.axes.template cast<double>().toRotationMatrix(), b = truth.toRotationMatrix();
   double worst = 0;
-  for (int i = 0; i < 3; ++i) worst = std::fmax(worst, std::acos(std::fmin(1.0, std::fabs(a.col(i).dot(b.col(i))))));
+  for (int i = 0; i < 3; ++i)
+    worst = std::fmax(worst, std::acos(std::fmin(1.0, std::fabs(a.col(i).dot(b.col(i))))));
   return worst;
 }
 

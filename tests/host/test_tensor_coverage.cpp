@@ -91,14 +91,15 @@ Coverage coverage(unsigned first_seed, int count, bool rotor, std::uint32_t piec
       c.ratios[i] += std::abs(e.ratio(i) - truth) <= e.ratios_95[i];
       c.half_widths.push_back(e.ratios_95[i] / truth);
     }
-    for (int i = 0; i < 3 && rotor; ++i) c.moments[i] += std::abs(e.principal(i) - spec.moments(i)) <= e.principal_95(i);
+    for (int i = 0; i < 3 && rotor; ++i)
+      c.moments[i] += std::abs(e.principal(i) - spec.moments(i)) <= e.principal_95(i);
   }
   return c;
 }
 
 void report(const char* what, const Coverage& c, bool rotor) {
-  std::printf("%s: %d of %d flights determined; 95 %% intervals cover I1/I3 in %.1f %%, I2/I3 in %.1f %%", what,
-              c.determined, c.flights, c.percent(c.ratios[0]), c.percent(c.ratios[1]));
+  std::printf("%s: %d of %d flights determined; 95 %% intervals cover I1/I3 in %.1f %%, I2/I3 in %.1f %%",
+              what, c.determined, c.flights, c.percent(c.ratios[0]), c.percent(c.ratios[1]));
   if (rotor)
     std::printf(", I1 %.1f %%, I2 %.1f %%, I3 %.1f %%", c.percent(c.moments[0]), c.percent(c.moments[1]),
                 c.percent(c.moments[2]));

@@ -76,7 +76,8 @@ TEST_CASE("examples/throw_*: the flight's own tensor estimate, ratios within 1 %
   const aloft::test::ThrowSpec spec = aloft::test::example_throw_spec();
   const aloft::test::GeneratedThrow g = aloft::test::generate_throw(spec);
   aloft::InertiaTensor<float> body;
-  REQUIRE(aloft::InertiaTensor<float>::make_from_tensor(spec.tensor_kg_m2.cast<float>(), body) == aloft::Status::ok);
+  REQUIRE(aloft::InertiaTensor<float>::make_from_tensor(spec.tensor_kg_m2.cast<float>(), body) ==
+          aloft::Status::ok);
   const aloft::TensorEstimatorSettings<float> settings;
   const aloft::Rotor<float> no_rotor;
   aloft::TensorEstimator<float> estimator(settings, body, no_rotor);
@@ -84,7 +85,8 @@ TEST_CASE("examples/throw_*: the flight's own tensor estimate, ratios within 1 %
   double previous_t = -1;
   for (std::size_t i = 0; i < g.t_s.size(); ++i) {
     if (g.t_s[i] < g.release_s || g.t_s[i] >= g.landing_s) continue;
-    const auto dt_us = previous_t < 0 ? 0u : static_cast<std::uint32_t>(std::lround((g.t_s[i] - previous_t) * 1e6));
+    const auto dt_us =
+        previous_t < 0 ? 0u : static_cast<std::uint32_t>(std::lround((g.t_s[i] - previous_t) * 1e6));
     estimator.add(g.gyro_rad_s[i].cast<float>(), 0.0f, dt_us);
     previous_t = g.t_s[i];
   }

@@ -199,8 +199,9 @@ constexpr Scalar rounding_floor() {
 // sum of squares the first eigenvalue; false when the gap to the second leaves theta's
 // weakest direction more than max_relative_sd uncertain.
 template <typename Scalar>
-inline bool solve_scale_free(const Vec6<Scalar>& values, const Eigen::Matrix<Scalar, 6, 6>& vectors, Scalar rows,
-                             Scalar max_relative_sd, Vec6<Scalar>& theta, Vec6<Scalar>& weight, Scalar& dof) {
+inline bool solve_scale_free(const Vec6<Scalar>& values, const Eigen::Matrix<Scalar, 6, 6>& vectors,
+                             Scalar rows, Scalar max_relative_sd, Vec6<Scalar>& theta, Vec6<Scalar>& weight,
+                             Scalar& dof) {
   dof = rows - Scalar(5);
   theta = vectors.col(0);
   if (theta.template head<3>().sum() < Scalar(0)) theta = -theta;  // a positive trace
@@ -208,7 +209,8 @@ inline bool solve_scale_free(const Vec6<Scalar>& values, const Eigen::Matrix<Sca
   weight(0) = Scalar(0);  // theta's own direction: its scale, which nothing fixes
   for (int k = 1; k < 6; ++k) {
     const Scalar gap = values(k) - values(0);
-    weight(k) = gap > Scalar(0) ? variance * values(k) / (gap * gap) : std::numeric_limits<Scalar>::infinity();
+    weight(k) =
+        gap > Scalar(0) ? variance * values(k) / (gap * gap) : std::numeric_limits<Scalar>::infinity();
   }
   const Scalar floor = rounding_floor<Scalar>();
   return values(1) > floor * floor * values(5) && std::sqrt(weight(1)) <= max_relative_sd;

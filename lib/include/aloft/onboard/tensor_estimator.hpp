@@ -245,11 +245,11 @@ class TensorEstimator {
   // The open piece: its first sample, and the integrals so far.
   Vec3<Scalar> omega_a_ = Vec3<Scalar>::Zero();
   Scalar speed_a_ = Scalar(0);
-  Scalar products_[6] = {};  // ∫ w_i w_j dt: xx yy zz xy xz yz
+  Scalar products_[6] = {};                          // ∫ w_i w_j dt: xx yy zz xy xz yz
   Vec3<Scalar> speed_omega_ = Vec3<Scalar>::Zero();  // ∫ s w dt
   Vec3<Scalar> omega_prev_ = Vec3<Scalar>::Zero();   // the sample before
   Scalar speed_f_ = Scalar(0);                       // the rotor's speed, filtered
-  std::uint32_t elapsed_us_ = 0;  // in the open piece, or since the last one ended
+  std::uint32_t elapsed_us_ = 0;                     // in the open piece, or since the last one ended
   Phase phase_ = Phase::idle;
 };
 
