@@ -74,6 +74,45 @@ void make_measured(const Make& make, InertiaTensor<double>& out, const std::stri
   check(s, source);
 }
 
+// Every key the rotor's object may hold, both required: a rotor guessed is worse than an
+// error, since its momentum sets the scale of every moment estimated with it.
+BodyRotor parse_rotor(const json& j, const std::string& source) {
+  if (!j.is_object()) fail(source, "\"rotor\" must be an object {\"inertia_kg_m2\": J, \"axis\": [x, y, z]}");
+  for (const auto& item : j.items()) {
+    if (item.key() != "inertia_kg_m2" && item.key() != "axis") {
+      fail(source, "unknown key \"rotor." + item.key() + "\" (a rotor has \"inertia_kg_m2\" and \"axis\")");
+    }
+  }
+  if (!j.contains("inertia_kg_m2"))
+    fail(source, "missing \"rotor.inertia_kg_m2\" (kg m^2, about its spin axis)");
+  if (!j.contains("axis")) fail(source, "missing \"rotor.axis\" (its spin axis in body axes, [x, y, z])");
+  BodyRotor rotor;
+  rotor.inertia_kg_m2 = number(j["inertia_kg_m2"], "rotor.inertia_kg_m2", source);
+  if (!(rotor.inertia_kg_m2 > 0.0)) fail(source, "\"rotor.inertia_kg_m2\" must be positive");
+  const Eigen::Vector3d axis = vector3(j["axis"], "rotor.axis", source);
+  // Any length is a direction (stableNorm: no overflow or underflow on the way); only
+  // the zero vector has none.
+  const double length = axis.stableNorm();
+  if (!(length > 0.0) || !std::isfinite(length)) fail(source, "\"rotor.axis\" must be a direction, not zero");
+  rotor.axis = axis / length;
+  return rotor;
+}
+
+// The body's tensor is the whole assembly's, rotor included, so its moment about any
+// axis through the centre of mass is at least the rotor's about its own parallel axis:
+// a rotor at or above it is in another unit (g cm^2?) or belongs to another body.
+void check_rotor_fits(const BodyRotor& rotor, const InertiaTensor<double>& inertia,
+                      const std::string& source) {
+  const double body_moment = rotor.axis.dot(inertia.tensor() * rotor.axis);
+  if (rotor.inertia_kg_m2 < body_moment) return;
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "\"rotor.inertia_kg_m2\" (%.6g) is not below the whole body's moment about the rotor's axis "
+                "(%.6g kg m^2), which includes the rotor",
+                rotor.inertia_kg_m2, body_moment);
+  fail(source, text);
+}
+
 InertiaTensor<double> parse_inertia(const json& body, double mass, bool has_mass, const std::string& source) {
   if (!body.contains("inertia") || !body["inertia"].is_object()) {
     fail(source, "missing \"inertia\" object");
@@ -153,7 +192,7 @@ void warn_unknown_keys(const json& object, std::initializer_list<const char*> kn
 }
 
 void warn_unknown_body_keys(const json& j, const std::string& source) {
-  warn_unknown_keys(j, {"name", "mass", "inertia", "markers", "imu"}, "", source);
+  warn_unknown_keys(j, {"name", "mass", "inertia", "markers", "imu", "rotor"}, "", source);
   if (j.contains("inertia")) {
     const json& inertia = j["inertia"];
     warn_unknown_keys(inertia, {"tensor", "principal", "axes", "shape"}, "inertia.", source);
@@ -194,6 +233,10 @@ Body parse_body(const json& j, const std::string& source) {
     if (!imu.is_object()) fail(source, "\"imu\" must be an object");
     if (imu.contains("rotation")) body.imu_to_body = quaternion(imu["rotation"], "imu.rotation", source);
     if (imu.contains("position")) body.imu_position_m = vector3(imu["position"], "imu.position", source);
+  }
+  if (j.contains("rotor")) {
+    body.rotor = parse_rotor(j["rotor"], source);
+    check_rotor_fits(*body.rotor, body.inertia, source);
   }
   warn_unknown_body_keys(j, source);
   if (const auto problem = inertia_scale_problem(body)) warn(source + ": " + *problem);

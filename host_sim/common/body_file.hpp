@@ -1,6 +1,7 @@
 // The body file of SPEC §2: name, mass, inertia (tensor | principal [+ axes] | shape),
 // optional markers in body axes, optional IMU rotation (sensor -> body) and optional IMU
-// position (the accelerometer's place in body axes from the centre of mass, metres).
+// position (the accelerometer's place in body axes from the centre of mass, metres) and
+// optional rotor (a wheel, fan or motor inside the body whose speed is logged).
 #pragma once
 
 #include <map>
@@ -17,6 +18,13 @@ namespace aloft::host {
 // warning, and tensors drawn around it (the study's Monte Carlo) are held to the same.
 constexpr double kMeasuredTriangleSlack = 0.05;
 
+// SPEC §2 `rotor`: the rotor's moment about its spin axis and that axis in body axes
+// (unit length). Its angular momentum relative to the body is inertia * speed * axis.
+struct BodyRotor {
+  double inertia_kg_m2 = 0.0;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+};
+
 struct Body {
   std::string name;
   double mass_kg = 0.0;
@@ -25,6 +33,8 @@ struct Body {
   Eigen::Quaterniond imu_to_body = Eigen::Quaterniond::Identity();
   // `imu.position`; without it the onboard pipeline estimates the lever arm from the data.
   std::optional<Eigen::Vector3d> imu_position_m;
+  // `rotor`; a body with one needs the rotor's speed in every recording (`rotor_rad_s`).
+  std::optional<BodyRotor> rotor;
 };
 
 // Reads and validates a body file; throws aloft::host::Error with one line naming the

@@ -39,6 +39,10 @@ struct ImuLog {
   std::vector<double> time_s;
   std::vector<Eigen::Vector3d> gyro_rad_s;
   std::vector<Eigen::Vector3d> accel_m_s2;  // empty when the file has none
+  // The body's rotor speed relative to the body (plain layout's `rotor_rad_s`, SPEC §3),
+  // rad/s whatever --gyro-units says (the column's name gives its unit); empty when the
+  // file has none.
+  std::vector<double> rotor_rad_s;
   // Where each sample stands in the file (1-based lines), for messages about one sample.
   std::size_t header_line = 0;
   std::vector<std::size_t> line_numbers;

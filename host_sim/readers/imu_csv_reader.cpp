@@ -19,6 +19,7 @@ struct ImuColumns {
   int time = -1;
   int gyro[3] = {-1, -1, -1};
   int accel[3] = {-1, -1, -1};
+  int rotor = -1;  // plain layout only: rotor_rad_s
 };
 
 int find_column(const std::vector<std::string>& header, const std::string& name) {
@@ -38,6 +39,7 @@ std::optional<ImuColumns> recognise_plain(const std::vector<std::string>& header
     c.gyro[k] = find_column(header, gyro[k]);
     c.accel[k] = find_column(header, accel[k]);
   }
+  c.rotor = find_column(header, "rotor_rad_s");
   if (c.time < 0 || c.gyro[0] < 0 || c.gyro[1] < 0 || c.gyro[2] < 0) return std::nullopt;
   return c;
 }
@@ -64,7 +66,7 @@ ImuColumns recognise_header(const std::vector<std::string>& header, const std::s
   if (!columns) columns = recognise_phyphox(header);
   if (!columns) {
     throw Error(at_line(path, header_line,
-                        "header is neither a plain IMU log (t,gx,gy,gz[,ax,ay,az]) nor a "
+                        "header is neither a plain IMU log (t,gx,gy,gz[,ax,ay,az][,rotor_rad_s]) nor a "
                         "phyphox export (\"Time (s)\",\"Gyroscope x (rad/s)\",...), delimited by "
                         "commas, semicolons or tabs"));
   }
@@ -120,6 +122,7 @@ static ImuLog read_imu_csv_unguarded(const std::string& path) {
       log.accel_m_s2.emplace_back(value(columns->accel[0]), value(columns->accel[1]),
                                   value(columns->accel[2]));
     }
+    if (columns->rotor >= 0) log.rotor_rad_s.push_back(value(columns->rotor));
     line_numbers.push_back(line);
   }
   if (log.time_s.empty()) throw Error(path + ": no samples after the header");

@@ -1,6 +1,6 @@
 // IMU logs of SPEC §3: CSV with a header row, in one of two layouts recognised by the
 // header (column order free, names case-insensitive):
-//   plain:   t, gx, gy, gz [, ax, ay, az]              (s, rad/s, m/s²)
+//   plain:   t, gx, gy, gz [, ax, ay, az] [, rotor_rad_s]   (s, rad/s, m/s², rad/s)
 //   phyphox: "Time (s)", "Gyroscope x (rad/s)", "Gyroscope y (rad/s)",
 //            "Gyroscope z (rad/s)" [, "Absolute (rad/s)"]   (the magnitude is ignored)
 // Cells are delimited by commas, or, where the header holds none, by semicolons or tabs

@@ -29,6 +29,9 @@ ImuLog imu_window(const ImuLog& log, double start_s, double end_s, const std::st
   if (!log.accel_m_s2.empty()) {
     window.accel_m_s2.assign(log.accel_m_s2.begin() + begin_index, log.accel_m_s2.begin() + end_index);
   }
+  if (!log.rotor_rad_s.empty()) {
+    window.rotor_rad_s.assign(log.rotor_rad_s.begin() + begin_index, log.rotor_rad_s.begin() + end_index);
+  }
   return window;
 }
 

@@ -118,6 +118,16 @@ Json unit_notes(const ImuLog& log) {
   return notes;
 }
 
+// The quantities the log holds, by the plain layout's column names (SPEC §3).
+Json imu_columns_read(const ImuLog& log) {
+  Json columns = {"t", "gx", "gy", "gz"};
+  if (!log.accel_m_s2.empty()) {
+    for (const char* name : {"ax", "ay", "az"}) columns.push_back(name);
+  }
+  if (!log.rotor_rad_s.empty()) columns.push_back("rotor_rad_s");
+  return columns;
+}
+
 Json summarise_imu(const std::string& path, const ImuUnits& units) {
   ImuLog log = read_imu_csv(path);
   convert_to_si(log, units);
@@ -128,12 +138,25 @@ Json summarise_imu(const std::string& path, const ImuUnits& units) {
   out["duration_s"] = duration_of(log.time_s);
   out["units"] = "rad/s";
   out["start_s"] = log.time_s.front();
+  out["columns"] = imu_columns_read(log);
   out["has_accelerometer"] = !log.accel_m_s2.empty();
+  out["has_rotor_speed"] = !log.rotor_rad_s.empty();
   double peak = 0.0;
   for (const auto& w : log.gyro_rad_s) peak = std::max(peak, w.norm());
   out["max_gyro_rad_s"] = peak;
   if (!log.accel_m_s2.empty()) out["accel_at_rest_m_s2"] = accel_at_rest(log);
-  out["notes"] = unit_notes(log);
+  if (!log.rotor_rad_s.empty()) {
+    double rotor_peak = 0.0;
+    for (const double w : log.rotor_rad_s) rotor_peak = std::max(rotor_peak, std::abs(w));
+    out["max_abs_rotor_rad_s"] = rotor_peak;
+  }
+  Json notes = unit_notes(log);
+  if (!log.rotor_rad_s.empty()) {
+    notes.push_back(
+        "rotor_rad_s is the speed of the body file's rotor (rad/s, whatever --gyro-units says); "
+        "aloft replay refuses this log with a body file that has no rotor");
+  }
+  out["notes"] = notes;
   return out;
 }
 

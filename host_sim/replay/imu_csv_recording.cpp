@@ -1,5 +1,6 @@
 #include "replay/imu_csv_recording.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -38,6 +39,9 @@ Recording imu_csv_recording(const ImuLog& log) {
   recording.format = "imu_csv";
   recording.t0_s = log.time_s[0];
   recording.t0_us = log.time_s[0] > 0.0 ? static_cast<std::uint64_t>(std::llround(log.time_s[0] * 1e6)) : 0;
+  recording.has_rotor_speed = !log.rotor_rad_s.empty();
+  for (const double w : log.rotor_rad_s)
+    recording.max_abs_rotor_rad_s = std::max(recording.max_abs_rotor_rad_s, std::abs(w));
   const std::vector<char> gap_after = steps_followed_by_gap(log.time_s);
   recording.samples.reserve(log.time_s.size());
   for (std::size_t i = 0; i < log.time_s.size(); ++i) {
@@ -50,6 +54,13 @@ Recording imu_csv_recording(const ImuLog& log) {
     s.accel_m_s2 = as_float(log.accel_m_s2[i]);
     if (!all_finite(s.gyro_rad_s) || !all_finite(s.accel_m_s2)) {
       throw Error(at_line(path, log.line_numbers[i], "a value beyond single precision's range"));
+    }
+    if (recording.has_rotor_speed) {
+      s.rotor_rad_s = static_cast<float>(log.rotor_rad_s[i]);
+      if (!std::isfinite(s.rotor_rad_s)) {
+        throw Error(at_line(path, log.line_numbers[i], "rotor_rad_s beyond single precision's range"));
+      }
+      s.flags |= imu_rotor_speed;
     }
     if (i > 0 && gap_after[i - 1]) s.flags |= imu_gap_before;
     recording.samples.push_back(s);

@@ -1,4 +1,5 @@
-// The plain IMU log of SPEC §3 (t,gx,gy,gz,ax,ay,az; s, rad/s, m/s²) as a Recording for
+// The plain IMU log of SPEC §3 (t,gx,gy,gz,ax,ay,az[,rotor_rad_s]; s, rad/s, m/s², rad/s;
+// the rotor's speed in every sample, flagged imu_rotor_speed, where the log has it) as a Recording for
 // `aloft replay --imu`: the samples in float, as the firmware's pipeline takes them, with
 // t_us counted from the first sample (Recording::t0_s keeps the CSV's own first t, so
 // reports give times in the CSV's base). The accelerometer columns are required: release

@@ -29,6 +29,10 @@ struct Recording {
   // The same in seconds, which is what reports add: a CSV's `t` may start below zero,
   // where t0_us (unsigned) stays 0.
   double t0_s = 0.0;
+  // The body's rotor speed (a CSV's rotor_rad_s; a FIFO recording has none): whether the
+  // recording carries it, and its largest magnitude (rad/s).
+  bool has_rotor_speed = false;
+  double max_abs_rotor_rad_s = 0.0;
 };
 
 }  // namespace aloft::host

@@ -20,6 +20,7 @@
 #include "replay/replay_report_json.hpp"
 #include "replay/replay_report_text.hpp"
 #include "replay/replay_run.hpp"
+#include "replay/rotor_match.hpp"
 
 namespace aloft::host {
 namespace {
@@ -51,6 +52,7 @@ ReplayRun run_replay_options(const ReplayOptions& o) {
   const Body body = read_body(o.body_path, o.body_json);
   ReplayRun run;
   run.recording = read_recording(o);
+  check_rotor_matches(body, o.body_path, run.recording);
   run.result = run_replay(replay_settings_from_body(body), o.body_path, run.recording);
   return run;
 }

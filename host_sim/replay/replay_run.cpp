@@ -12,6 +12,11 @@ ReplaySettings replay_settings_from_body(const Body& body) {
   s.tensor_kg_m2 = body.inertia.tensor().cast<float>();
   s.sensor_to_body = body.imu_to_body.cast<float>();
   if (body.imu_position_m) s.imu_position_m = body.imu_position_m->cast<float>();
+  if (body.rotor) {
+    // Normalised again in float: the double unit vector, rounded, is a hair off unit.
+    s.rotor.axis = body.rotor->axis.cast<float>().normalized();
+    s.rotor.inertia_kg_m2 = static_cast<float>(body.rotor->inertia_kg_m2);
+  }
   return s;
 }
 
@@ -27,6 +32,7 @@ OnboardPipelineSettings<float> pipeline_settings(const ReplaySettings& settings)
   p.check.sensor_to_body = settings.sensor_to_body;
   p.imu_position_known = settings.imu_position_m.has_value();
   if (settings.imu_position_m) p.imu_position_m = *settings.imu_position_m;
+  p.rotor = settings.rotor;
   return p;
 }
 

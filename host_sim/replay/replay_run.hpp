@@ -24,6 +24,7 @@ struct ReplaySettings {
   Mat3<float> tensor_kg_m2 = Mat3<float>::Zero();  // body axes, about the centre of mass
   Quat<float> sensor_to_body = Quat<float>::Identity();
   std::optional<Vec3<float>> imu_position_m;  // body axes; none: the pipeline estimates it
+  Rotor<float> rotor;                         // the body file's `rotor`; none: inertia 0
 };
 
 ReplaySettings replay_settings_from_body(const Body& body);

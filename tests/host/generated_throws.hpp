@@ -19,7 +19,21 @@
 //   - the body rings after release and after a catch: one or two structural modes at
 //     100–800 Hz along fixed body directions, decaying over 5–30 ms, up to 8 m/s² in
 //     single samples.
-// TrueFlight::release_s is where the hand's force reaches zero; `force_below_1_s` is where
+// With `retouch` (RecordingSpec) a finger touches again as the body leaves, as in the one
+// held-back real throw whose release came 14.9 ms early: after the let-go the hand's force
+// is gone for 2-4 ms (the body flies free), then a finger pushes for 5-15 ms at 3-4 m/s²
+// at the centre of mass (rising and falling over 1-3 ms each), with the torque of its
+// contact point 1-2 radii of gyration off the centre; then the hand is gone.
+// With `rotor` (RecordingSpec) the body carries a rotor whose speed the firmware logs
+// (rotor_flight.hpp): J 0.3-1.2 % of the body's smallest moment about a random axis; in
+// each spinning throw it starts from rest 0-60 ms after the release and spins up over
+// 0.15-0.25 s (a ramp or a first-order rise) to ±300-1500 rad/s, holds that for
+// 0.05-0.2 s (the pulse) and brakes to rest over 0.05-0.15 s; the flight lasts 0.15-0.35 s
+// longer so that most of it is airborne, and is the gyrostat's, I ω̇ + ω × (I ω + h) = −ḣ.
+// Every sample carries the speed as DShot telemetry gives it: a frame every 0.125-2 ms,
+// 1-4 ms late, 9 significant bits, held between frames.
+// TrueFlight::release_s is where the hand's force reaches zero for good (after the
+// re-touch); `force_below_1_s` is where
 // it last fell below 1 m/s² (a tenth of g), which no accelerometer tells from its noise
 // and the air's drag: a release dated between the two is not early.
 // The accelerometer at r reads R^T f + w_dot x r + w x (w x r); both sensors pass a
@@ -36,7 +50,8 @@
 
 #include "aloft/sensor/imu_sample.hpp"
 #include "aloft/dynamics/inertia_tensor.hpp"
-#include "low_pass.hpp"  // tests/diagnose/generator
+#include "low_pass.hpp"      // tests/diagnose/generator
+#include "rotor_flight.hpp"  // tests/diagnose/generator
 
 namespace aloft_test {
 
@@ -50,8 +65,15 @@ enum class LandingKind { catch_by_hand, impact };
 struct TrueFlight {
   double release_s = 0;
   double force_below_1_s = 0;  // the hand's force at the centre of mass last fell below 1 m/s²
+  double first_let_go_s = 0;   // with a re-touch: where the force first fell away (else release_s)
+  double retouch_start_s = 0;  // with a re-touch: where the finger touched again (else release_s)
   double landing_s = 0;
   double release_rate_rad_s = 0;
+  // With a rotor, the total angular momentum R(q) (I ω + h) in world axes at the release
+  // and at the landing (constant in flight), and the rotor's profile (recording clock).
+  V3 momentum_world_release = V3::Zero();
+  V3 momentum_world_landing = V3::Zero();
+  aloft::test::RotorProfile rotor_profile{0.0, 0.2, false, 0.0, 0.0, 0.1};
 };
 
 struct Recording {
@@ -64,6 +86,12 @@ struct Recording {
   Q sensor_to_body = Q::Identity();
   M3 true_tensor = M3::Identity();
   M3 nominal_tensor = M3::Identity();  // what the pipeline is told (maybe wrong)
+  // With a rotor: its moment about its axis (kg m^2), the axis (body axes) and the
+  // telemetry; each sample carries the speed as the firmware logged it (rotor_rad_s,
+  // flagged imu_rotor_speed).
+  double rotor_inertia_kg_m2 = 0;
+  V3 rotor_axis = V3::UnitZ();
+  aloft::test::RotorTelemetry rotor_telemetry;
 };
 
 struct RecordingSpec {
@@ -84,6 +112,11 @@ struct RecordingSpec {
   // Slow let-go, hand torque to the end of it, ringing body (see the file comment), from
   // draws of their own so that the rest of the recording is drawn as without.
   bool real_hand = false;
+  // A finger touching again for 5-15 ms after the let-go (see the file comment), from
+  // draws of its own.
+  bool retouch = false;
+  // A rotor whose speed is logged (see the file comment), from draws of its own.
+  bool rotor = false;
   std::uint32_t seed = 1;
 };
 
@@ -112,6 +145,16 @@ class ThrowGenerator {
   double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
   double hand_uniform(double lo, double hi) {
     return std::uniform_real_distribution<double>(lo, hi)(hand_rng_);
+  }
+  double retouch_uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(retouch_rng_);
+  }
+  V3 retouch_unit() {
+    const double x = retouch_uniform(-1, 1), y = retouch_uniform(-1, 1), z = retouch_uniform(-1, 1);
+    return V3(x, y, z).normalized();
+  }
+  double rotor_uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rotor_rng_);
   }
   double normal() { return std::normal_distribution<double>(0.0, 1.0)(rng_); }
   // The draws of one expression are made one statement at a time: the order in which a
@@ -160,6 +203,7 @@ class ThrowGenerator {
     gyro_filter_ = aloft::generator::LowPass(cutoff_hz_, fine_step());
     accel_filter_ = aloft::generator::LowPass(cutoff_hz_, fine_step());
     if (spec_.sensor_errors) pick_sensor_errors();
+    if (spec_.rotor) pick_rotor(moments.minCoeff());
   }
 
   // Datasheet-sized errors of a MEMS IMU after a factory trim: accelerometer bias
@@ -215,13 +259,73 @@ class ThrowGenerator {
       const double sigma = torque_to_the_end || spec_.real_hand ? u * u : u * u * (3 - 2 * u);
       step(f, w0 + (w_rel - w0) * sigma);
     }
-    out_.flights.push_back({t_, std::min(force_below_1_s, t_), 0.0, w_rel.norm()});
+    const double first_let_go_s = t_;
+    double retouch_start_s = t_;
+    if (spec_.retouch) {
+      const double th = theta0 + 1.57;
+      const V3 push = drop ? V3(0, 0, 1) : (V3(std::cos(th), 0, std::sin(th)) + 0.3 * across).normalized();
+      force_below_1_s = retouch(push, retouch_start_s);
+    }
+    out_.flights.push_back(
+        {t_, std::min(force_below_1_s, t_), first_let_go_s, retouch_start_s, 0.0, w_rel.norm()});
     if (spec_.real_hand) start_ringing();
-    fly(drop ? uniform(0.15, 0.5) : uniform(0.25, 0.8));
+    const double airborne = drop ? uniform(0.15, 0.5) : uniform(0.25, 0.8);
+    if (spec_.rotor && !drop) {
+      rotor_profile_ = draw_rotor_profile(t_);
+      out_.flights.back().rotor_profile = rotor_profile_;
+      fly_with_rotor(airborne + rotor_uniform(0.15, 0.35));
+    } else {
+      fly(airborne);
+    }
     out_.flights.back().landing_s = t_;
     const LandingKind landing = uniform(0, 1) < 0.5 ? LandingKind::catch_by_hand : LandingKind::impact;
     if (spec_.real_hand && landing == LandingKind::catch_by_hand) start_ringing();
     land(landing);
+  }
+
+  // The finger that touches again (see the file comment): the hand's force gone for 2-4 ms,
+  // then a push near the swing's last direction with a torque, integrated with Euler's
+  // equations (RK4 on the fine grid); returns the last instant the force was >= 1 m/s²,
+  // and where the finger touched in `touched_s`.
+  double retouch(const V3& push_world, double& touched_s) {
+    const double gap = retouch_uniform(0.002, 0.004);
+    const double touch = retouch_uniform(0.005, 0.015);
+    const double peak = retouch_uniform(3.0, 4.0);
+    const double rise = retouch_uniform(0.001, 0.003);
+    const double fall = retouch_uniform(0.001, 0.003);
+    const V3 dir = (push_world + 0.5 * retouch_unit()).normalized();
+    // Mass from the mean moment and a radius of gyration; the contact 1-2 radii out.
+    const double gyration_m = retouch_uniform(0.03, 0.06);
+    const double mass_kg = out_.true_tensor.trace() / 3.0 / (gyration_m * gyration_m);
+    const V3 contact = retouch_unit() * (gyration_m * retouch_uniform(1.0, 2.0));
+    const M3& inertia = out_.true_tensor;
+    const M3 inverse = inertia.inverse();
+    const double start = t_;
+    touched_s = start + gap;
+    double last_above_1 = t_;
+    while (t_ < start + gap + touch - 0.5 * fine_dt_) {
+      const double s = t_ - start - gap;  // into the touch
+      double level = 0.0;
+      if (s >= 0.0) {
+        const double up = s < rise ? 0.5 - 0.5 * std::cos(3.14159265 * s / rise) : 1.0;
+        const double left = touch - s;
+        const double down = left < fall ? 0.5 - 0.5 * std::cos(3.14159265 * left / fall) : 1.0;
+        level = peak * std::min(up, down);
+      }
+      const V3 f_world = level * dir;
+      const V3 torque_per_mass = contact.cross(orientation_.conjugate() * f_world);
+      auto rate = [&](const V3& w) -> V3 {
+        return inverse * (mass_kg * torque_per_mass - w.cross(inertia * w));
+      };
+      const double h = fine_dt_;
+      const V3 k1 = rate(omega_);
+      const V3 k2 = rate(omega_ + 0.5 * h * k1);
+      const V3 k3 = rate(omega_ + 0.5 * h * k2);
+      const V3 k4 = rate(omega_ + h * k3);
+      if (level >= 1.0) last_above_1 = t_ + fine_dt_;
+      step(f_world, omega_ + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4));
+    }
+    return last_above_1;
   }
 
   // The fraction of the swing's force left with a fraction x of the let-go to go: the fast
@@ -257,6 +361,29 @@ class ThrowGenerator {
     return sum;
   }
 
+  // The rotor's body-fixed constants, once per recording.
+  void pick_rotor(double smallest_moment) {
+    out_.rotor_inertia_kg_m2 = smallest_moment * rotor_uniform(0.003, 0.012);
+    const double x = rotor_uniform(-1, 1), y = rotor_uniform(-1, 1), z = rotor_uniform(-1, 1);
+    out_.rotor_axis = V3(x, y, z).normalized();
+    aloft::test::RotorTelemetry& telemetry = out_.rotor_telemetry;
+    telemetry.period_s = rotor_uniform(0.000125, 0.002);
+    telemetry.delay_s = rotor_uniform(0.001, 0.004);
+    telemetry.first_frame_s = rotor_uniform(0.0, telemetry.period_s);
+    telemetry.pole_pairs = rotor_uniform(0, 1) < 0.5 ? 6 : 7;
+  }
+
+  aloft::test::RotorProfile draw_rotor_profile(double release_s) {
+    aloft::test::RotorProfile p;
+    p.start_s = release_s + rotor_uniform(0.0, 0.06);
+    p.spin_up_s = rotor_uniform(0.15, 0.25);
+    p.first_order = rotor_uniform(0, 1) < 0.5;
+    p.full_rad_s = (rotor_uniform(0, 1) < 0.5 ? -1.0 : 1.0) * rotor_uniform(300.0, 1500.0);
+    p.hold_s = rotor_uniform(0.05, 0.2);
+    p.brake_s = rotor_uniform(0.05, 0.15);
+    return p;
+  }
+
   void fly(double seconds) {
     const double end = t_ + seconds;
     const V3 drag = unit_times(0, 0.3);
@@ -271,6 +398,24 @@ class ThrowGenerator {
       const V3 k4 = rate(omega_ + h * k3);
       step(orientation_ * drag, omega_ + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4));
     }
+  }
+
+  // The gyrostat (rotor_flight.hpp): its own RK4 on orientation and rate, split at the
+  // profile's corners; the world momentum at both ends is kept for the tests.
+  void fly_with_rotor(double seconds) {
+    const double end = t_ + seconds;
+    const V3 drag = unit_times(0, 0.3);
+    const aloft::test::RotorFlight flight(out_.true_tensor, out_.rotor_inertia_kg_m2, out_.rotor_axis,
+                                          rotor_profile_);
+    aloft::test::GyrostatState state;
+    state.q = orientation_;
+    state.w = omega_;
+    out_.flights.back().momentum_world_release = flight.world_momentum(t_, state);
+    while (t_ < end) {
+      flight.advance(t_, fine_dt_, state);
+      step(orientation_ * drag, state.w);
+    }
+    out_.flights.back().momentum_world_landing = flight.world_momentum(t_, state);
   }
 
   void land(LandingKind kind) {
@@ -346,6 +491,10 @@ class ThrowGenerator {
     s.accel_m_s2 = accel_scale_.cwiseProduct(accel_axes_ * accel_f) + accel_bias_ + accel_noise_ * normal3();
     clip(s.gyro_rad_s, 69.8, aloft::imu_gyro_clipped, s.flags);
     clip(s.accel_m_s2, 156.9, aloft::imu_accel_clipped, s.flags);
+    if (spec_.rotor) {
+      s.rotor_rad_s = out_.rotor_telemetry.logged(t_, rotor_profile_);
+      s.flags = static_cast<std::uint8_t>(s.flags | aloft::imu_rotor_speed);
+    }
     out_.samples.push_back(s);
   }
 
@@ -364,6 +513,11 @@ class ThrowGenerator {
   std::mt19937 jitter_rng_{spec_.seed ^ 0x5EEDu};
   // The real hand's draws (let-go span, ringing): the same throws with and without it.
   std::mt19937 hand_rng_{spec_.seed ^ 0x4A4Du};
+  // The re-touch's draws: the same throws with and without it.
+  std::mt19937 retouch_rng_{spec_.seed ^ 0x70C4u};
+  // The rotor's draws: the same throws with and without it (but for the longer flights).
+  std::mt19937 rotor_rng_{spec_.seed ^ 0x2070u};
+  aloft::test::RotorProfile rotor_profile_{0.0, 0.2, false, 0.0, 0.0, 0.1};
   struct RingingMode {
     double amplitude_m_s2 = 0;
     double frequency_hz = 0;

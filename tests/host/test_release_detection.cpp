@@ -26,6 +26,8 @@ struct Tally {
   int landing_within_10ms = 0;
   int early = 0;             // reported release before the true one
   int early_in_contact = 0;  // before the hand's force fell below 1 m/s² (generated_throws.hpp)
+  int early_over_10ms = 0;   // more than 10 ms before the true release: the real throws' bar
+  int before_retouch = 0;    // with a re-touch: dated before the finger touched again
   int within_judged = 0;     // from 10 ms early to 20 ms late: the held-back real throws' bar
   double worst_early_ms = 0;
   int false_flights = 0;  // reported where there was none
@@ -45,6 +47,8 @@ struct Tally {
     landing_within_10ms += o.landing_within_10ms;
     early += o.early;
     early_in_contact += o.early_in_contact;
+    early_over_10ms += o.early_over_10ms;
+    before_retouch += o.before_retouch;
     within_judged += o.within_judged;
     worst_early_ms = std::max(worst_early_ms, o.worst_early_ms);
     false_flights += o.false_flights;
@@ -65,6 +69,10 @@ struct Tally {
         name, true_flights, percent(found), percent(release_within_5ms), percent(release_within_10ms),
         worst_late_ms, early, early_in_contact, worst_early_ms, percent(within_judged),
         percent(landing_within_5ms), percent(landing_within_10ms), worst_landing_ms, false_flights, turned);
+    if (early_over_10ms > 0 || before_retouch > 0) {
+      std::printf("%-34s more than 10 ms early %d, dated before a re-touch %d\n", name, early_over_10ms,
+                  before_retouch);
+    }
     if (r_estimates > 0) {
       std::vector<double> e = r_errors_mm;
       std::sort(e.begin(), e.end());
@@ -100,6 +108,10 @@ std::vector<aloft::FlightResult<float>> replay(const Recording& rec, bool give_r
     settings.release_window.block_us = static_cast<std::uint32_t>(std::strtoul(v, nullptr, 10));
   const aloft_test::V3 off = aloft_test::V3(0.6, -0.48, 0.64) * r_error_m;
   settings.imu_position_m = (rec.imu_position_m + off).cast<float>();
+  if (rec.rotor_inertia_kg_m2 > 0) {
+    settings.rotor.axis = rec.rotor_axis.cast<float>();
+    settings.rotor.inertia_kg_m2 = static_cast<float>(rec.rotor_inertia_kg_m2);
+  }
   aloft::OnboardPipeline<float, 8> pipeline(nominal_tensor(rec), settings);
   std::vector<aloft::FlightResult<float>> flights;
   aloft::FlightResult<float> flight;
@@ -109,6 +121,7 @@ std::vector<aloft::FlightResult<float>> replay(const Recording& rec, bool give_r
     f.gyro_rad_s = s.gyro_rad_s.cast<float>();
     f.accel_m_s2 = s.accel_m_s2.cast<float>();
     f.flags = s.flags;
+    f.rotor_rad_s = static_cast<float>(s.rotor_rad_s);
     if (pipeline.push(f) != aloft::Status::ok) FAIL("sample refused at t_us " << f.t_us);
     while (pipeline.take_finished_flight(flight)) flights.push_back(flight);
   }
@@ -137,6 +150,10 @@ void score(const Recording& rec, bool give_r, Tally& t, double r_error_m) {
       const double late_ms = (r - release_us) * 1e-3;
       const double land_ms = std::abs(static_cast<double>(flights[i].landing_us) - landing_us) * 1e-3;
       if (late_ms < 0) ++t.early;
+      if (late_ms < -10) ++t.early_over_10ms;
+      if (truth.retouch_start_s < truth.release_s &&
+          r < static_cast<double>(rec.t0_us) + truth.retouch_start_s * 1e6)
+        ++t.before_retouch;
       if (late_ms >= -10 && late_ms <= 20) ++t.within_judged;
       if (r < static_cast<double>(rec.t0_us) + truth.force_below_1_s * 1e6) ++t.early_in_contact;
       if (late_ms < 0) t.worst_early_ms = std::max(t.worst_early_ms, -late_ms);
@@ -183,7 +200,7 @@ std::uint32_t seed_shift() {
 
 Tally run(MotionKind kind, const std::vector<double>& rates, int recordings, double tensor_error, bool give_r,
           std::uint32_t seed0, const char* name, double r_error_m = 0.0, bool sensor_errors = false,
-          double interval_jitter = 0.0, bool real_hand = false) {
+          double interval_jitter = 0.0, bool real_hand = false, bool retouch = false, bool rotor = false) {
   Tally t;
   for (double rate : rates) {
     Tally per_rate;
@@ -196,6 +213,8 @@ Tally run(MotionKind kind, const std::vector<double>& rates, int recordings, dou
       spec.sensor_errors = sensor_errors;
       spec.interval_jitter = interval_jitter;
       spec.real_hand = real_hand;
+      spec.retouch = retouch;
+      spec.rotor = rotor;
       spec.seed =
           seed0 + static_cast<std::uint32_t>(i) + static_cast<std::uint32_t>(rate) * 1000u + seed_shift();
       const Recording rec = aloft_test::ThrowGenerator(spec).generate();
@@ -345,37 +364,156 @@ TEST_CASE("no flight in a recording without one", "[release]") {
 // out"); both must meet the held-back real throws' bar: within 10 ms early to 20 ms late,
 // never more than 10 ms early. Measured (gcc Release), docs/validation/release-detection.md, "Real hands".
 namespace {
-struct RealHandSets {
+// Three sets at 1, 2 and 4 kHz with a real IMU's errors, named "LABEL, r given", ...: 15
+// spinning throws a rate with r given (seeds from seed0), 15 with r fitted and the tensor
+// 15 % off (seed0 + 100), 6 drops (seed0 + 200).
+struct HandSets {
   Tally given, fitted, drops;
 };
-RealHandSets run_real_hands(std::uint32_t seed0, const char* set) {
+HandSets run_hand_sets(std::uint32_t seed0, const char* label, bool real_hand, bool retouch) {
   constexpr double no_r_error = 0.0;
   constexpr bool with_sensor_errors = true;
   constexpr double no_jitter = 0.0;
-  constexpr bool real_hand = true;
   char name[3][64];
-  std::snprintf(name[0], sizeof name[0], "real hand %s, r given", set);
-  std::snprintf(name[1], sizeof name[1], "real hand %s, r fitted, I 15%% off", set);
-  std::snprintf(name[2], sizeof name[2], "real hand %s, drop", set);
-  RealHandSets s;
+  std::snprintf(name[0], sizeof name[0], "%s, r given", label);
+  std::snprintf(name[1], sizeof name[1], "%s, r fitted, I 15%% off", label);
+  std::snprintf(name[2], sizeof name[2], "%s, drop", label);
+  HandSets s;
   s.given = run(MotionKind::spin_throw, {1000, 2000, 4000}, 15, 0.0, true, seed0, name[0], no_r_error,
-                with_sensor_errors, no_jitter, real_hand);
+                with_sensor_errors, no_jitter, real_hand, retouch);
   s.fitted = run(MotionKind::spin_throw, {1000, 2000, 4000}, 15, 0.15, false, seed0 + 100, name[1],
-                 no_r_error, with_sensor_errors, no_jitter, real_hand);
+                 no_r_error, with_sensor_errors, no_jitter, real_hand, retouch);
   s.drops = run(MotionKind::drop, {1000, 2000, 4000}, 6, 0.15, false, seed0 + 200, name[2], no_r_error,
-                with_sensor_errors, no_jitter, real_hand);
+                with_sensor_errors, no_jitter, real_hand, retouch);
   return s;
 }
+constexpr bool kRealHand = true;
+constexpr bool kRetouch = true;
 }  // namespace
 
 TEST_CASE("release on real hands: slow let-go, hand torque, ringing body", "[release][real_hand]") {
-  const RealHandSets tuned = run_real_hands(1600, "tuned on");
-  const RealHandSets held_out = run_real_hands(2600, "held out");
-  for (const RealHandSets* s : {&tuned, &held_out}) {
+  const HandSets tuned = run_hand_sets(1600, "real hand tuned on", kRealHand, !kRetouch);
+  const HandSets held_out = run_hand_sets(2600, "real hand held out", kRealHand, !kRetouch);
+  for (const HandSets* s : {&tuned, &held_out}) {
     for (const Tally* t : {&s->given, &s->fitted, &s->drops}) {
       CHECK(t->worst_early_ms <= 10.0);
       CHECK(t->false_flights == 0);
       CHECK(t->percent(t->found) >= 97.0);
     }
+  }
+}
+
+// A finger that touches again as the body leaves (generated_throws.hpp, retouch): the
+// hand's force falls away, is gone for 2-4 ms, a finger pushes for 5-15 ms at 3-4 m/s²
+// with a torque, then the hand is gone; the true release is after the finger. The one
+// held-back real throw released early (14.9 ms) was this. Seeds 4600- (fast hand) and
+// 5600- (real hand) were drawn for this case and nothing was chosen on them. The bars are
+// the project's: a fast hand never early, as every fast-hand case; a real hand (slow
+// let-go, hand torque, ringing) never more than 10 ms early, as "release on real hands".
+// Hidden ([.]): today's detector misses both (docs/validation/release-detection.md, "A
+// finger's re-touch": fast hand 79 of 324 early, 2 by more than 10 ms; real hand 11 of
+// 324 more than 10 ms early, worst 25.5 ms). Run them by name or with "[retouch]"; they
+// join the suite, unchanged, once the detector meets them.
+TEST_CASE("release after a finger's re-touch, fast hand: never early", "[.][release][retouch]") {
+  const HandSets s = run_hand_sets(4600, "re-touch fast hand", !kRealHand, kRetouch);
+  for (const Tally* t : {&s.given, &s.fitted, &s.drops}) {
+    CHECK(t->early == 0);
+    CHECK(t->false_flights == 0);
+    CHECK(t->percent(t->found) >= 97.0);
+  }
+}
+
+TEST_CASE("release after a finger's re-touch, real hand: never more than 10 ms early",
+          "[.][release][retouch][real_hand]") {
+  const HandSets s = run_hand_sets(5600, "re-touch real hand", kRealHand, kRetouch);
+  for (const Tally* t : {&s.given, &s.fitted, &s.drops}) {
+    CHECK(t->worst_early_ms <= 10.0);
+    CHECK(t->false_flights == 0);
+    CHECK(t->percent(t->found) >= 97.0);
+  }
+}
+
+// The generator's rotor (generated_throws.hpp, rotor): in flight the body is the
+// gyrostat, so its total angular momentum R(q) (I ω + h) in world axes is the same at the
+// landing as at the release, and the rotor turned in flight.
+TEST_CASE("generated rotor throws conserve the world angular momentum in flight", "[release][rotor]") {
+  int flights = 0;
+  for (std::uint32_t seed = 7600; seed < 7610; ++seed) {
+    RecordingSpec spec;
+    spec.rotor = true;
+    spec.seed = seed;
+    const Recording rec = aloft_test::ThrowGenerator(spec).generate();
+    double peak = 0.0;
+    for (const auto& sample : rec.samples) {
+      REQUIRE(sample.has_rotor_speed());
+      peak = std::max(peak, std::abs(sample.rotor_rad_s));
+    }
+    CHECK(peak >= 300.0);
+    for (const aloft_test::TrueFlight& f : rec.flights) {
+      if (f.rotor_profile.full_rad_s == 0.0) continue;  // a throw without a turn: no rotor run
+      ++flights;
+      // A throw released without a turn has L = 0: the rotor's full momentum is the scale.
+      const double l = f.momentum_world_release.norm();
+      const double h = rec.rotor_inertia_kg_m2 * std::abs(f.rotor_profile.full_rad_s);
+      INFO("seed " << seed << " release " << f.release_s << " s: |L| " << l << ", |h| at full speed " << h);
+      CHECK((f.momentum_world_landing - f.momentum_world_release).norm() <= 1e-9 * (l + h));
+      // The rotor ran in flight, and its share of |L| is not small.
+      CHECK(f.rotor_profile.start_s < f.landing_s);
+      CHECK(h > 0.01 * l);
+    }
+  }
+  CHECK(flights >= 20);
+}
+
+// Throws of a body with a rotor whose speed is logged (generated_throws.hpp, rotor): the
+// wheel spins up from rest after the release, holds full speed and brakes, mostly in
+// flight; its torque is known from the logged speed, so it is never a landing. Seeds 8600-
+// (fast hand) and 9600- (real hand), on which nothing was chosen, 1, 2 and 4 kHz with a
+// real IMU's errors, held to the bars of the cases without a rotor: release never early
+// (real hand: never more than 10 ms early), no false flight, landings within 10 ms.
+// Hidden ([.]) until the detector takes the rotor's torque from the logged speed: today it
+// takes the spin-up for contact (docs/validation/release-detection.md, "A body with a
+// rotor": fast hand 7 false flights and landings 91-93 % within 10 ms; the same seeds
+// without the rotor meet every bar). Run them with "[rotor_throws]".
+namespace {
+struct RotorSets {
+  Tally given, fitted;
+};
+RotorSets run_rotor(std::uint32_t seed0, bool real_hand, const char* set) {
+  constexpr double no_r_error = 0.0;
+  constexpr bool with_sensor_errors = true;
+  constexpr double no_jitter = 0.0;
+  constexpr bool no_retouch = false;
+  constexpr bool rotor = true;
+  char name[2][64];
+  std::snprintf(name[0], sizeof name[0], "rotor %s, r given", set);
+  std::snprintf(name[1], sizeof name[1], "rotor %s, r fitted, I 15%% off", set);
+  RotorSets s;
+  s.given = run(MotionKind::spin_throw, {1000, 2000, 4000}, 15, 0.0, true, seed0, name[0], no_r_error,
+                with_sensor_errors, no_jitter, real_hand, no_retouch, rotor);
+  s.fitted = run(MotionKind::spin_throw, {1000, 2000, 4000}, 15, 0.15, false, seed0 + 100, name[1],
+                 no_r_error, with_sensor_errors, no_jitter, real_hand, no_retouch, rotor);
+  return s;
+}
+}  // namespace
+
+TEST_CASE("release and landing of a body with a logged rotor, fast hand", "[.][release][rotor_throws]") {
+  const RotorSets s = run_rotor(8600, false, "fast hand");
+  for (const Tally* t : {&s.given, &s.fitted}) {
+    CHECK(t->early == 0);
+    CHECK(t->false_flights == 0);
+    CHECK(t->percent(t->found) >= 97.0);
+    CHECK(t->percent(t->landing_within_10ms) >= 95.0);
+  }
+}
+
+TEST_CASE("release and landing of a body with a logged rotor, real hand",
+          "[.][release][rotor_throws][real_hand]") {
+  const RotorSets s = run_rotor(9600, true, "real hand");
+  for (const Tally* t : {&s.given, &s.fitted}) {
+    CHECK(t->worst_early_ms <= 10.0);
+    CHECK(t->false_flights == 0);
+    CHECK(t->percent(t->found) >= 97.0);
+    CHECK(t->percent(t->landing_within_10ms) >= 95.0);
   }
 }

@@ -30,6 +30,23 @@ TEST_CASE("plain IMU CSV: gyro only and with accelerometer", "[readers][imu]") {
   CHECK(both.accel_m_s2[0].isApprox(Eigen::Vector3d(0.1, 0, 9.8)));
 }
 
+TEST_CASE("plain IMU CSV: the rotor's speed in rotor_rad_s", "[readers][imu][rotor]") {
+  ScratchDir dir;
+  // Any column order, any case; rad/s as written (the gyro's units do not apply to it).
+  const auto log = read_imu_csv(
+      dir.write("r.csv", "t,gx,gy,gz,Rotor_Rad_S,ax,ay,az\n0,1,2,3,0,0,0,9.8\n0.001,1,2,3,-412.5,0,0,9.8\n"));
+  REQUIRE(log.rotor_rad_s.size() == 2);
+  CHECK(log.rotor_rad_s[0] == 0.0);
+  CHECK(log.rotor_rad_s[1] == -412.5);
+  CHECK(log.accel_m_s2.size() == 2);
+  // Without the column, none; with a gyro-only log, the column alone.
+  CHECK(read_imu_csv(dir.write("n.csv", "t,gx,gy,gz\n0,1,2,3\n")).rotor_rad_s.empty());
+  const auto gyro_only = read_imu_csv(dir.write("g.csv", "rotor_rad_s,t,gx,gy,gz\n700,0,1,2,3\n"));
+  REQUIRE(gyro_only.rotor_rad_s.size() == 1);
+  CHECK(gyro_only.rotor_rad_s[0] == 700.0);
+  CHECK(gyro_only.gyro_rad_s[0].isApprox(Eigen::Vector3d(1, 2, 3)));
+}
+
 TEST_CASE("phyphox export is recognised by its header", "[readers][imu]") {
   ScratchDir dir;
   const auto log = read_imu_csv(
@@ -94,6 +111,18 @@ TEST_CASE("bad IMU logs: one-line errors naming file, line and problem", "[reade
   SECTION("NaN value") {
     const auto p = dir.write("n.csv", "t,gx,gy,gz\n0,1,2,3\n0.001,NaN,2,3\n");
     CHECK_ONE_LINE_ERROR(read_imu_csv(p), p + ":3:", "gx", "not finite");
+  }
+  SECTION("a rotor speed that is not a finite number: as any other cell") {
+    for (const char* cell : {"NaN", "inf", "-Infinity"}) {
+      INFO(cell);
+      const auto p =
+          dir.write("r.csv", std::string("t,gx,gy,gz,rotor_rad_s\n0,1,2,3,10\n0.001,1,2,3,") + cell + "\n");
+      CHECK_ONE_LINE_ERROR(read_imu_csv(p), p + ":3:", "rotor_rad_s", "not finite");
+    }
+    const auto empty = dir.write("e.csv", "t,gx,gy,gz,rotor_rad_s\n0,1,2,3,\n");
+    CHECK_ONE_LINE_ERROR(read_imu_csv(empty), empty + ":2:", "rotor_rad_s", "empty cell");
+    const auto text = dir.write("x.csv", "t,gx,gy,gz,rotor_rad_s\n0,1,2,3,fast\n");
+    CHECK_ONE_LINE_ERROR(read_imu_csv(text), text + ":2:", "rotor_rad_s", "'fast' is not a number");
   }
   SECTION("duplicated time stamp") {
     const auto p = dir.write("d.csv", "t,gx,gy,gz\n0,1,2,3\n0.001,1,2,3\n0.001,1,2,3\n");

@@ -123,6 +123,17 @@ TEST_CASE("inspect pose, IMU and segments files, told apart by content", "[reade
   CHECK(imu["rate_hz"].get<double>() == Approx(1000.0));
   CHECK(imu["has_accelerometer"] == true);
   CHECK(imu["max_gyro_rad_s"].get<double>() == Approx(5.0));
+  CHECK(imu["columns"] == nlohmann::json({"t", "gx", "gy", "gz", "ax", "ay", "az"}));
+  CHECK(imu["has_rotor_speed"] == false);
+  CHECK_FALSE(imu.contains("max_abs_rotor_rad_s"));
+
+  // The rotor's speed column is listed, with its peak and what it asks of the body file.
+  const auto rotor = inspect(
+      {dir.write("r.txt", "t,gx,gy,gz,ax,ay,az,rotor_rad_s\n0,3,0,4,0,0,0,12\n0.001,0,0,1,0,0,0,-640.5\n")});
+  CHECK(rotor["columns"] == nlohmann::json({"t", "gx", "gy", "gz", "ax", "ay", "az", "rotor_rad_s"}));
+  CHECK(rotor["has_rotor_speed"] == true);
+  CHECK(rotor["max_abs_rotor_rad_s"].get<double>() == 640.5);
+  CHECK(rotor["notes"].dump().find("rotor_rad_s") != std::string::npos);
 
   const auto segments = inspect({dir.write("s.txt", "segment,start,end,keep\na,1,2,\nb,3,4,false\n")});
   CHECK(segments["format"] == "segments");

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "aloft/onboard/tensor_estimator.hpp"
 #include "flight_lines_check.hpp"
 #include "run_aloft.hpp"
 #include "throw_generator.hpp"
@@ -65,4 +66,35 @@ TEST_CASE("examples/throw_*: the firmware's host lines say what aloft replay --j
   CHECK(double(f["release_s"]) >= 0.2);
   CHECK(double(f["release_s"]) <= 0.205);
   CHECK(std::abs(double(f["landing_s"]) - 0.5) <= 0.005);
+}
+
+// The tensor the example throw shows, from its airborne samples (the generator's release
+// to its landing) through the onboard estimator in float with its default settings: the
+// ratios within 1 % of the body file's.
+TEST_CASE("examples/throw_*: the flight's own tensor estimate, ratios within 1 % of the body file",
+          "[replay][examples][tensor]") {
+  const aloft::test::ThrowSpec spec = aloft::test::example_throw_spec();
+  const aloft::test::GeneratedThrow g = aloft::test::generate_throw(spec);
+  aloft::InertiaTensor<float> body;
+  REQUIRE(aloft::InertiaTensor<float>::make_from_tensor(spec.tensor_kg_m2.cast<float>(), body) ==
+          aloft::Status::ok);
+  const aloft::TensorEstimatorSettings<float> settings;
+  const aloft::Rotor<float> no_rotor;
+  aloft::TensorEstimator<float> estimator(settings, body, no_rotor);
+  estimator.start();
+  double previous_t = -1;
+  for (std::size_t i = 0; i < g.t_s.size(); ++i) {
+    if (g.t_s[i] < g.release_s || g.t_s[i] >= g.landing_s) continue;
+    const auto dt_us =
+        previous_t < 0 ? 0u : static_cast<std::uint32_t>(std::lround((g.t_s[i] - previous_t) * 1e6));
+    estimator.add(g.gyro_rad_s[i].cast<float>(), 0.0f, dt_us);
+    previous_t = g.t_s[i];
+  }
+  aloft::TensorEstimate<float> e;
+  estimator.finish(e);
+  REQUIRE(e.determined);
+  const aloft::Vec3<float>& m = body.principal_moments();
+  INFO("ratios " << e.ratio(0) << " " << e.ratio(1) << " against " << m(0) / m(2) << " " << m(1) / m(2));
+  CHECK(std::abs(e.ratio(0) / (m(0) / m(2)) - 1.0f) < 0.01f);
+  CHECK(std::abs(e.ratio(1) / (m(1) / m(2)) - 1.0f) < 0.01f);
 }

@@ -9,6 +9,10 @@
 #include <cmath>
 #include <filesystem>
 
+#include "common/body_file.hpp"
+#include "readers/imu_csv_reader.hpp"
+#include "replay/imu_csv_recording.hpp"
+#include "replay/replay_run.hpp"
 #include "run_aloft.hpp"
 #include "throw_generator.hpp"
 
@@ -33,6 +37,18 @@ Replayed replay(const ScratchDir& dir, const std::string& body_text, const std::
   REQUIRE(r.run.exit_code == 0);
   r.report = json::parse(aloft::test::read_file(report));
   return r;
+}
+
+// A refusal as every one is made: exit 2, one line holding each fragment, no report
+// (`report` not written), nothing on stdout.
+void check_refused(const aloft::test::RunResult& r, const std::string& report,
+                   std::initializer_list<std::string> fragments) {
+  INFO("stderr: " << r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(aloft::test::count_lines(r.err) == 1);
+  for (const std::string& fragment : fragments) CHECK(r.err.find(fragment) != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(report));
+  CHECK(r.out.empty());
 }
 
 }  // namespace
@@ -137,13 +153,8 @@ TEST_CASE("replay: bad input is one line naming the file and row, exit 2, no rep
   const std::string report = dir.path("report.json");
   const auto expect_refused = [&](const std::string& body, const std::string& csv,
                                   std::initializer_list<std::string> fragments) {
-    const auto r = run_aloft(dir, "replay --body '" + body + "' --imu '" + csv + "' --json '" + report + "'");
-    INFO("stderr: " << r.err);
-    CHECK(r.exit_code == 2);
-    CHECK(aloft::test::count_lines(r.err) == 1);
-    for (const std::string& fragment : fragments) CHECK(r.err.find(fragment) != std::string::npos);
-    CHECK_FALSE(std::filesystem::exists(report));
-    CHECK(r.out.empty());
+    check_refused(run_aloft(dir, "replay --body '" + body + "' --imu '" + csv + "' --json '" + report + "'"),
+                  report, fragments);
   };
   SECTION("no accelerometer columns") {
     expect_refused(good_body, dir.write("g.csv", "t,gx,gy,gz\n0,0,0,0\n0.001,0,0,0\n"),
@@ -221,4 +232,122 @@ TEST_CASE("replay: an off-centre accelerometer (imu.position given) still finds 
   CHECK(double(f.at("release_s")) <= g.release_s + 0.005);
   CHECK(std::abs(double(f.at("landing_s")) - g.landing_s) <= 0.005);
   CHECK(f.at("imu_position_from") == "body");
+}
+
+// A body's rotor and a log's rotor_rad_s go together (replay/rotor_match.hpp): either
+// without the other is refused with one line naming both files, exit 2, no report; a
+// column whose speed is 0 throughout is ignored with a warning.
+TEST_CASE("replay: a rotor without its speed, or a speed without a rotor, is refused",
+          "[replay][bad][rotor]") {
+  ScratchDir dir;
+  const aloft::test::ThrowSpec spec = aloft::test::rotor_throw_spec();
+  const aloft::test::GeneratedThrow with_rotor = aloft::test::generate_throw(spec);
+  aloft::test::ThrowSpec plain_spec = spec;
+  plain_spec.rotor.reset();
+  const aloft::test::GeneratedThrow plain = aloft::test::generate_throw(plain_spec);
+  const std::string rotor_body =
+      dir.write("wheel.json", aloft::test::body_json_text(spec.tensor_kg_m2, {}, spec.rotor));
+  const std::string plain_body = dir.write("plain.json", aloft::test::body_json_text(spec.tensor_kg_m2, {}));
+  const std::string rotor_csv = dir.write("wheel_log.csv", aloft::test::imu_csv_text(with_rotor));
+  const std::string plain_csv = dir.write("plain_log.csv", aloft::test::imu_csv_text(plain));
+  const std::string report = dir.path("report.json");
+  const auto run = [&](const std::string& body, const std::string& input) {
+    std::filesystem::remove(report);
+    return run_aloft(dir, "replay --body '" + body + "' " + input + " --json '" + report + "'");
+  };
+  const auto expect_refused = [&](const aloft::test::RunResult& r,
+                                  std::initializer_list<std::string> fragments) {
+    check_refused(r, report, fragments);
+  };
+  SECTION("a body with a rotor, a log without its speed") {
+    expect_refused(run(rotor_body, "--imu '" + plain_csv + "'"),
+                   {"wheel.json", "plain_log.csv", "rotor_rad_s", "torque"});
+  }
+  SECTION("a log with the speed, a body without a rotor") {
+    expect_refused(run(plain_body, "--imu '" + rotor_csv + "'"),
+                   {"plain.json", "wheel_log.csv", "rotor_rad_s", "\"rotor\""});
+  }
+  SECTION("a body with a rotor and a FIFO recording, which holds no rotor speed") {
+    // Two packets 3 of an ICM-42688-P at rest (SPEC §5), 1 ms apart: they decode.
+    std::string bytes;
+    for (const unsigned stamp : {1000u, 2000u}) {
+      const unsigned char packet[16] = {0x68,
+                                        0,
+                                        0,
+                                        0,
+                                        0,
+                                        0x08,
+                                        0,
+                                        0,
+                                        0,
+                                        0,
+                                        0,
+                                        0,
+                                        0,
+                                        0,
+                                        static_cast<unsigned char>(stamp >> 8u),
+                                        static_cast<unsigned char>(stamp)};
+      bytes.append(reinterpret_cast<const char*>(packet), sizeof packet);
+    }
+    const std::string fifo = dir.write("rest.bin", bytes);
+    expect_refused(run(rotor_body, "--fifo '" + fifo + "' --odr-hz 1000"),
+                   {"wheel.json", "rest.bin", "rotor"});
+    // The same bytes with the plain body decode and replay: the refusal is the rotor's.
+    CHECK(run(plain_body, "--fifo '" + fifo + "' --odr-hz 1000").exit_code == 0);
+  }
+  SECTION("a speed of 0 throughout and no rotor: the column is ignored, with a warning") {
+    aloft::test::GeneratedThrow stopped = plain;
+    stopped.rotor_rad_s.assign(plain.t_s.size(), 0.0);
+    const std::string csv = dir.write("stopped.csv", aloft::test::imu_csv_text(stopped));
+    const auto r = run(plain_body, "--imu '" + csv + "'");
+    INFO("stderr: " << r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(r.err.find("warning") != std::string::npos);
+    CHECK(r.err.find("stopped.csv") != std::string::npos);
+    CHECK(r.err.find("ignored") != std::string::npos);
+    // It replays as the log without the column does.
+    const json ignored = json::parse(aloft::test::read_file(report));
+    REQUIRE(run(plain_body, "--imu '" + plain_csv + "'").exit_code == 0);
+    CHECK(json::parse(aloft::test::read_file(report)).at("flights") == ignored.at("flights"));
+  }
+}
+
+// What `aloft replay` hands the pipeline of a body with a rotor and a log with its speed:
+// the rotor in the settings (float, unit axis) and each sample's speed, flagged.
+TEST_CASE("replay: the rotor and its speed reach the pipeline", "[replay][rotor]") {
+  ScratchDir dir;
+  aloft::test::ThrowSpec spec = aloft::test::rotor_throw_spec();
+  spec.rotor->axis = Eigen::Vector3d(0.0, 3.0, 4.0);  // normalised on reading
+  const aloft::test::GeneratedThrow g = aloft::test::generate_throw(spec);
+  const aloft::host::Body body = aloft::host::read_body_file(
+      dir.write("b.json", aloft::test::body_json_text(spec.tensor_kg_m2, {}, spec.rotor)));
+  const aloft::OnboardPipelineSettings<float> settings =
+      aloft::host::pipeline_settings(aloft::host::replay_settings_from_body(body));
+  CHECK(settings.rotor.present());
+  CHECK(settings.rotor.inertia_kg_m2 == 2e-5f);
+  CHECK(settings.rotor.axis.x() == 0.0f);
+  CHECK(settings.rotor.axis.y() == Approx(0.6f));
+  CHECK(settings.rotor.axis.z() == Approx(0.8f));
+  CHECK(std::abs(settings.rotor.axis.norm() - 1.0f) < 1e-7f);
+  const aloft::host::Recording recording = aloft::host::imu_csv_recording(
+      aloft::host::read_imu_csv(dir.write("r.csv", aloft::test::imu_csv_text(g))));
+  REQUIRE(recording.samples.size() == g.t_s.size());
+  CHECK(recording.has_rotor_speed);
+  CHECK(recording.max_abs_rotor_rad_s == Approx(800.0).epsilon(1.0 / 256.0));
+  for (std::size_t i = 0; i < g.t_s.size(); ++i) {
+    INFO("sample " << i);
+    CHECK(recording.samples[i].has_rotor_speed());
+    CHECK(recording.samples[i].rotor_rad_s == static_cast<float>(g.rotor_rad_s[i]));
+  }
+  // Without a rotor the settings have none, and a log without the column no speeds.
+  aloft::test::ThrowSpec plain = spec;
+  plain.rotor.reset();
+  CHECK_FALSE(aloft::host::pipeline_settings(
+                  aloft::host::replay_settings_from_body(aloft::host::read_body_file(
+                      dir.write("p.json", aloft::test::body_json_text(plain.tensor_kg_m2, {})))))
+                  .rotor.present());
+  const aloft::host::Recording without = aloft::host::imu_csv_recording(aloft::host::read_imu_csv(
+      dir.write("p.csv", aloft::test::imu_csv_text(aloft::test::generate_throw(plain)))));
+  CHECK_FALSE(without.has_rotor_speed);
+  for (const auto& sample : without.samples) CHECK_FALSE(sample.has_rotor_speed());
 }

@@ -1,10 +1,16 @@
-// Euler's torque-free equations in body axes: I dw/dt = (I w) x w.
+// Euler's equations in body axes: torque-free, I dw/dt = (I w) x w; with a rotor whose
+// momentum relative to the body is h (aloft/dynamics/rotor.hpp, SPEC §2),
+//   I dw/dt + w x (I w + h) = -dh/dt;
+// and the same integrated over an interval [t_a, t_b], which needs no derivative of a
+// measured rate (the tensor estimate, aloft/onboard/tensor_estimator.hpp):
+//   I (w_b - w_a) + ∫ w x (I w) dt + (h_b - h_a) + ∫ w x h dt = 0.
 // (The quaternion kinematics, dq/dt = 1/2 q * (0, w), live with each integrator.)
 #pragma once
 
 #include "aloft/dynamics/inertia_tensor.hpp"
 #include "aloft/dynamics/principal_frame.hpp"
 #include "aloft/dynamics/rigid_body_state.hpp"
+#include "aloft/dynamics/rotor.hpp"
 
 namespace aloft {
 
@@ -14,6 +20,38 @@ template <typename Scalar>
 inline Vec3<Scalar> angular_acceleration(const InertiaTensor<Scalar>& inertia,
                                          const Vec3<Scalar>& omega_body) {
   return inertia.inverse() * (inertia.tensor() * omega_body).cross(omega_body);
+}
+
+// dw/dt with a rotor's momentum h and its rate dh/dt (body axes).
+template <typename Scalar>
+inline Vec3<Scalar> angular_acceleration(const InertiaTensor<Scalar>& inertia, const Vec3<Scalar>& omega_body,
+                                         const Vec3<Scalar>& h, const Vec3<Scalar>& h_dot) {
+  return inertia.inverse() * ((inertia.tensor() * omega_body + h).cross(omega_body) - h_dot);
+}
+
+// ∫ w x (I w) dt from P = ∫ w w^T dt alone: (w x I w)_i = e_ijk w_j (I w)_k = e_ijk M_kj
+// with M = I P, so (w x I w)_x = M(2,1) - M(1,2) and its cyclic turns. The tensor enters
+// linearly and the rate only through P, so a stream of rates needs only P's six sums.
+template <typename Scalar>
+inline Vec3<Scalar> integrated_gyroscopic_torque(const Mat3<Scalar>& inertia, const Mat3<Scalar>& p) {
+  const Mat3<Scalar> m = inertia * p;
+  return Vec3<Scalar>(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1));
+}
+
+// The body's side of the integrated equations, I (w_b - w_a) + ∫ w x (I w) dt: zero over
+// any interval of torque-free flight.
+template <typename Scalar>
+inline Vec3<Scalar> integrated_body_torque(const Mat3<Scalar>& inertia, const Vec3<Scalar>& delta_omega,
+                                           const Mat3<Scalar>& p) {
+  return inertia * delta_omega + integrated_gyroscopic_torque(inertia, p);
+}
+
+// The rotor's side, (h_b - h_a) + ∫ w x h dt with h = J s axis: from the change of its
+// speed s and S = ∫ s w dt.
+template <typename Scalar>
+inline Vec3<Scalar> integrated_rotor_torque(const Rotor<Scalar>& rotor, Scalar delta_speed,
+                                            const Vec3<Scalar>& speed_omega_integral) {
+  return rotor.inertia_kg_m2 * (delta_speed * rotor.axis + speed_omega_integral.cross(rotor.axis));
 }
 
 // One classical RK4 step of the body rate alone (h may be negative), in body axes.

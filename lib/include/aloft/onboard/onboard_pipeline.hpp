@@ -23,11 +23,13 @@
 #include <optional>
 
 #include "aloft/cold_path.hpp"
+#include "aloft/dynamics/rotor.hpp"
 #include "aloft/sensor/imu_sample.hpp"
 #include "aloft/onboard/lever_arm_estimator.hpp"
 #include "aloft/onboard/onboard_check.hpp"
 #include "aloft/onboard/release_detector.hpp"
 #include "aloft/onboard/release_window.hpp"
+#include "aloft/onboard/tensor_estimator.hpp"
 #include "aloft/settings.hpp"
 #include "aloft/sensor/stream_clock.hpp"
 #include "aloft/sensor/whole_microseconds.hpp"
@@ -39,6 +41,7 @@ struct OnboardPipelineSettings {
   OnboardCheckSettings<Scalar> check = {};
   bool imu_position_known = false;
   Vec3<Scalar> imu_position_m = Vec3<Scalar>::Zero();
+  Rotor<Scalar> rotor = {};  // none by default (aloft/dynamics/rotor.hpp)
   std::uint32_t bridge_gap_up_to_us = 20000;
   std::uint32_t end_flight_after_gap_us = 200000;
   StreamClockSettings<Scalar> clock = {};
@@ -55,6 +58,7 @@ struct OnboardPipelineSettings {
   static void visit(Self& s, Visitor&& v) {
     visit_settings(s.check, v);
     visit_own(s, v);
+    visit_settings(s.rotor, v);
     visit_settings(s.clock, v);
     visit_settings(s.release, v);
     visit_settings(s.release_window, v);
@@ -164,6 +168,7 @@ struct FlightResult {
   // that restarted it), for its flight record.
   SeedSummary<Scalar> first_seeds[kept_first_seeds] = {};
   std::uint32_t first_seed_count = 0;
+  TensorEstimate<Scalar> tensor;  // the tensor the flight itself shows (aloft/onboard/tensor_estimator.hpp)
 };
 
 template <typename Scalar, int K>

@@ -8,6 +8,7 @@
 //     accelerometer reads, +9.81 m/s² up when it rests on a table, 0 in free fall when it
 //     sits at the centre of mass).
 //   - flags: what the source knows and the numbers cannot say (ImuSampleFlag bits).
+//   - rotor_rad_s: the speed of the body's rotor, where it has one and the source gives it.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +26,8 @@ enum ImuSampleFlag : std::uint8_t {
   // may be larger, so the sample is not a measurement of that axis.
   imu_gyro_clipped = 1u << 1,
   imu_accel_clipped = 1u << 2,
+  // The sample carries the rotor's speed (ImuSample::rotor_rad_s; aloft/dynamics/rotor.hpp).
+  imu_rotor_speed = 1u << 3,
 };
 
 template <typename Scalar>
@@ -33,8 +36,12 @@ struct ImuSample {
   Vec3<Scalar> gyro_rad_s = Vec3<Scalar>::Zero();
   Vec3<Scalar> accel_m_s2 = Vec3<Scalar>::Zero();
   std::uint8_t flags = 0;
+  // The body's rotor's speed relative to the body, rad/s (SPEC §3 rotor_rad_s), valid when
+  // flags has imu_rotor_speed.
+  Scalar rotor_rad_s = Scalar(0);
 
   bool gap_before() const { return (flags & imu_gap_before) != 0; }
+  bool has_rotor_speed() const { return (flags & imu_rotor_speed) != 0; }
   bool clipped() const { return (flags & (imu_gyro_clipped | imu_accel_clipped)) != 0; }
 };
 

@@ -1,0 +1,282 @@
+// The tensor a flight shows, from the normal equations of its pieces
+// (aloft/onboard/tensor_estimator.hpp keeps them as the samples come): the flight's end, a
+// cold path run once per flight. docs/tensor-estimate.md derives it and gives the
+// measurements behind its thresholds.
+//
+// The unknowns are the tensor's six entries scaled by a nominal moment,
+// theta = (Ixx, Iyy, Izz, Ixy, Ixz, Iyz) / scale; each piece of flight gave three rows
+// A theta = b of Euler's equations integrated over it, and the stream kept N = A^T A,
+// g = A^T b and b^T b.
+//  - Torque-free (no rotor, b = 0): the flight fixes theta up to its scale, as N's
+//    eigenvector of the smallest eigenvalue: principal ratios and axes.
+//  - With a rotor's known momentum in b: theta = N^-1 g, absolute moments.
+// Intervals: the rows' noise variance from the residuals (RSS / (rows - unknowns)), the
+// covariance of theta from it and N (pseudo-inverse orthogonal to theta when scale-free),
+// carried to ratios, moments and axes by the delta method (perturbation theory), 95 %
+// with Student's t for the residuals' degrees of freedom.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "aloft/cold_path.hpp"
+#include "aloft/dynamics/rotation.hpp"
+#include "aloft/dynamics/symmetric_eigen.hpp"
+
+namespace aloft {
+
+// Why an estimate is not determined (TensorEstimate::note).
+enum class TensorEstimateNote : std::uint8_t {
+  determined = 0,      // the flight fixes the ratios and the axes
+  too_short,           // too few pieces of flight
+  too_little_turning,  // the body hardly turned (a drop)
+  one_axis_spin,       // the rates do not fix the tensor: a spin about one principal axis
+  not_a_tensor,        // the fit is no physical tensor (not positive definite)
+};
+
+constexpr const char* describe(TensorEstimateNote n) {
+  switch (n) {
+    case TensorEstimateNote::determined: return "determined";
+    case TensorEstimateNote::too_short: return "too short: too few pieces of flight to fit the tensor";
+    case TensorEstimateNote::too_little_turning: return "too little turning to see the tensor (a drop?)";
+    case TensorEstimateNote::one_axis_spin:
+      return "the rates do not fix the tensor (a spin about one principal axis?)";
+    case TensorEstimateNote::not_a_tensor: return "the fit is not a physical tensor (not positive definite)";
+  }
+  return "unknown";
+}
+
+template <typename Scalar>
+struct TensorEstimate {
+  bool determined = false;
+  bool absolute = false;  // principal is in kg·m²: a rotor's known momentum gave the scale
+  TensorEstimateNote note = TensorEstimateNote::too_short;
+  // Principal moments, ascending: kg·m² when absolute, else scaled so that the largest is 1
+  // (principal(0), principal(1) are then the ratios I1/I3, I2/I3).
+  Vec3<Scalar> principal = Vec3<Scalar>::Zero();
+  Vec3<Scalar> principal_95 = Vec3<Scalar>::Zero();  // 95 % half-widths, when absolute
+  Scalar ratios_95[2] = {Scalar(0), Scalar(0)};      // 95 % half-widths of I1/I3, I2/I3
+  Quat<Scalar> axes = Quat<Scalar>::Identity();      // principal frame into body axes
+  Vec3<Scalar> axes_95_rad = Vec3<Scalar>::Zero();   // each principal axis held within (95 %)
+
+  Scalar ratio(int i) const { return principal(i) / principal(2); }
+};
+
+// What a flight's pieces left (aloft/onboard/tensor_estimator.hpp), in theta's scaled units:
+// the least-squares problem A theta = b in square-root form, R theta = z with R upper
+// triangular, each piece's rows rotated in as they come (Givens), and the residual sum of
+// squares those rotations leave. Not N = A^T A: summed in float, N keeps nothing of a
+// residual below 1e-7 of its largest eigenvalue, and a gyro's noise against a throw's
+// rates lies near 1e-8 (docs/tensor-estimate.md); R keeps the square root of that ratio.
+template <typename Scalar>
+struct TensorLeastSquares {
+  Scalar r[21] = {};                  // R's upper triangle, row by row
+  Scalar z[6] = {};                   // the right side, rotated with R
+  Scalar rss = Scalar(0);             // residual sum of squares of b's part
+  Scalar rate_squared_s = Scalar(0);  // sum over the pieces of ∫ |w|² dt, rad²/s
+  Scalar time_s = Scalar(0);          // the pieces' length together, s
+  std::uint16_t pieces = 0;
+  bool scaled = false;  // some piece had a rotor's momentum: b fixes the scale
+
+  // One row a theta = b, rotated into R.
+  void add_row(Scalar (&a)[6], Scalar b) {
+    int k = 0;  // r's index of R(i, i)
+    for (int i = 0; i < 6; k += 6 - i, ++i) {
+      if (!(std::abs(a[i]) > Scalar(0))) continue;
+      const Scalar rho = std::sqrt(r[k] * r[k] + a[i] * a[i]);
+      const Scalar c = r[k] / rho, s = a[i] / rho;
+      r[k] = rho;
+      for (int j = i + 1; j < 6; ++j) {
+        const Scalar rj = r[k + j - i];
+        r[k + j - i] = c * rj + s * a[j];
+        a[j] = c * a[j] - s * rj;
+      }
+      const Scalar zi = z[i];
+      z[i] = c * zi + s * b;
+      b = c * b - s * zi;
+    }
+    rss += b * b;
+  }
+  Eigen::Matrix<Scalar, 6, 6> r_matrix() const {
+    Eigen::Matrix<Scalar, 6, 6> m = Eigen::Matrix<Scalar, 6, 6>::Zero();
+    int k = 0;
+    for (int i = 0; i < 6; ++i)
+      for (int j = i; j < 6; ++j) m(i, j) = r[k++];
+    return m;
+  }
+};
+
+// What decides whether a flight determines the tensor (TensorEstimatorSettings holds them).
+template <typename Scalar>
+struct TensorDetermination {
+  std::uint16_t min_pieces;
+  Scalar min_rms_rate_rad_s;
+  Scalar max_relative_sd;
+};
+
+namespace detail {
+
+template <typename Scalar>
+using Vec6 = Eigen::Matrix<Scalar, 6, 1>;
+
+// The symmetric tensor of theta's six entries.
+template <typename Scalar>
+inline Mat3<Scalar> tensor_of(const Vec6<Scalar>& t) {
+  Mat3<Scalar> m;
+  m << t(0), t(3), t(4), t(3), t(1), t(5), t(4), t(5), t(2);
+  return m;
+}
+
+// Student's t 97.5 % quantile for nu degrees of freedom (Cornish-Fisher from the normal's
+// 1.96: 2.226 at nu = 10 against 2.228, exact to 1e-3 from nu = 15).
+template <typename Scalar>
+inline Scalar t_quantile_975(Scalar nu) {
+  return Scalar(1.959964) + Scalar(2.372403) / nu + Scalar(2.822618) / (nu * nu);
+}
+
+// The angle within which an axis is held (95 %) from the 2 x 2 covariance (a, b; b, d) of
+// its tilt: |tilt|² is a weighted sum of two chi-squares, taken as c chi²(nu) with the same
+// mean and variance (Satterthwaite), nu from 1 (one tilt) to 2 (round), whose 95 %
+// quantile runs from 3.841 to 5.991 (linear between them).
+template <typename Scalar>
+inline Scalar axis_angle_95(Scalar a, Scalar b, Scalar d, Scalar t_over_z) {
+  const Scalar sum = a + d, squares = a * a + d * d + Scalar(2) * b * b;
+  if (!(squares > Scalar(0))) return Scalar(0);
+  const Scalar c = squares / sum, nu = sum * sum / squares;
+  const Scalar q = Scalar(3.841459) + (nu - Scalar(1)) * Scalar(5.991465 - 3.841459);
+  return std::sqrt(c * q) * t_over_z;
+}
+
+// The covariance of theta, carried to the figures by first-order perturbation theory of
+// the tensor's eigen-decomposition I = V diag(m) V^T (the delta method, its Jacobian
+// exact): along a direction d of theta, with M = V^T I(d) V, the moments move by M_ii and
+// principal axis i turns towards axis j by M_ji / (m_i - m_j). theta's covariance is
+// sum_k weight[k] v_k v_k^T over N's eigenvectors v_k, so each v_k is one such direction.
+// (A central difference in float, h = eps^(1/3), mixed the axes of moments within 0.5 %
+// of each other and got some intervals 3 times too narrow.)
+template <typename Scalar>
+ALOFT_COLD inline void propagate(const Vec6<Scalar>& theta, const Eigen::Matrix<Scalar, 6, 6>& vectors,
+                                 const Vec6<Scalar>& weight, Scalar t, TensorEstimate<Scalar>& out) {
+  Vec3<Scalar> m;
+  Mat3<Scalar> axes;
+  symmetric_eigen_decomposition(tensor_of(theta), m, axes);
+  Scalar var[5] = {};
+  Mat3<Scalar> tilt = Mat3<Scalar>::Zero();
+  for (int k = 0; k < 6; ++k) {
+    if (!(weight(k) > Scalar(0))) continue;
+    const Mat3<Scalar> d = axes.transpose() * tensor_of<Scalar>(vectors.col(k)) * axes;
+    const Scalar u[5] = {(d(0, 0) * m(2) - m(0) * d(2, 2)) / (m(2) * m(2)),
+                         (d(1, 1) * m(2) - m(1) * d(2, 2)) / (m(2) * m(2)), d(0, 0), d(1, 1), d(2, 2)};
+    for (int i = 0; i < 5; ++i) var[i] += weight(k) * u[i] * u[i];
+    const Vec3<Scalar> phi(d(2, 1) / (m(1) - m(2)), d(0, 2) / (m(2) - m(0)), d(1, 0) / (m(0) - m(1)));
+    tilt += weight(k) * phi * phi.transpose();
+  }
+  out.ratios_95[0] = t * std::sqrt(var[0]);
+  out.ratios_95[1] = t * std::sqrt(var[1]);
+  for (int i = 0; i < 3; ++i) out.principal_95(i) = t * std::sqrt(var[2 + i]);
+  const Scalar t_over_z = t / Scalar(1.959964);
+  out.axes_95_rad(0) = axis_angle_95(tilt(1, 1), tilt(1, 2), tilt(2, 2), t_over_z);
+  out.axes_95_rad(1) = axis_angle_95(tilt(0, 0), tilt(0, 2), tilt(2, 2), t_over_z);
+  out.axes_95_rad(2) = axis_angle_95(tilt(0, 0), tilt(0, 1), tilt(1, 1), t_over_z);
+  out.axes = Quat<Scalar>(axes).normalized();
+  out.principal = m;
+}
+
+// Singular values of R (square roots of N's eigenvalues) below this fraction of its
+// largest are rounding, not information. One-sided Jacobi gets them to about eps of the
+// largest: noise-free spins about each principal axis left the second smallest at 1.05 eps
+// in float and 1.0 eps in double at most, where noise-free throws held it at 0.03-0.27,
+// and a spin wobbling 0.2 % off its axis at 9e-5 (docs/tensor-estimate.md). 64 eps lies
+// far from both.
+template <typename Scalar>
+constexpr Scalar rounding_floor() {
+  return Scalar(64) * std::numeric_limits<Scalar>::epsilon();
+}
+
+// Theta and the weights of its covariance along N's eigenvectors (ascending eigenvalues
+// `values`). Scale-free: theta is the first eigenvector, |theta| = 1, and its residual
+// sum of squares the first eigenvalue; false when the gap to the second leaves theta's
+// weakest direction more than max_relative_sd uncertain.
+template <typename Scalar>
+inline bool solve_scale_free(const Vec6<Scalar>& values, const Eigen::Matrix<Scalar, 6, 6>& vectors,
+                             Scalar rows, Scalar max_relative_sd, Vec6<Scalar>& theta, Vec6<Scalar>& weight,
+                             Scalar& dof) {
+  dof = rows - Scalar(5);
+  theta = vectors.col(0);
+  if (theta.template head<3>().sum() < Scalar(0)) theta = -theta;  // a positive trace
+  const Scalar variance = values(0) / dof;
+  weight(0) = Scalar(0);  // theta's own direction: its scale, which nothing fixes
+  for (int k = 1; k < 6; ++k) {
+    const Scalar gap = values(k) - values(0);
+    weight(k) =
+        gap > Scalar(0) ? variance * values(k) / (gap * gap) : std::numeric_limits<Scalar>::infinity();
+  }
+  const Scalar floor = rounding_floor<Scalar>();
+  return values(1) > floor * floor * values(5) && std::sqrt(weight(1)) <= max_relative_sd;
+}
+
+// With the scale: theta = N^-1 g from R's decomposition (x: R's columns rotated, x_k = R v_k),
+// the residual sum of squares as the rotations left it.
+template <typename Scalar>
+inline bool solve_scaled(const TensorLeastSquares<Scalar>& ls, const Vec6<Scalar>& values,
+                         const Eigen::Matrix<Scalar, 6, 6>& vectors, const Eigen::Matrix<Scalar, 6, 6>& x,
+                         Scalar max_relative_sd, Vec6<Scalar>& theta, Vec6<Scalar>& weight, Scalar& dof) {
+  dof = Scalar(3) * Scalar(ls.pieces) - Scalar(6);
+  const Vec6<Scalar> z = Eigen::Map<const Vec6<Scalar>>(ls.z);
+  const Scalar variance = ls.rss / dof;
+  theta.setZero();
+  for (int k = 0; k < 6; ++k) {
+    if (!(values(k) > Scalar(0))) {
+      weight(k) = std::numeric_limits<Scalar>::infinity();
+      continue;
+    }
+    theta += vectors.col(k) * (x.col(k).dot(z) / values(k));
+    weight(k) = variance / values(k);
+  }
+  const Scalar floor = rounding_floor<Scalar>();
+  return values(0) > floor * floor * values(5) && std::sqrt(weight(0)) <= max_relative_sd * theta.norm();
+}
+
+}  // namespace detail
+
+// The estimate from a flight's least-squares problem; `scale` is theta's unit in kg·m².
+template <typename Scalar>
+ALOFT_COLD inline void estimate_tensor(const TensorLeastSquares<Scalar>& ls, Scalar scale,
+                                       const TensorDetermination<Scalar>& d, TensorEstimate<Scalar>& out) {
+  out = TensorEstimate<Scalar>();
+  if (ls.pieces < d.min_pieces) return;  // too_short
+  if (!(ls.rate_squared_s > d.min_rms_rate_rad_s * d.min_rms_rate_rad_s * ls.time_s)) {
+    out.note = TensorEstimateNote::too_little_turning;
+    return;
+  }
+  Eigen::Matrix<Scalar, 6, 6> x = ls.r_matrix(), vectors;
+  detail::Vec6<Scalar> values, theta, weight;
+  gram_eigen_decomposition(x, values, vectors);
+  Scalar dof = Scalar(0);
+  const bool solved =
+      ls.scaled ? detail::solve_scaled(ls, values, vectors, x, d.max_relative_sd, theta, weight, dof)
+                : detail::solve_scale_free(values, vectors, Scalar(3) * Scalar(ls.pieces), d.max_relative_sd,
+                                           theta, weight, dof);
+  if (!solved) {
+    out.note = TensorEstimateNote::one_axis_spin;
+    return;
+  }
+  detail::propagate(theta, vectors, weight, detail::t_quantile_975(dof), out);
+  if (!(out.principal(0) > Scalar(0))) {
+    out.note = TensorEstimateNote::not_a_tensor;
+    return;
+  }
+  out.determined = true;
+  out.note = TensorEstimateNote::determined;
+  out.absolute = ls.scaled;
+  if (out.absolute) {
+    out.principal *= scale;
+    out.principal_95 *= scale;
+  } else {
+    out.principal /= out.principal(2);
+    out.principal_95.setZero();
+  }
+}
+
+}  // namespace aloft

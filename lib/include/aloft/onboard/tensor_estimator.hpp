@@ -1,0 +1,256 @@
+// The tensor a flight itself shows, estimated as it flies, in O(1) memory and O(1) work per
+// sample. Euler's equations integrated over a piece [t_a, t_b] of the flight
+// (aloft/dynamics/euler_equations.hpp),
+//   I (w_b - w_a) + ∫ w x (I w) dt = -(h_b - h_a) - ∫ w x h dt,
+// are linear in the tensor's six entries and need no derivative of the gyro. Per sample the
+// estimator adds the six products w_i w_j (and, with a rotor, its speed times w) to the
+// open piece's integrals (the trapezoid rule); at a piece's end it forms the piece's three
+// rows and rotates them into the flight's least-squares problem
+// (aloft/onboard/tensor_estimate.hpp), which at the flight's end gives the estimate.
+//  - The rows are in rate units: multiplied by the nominal tensor's inverse (the body
+//    file's, which the pipeline checks the flight against), so that a row's noise, the
+//    gyro's at the piece's two ends, is about the same on each axis whatever the body.
+//  - Pieces do not share samples, and the next piece starts a few noise correlation times
+//    (the gyro filter's time constant) after the last one ended: the pieces' residuals are
+//    then independent, which the intervals assume.
+// docs/tensor-estimate.md has the derivation and the measurements behind the settings.
+#pragma once
+
+#include <cstdint>
+
+#include "aloft/cold_path.hpp"
+#include "aloft/dynamics/euler_equations.hpp"
+#include "aloft/dynamics/inertia_tensor.hpp"
+#include "aloft/dynamics/rotor.hpp"
+#include "aloft/onboard/tensor_estimate.hpp"
+#include "aloft/settings.hpp"
+
+namespace aloft {
+
+template <typename Scalar>
+struct TensorEstimatorSettings {
+  std::uint32_t piece_us = 40000;
+  std::uint32_t gyro_filter_us = 640;
+  std::uint16_t min_pieces = 4;
+  Scalar min_rms_rate_rad_s = Scalar(2);
+  Scalar max_relative_sd = Scalar(0.05);
+
+  // The one list of these settings (aloft/settings.hpp).
+  template <typename Self, typename Visitor>
+  static void visit(Self& s, Visitor&& v) {
+    v(s.piece_us, [] {
+      return SettingInfo{"tensor.piece_us", "µs",
+                         "pieces over which Euler's equations are integrated. Chosen among 10-80 ms on "
+                         "generated flights (seeds 1-300, docs/tensor-estimate.md): 40 ms narrowed the "
+                         "ratios' intervals from 0.17 % (20 ms) to 0.13 % and covered 97 %; 80 ms lost short "
+                         "flights"};
+    });
+    v(s.gyro_filter_us, [] {
+      return SettingInfo{"tensor.gyro_filter_us", "µs",
+                         "time constant of the gyro's first-order low-pass, 0 for none: the ICM-42688-P's UI "
+                         "filter at ODR/4 = 250 Hz, as aloft's driver sets it at 1 kHz. Sets the filter's "
+                         "correction and the waits after a release (8 of it) and between pieces (3). A "
+                         "property of the firmware"};
+    });
+    v(s.min_pieces, [] {
+      return SettingInfo{"tensor.min_pieces", "pieces",
+                         "fewer pieces: too short to estimate the tensor. 4: 6 degrees of freedom at least "
+                         "for the residuals' variance (Student's t at most 2.45). Not swept"};
+    });
+    v(s.min_rms_rate_rad_s, [] {
+      return SettingInfo{"tensor.min_rms_rate_rad_s", "rad/s",
+                         "the pieces' rms rate below which the body turned too little (a drop, whose rows "
+                         "are noise alone). Not swept: throws turn at 5-30 rad/s"};
+    });
+    v(s.max_relative_sd, [] {
+      return SettingInfo{"tensor.max_relative_sd", "",
+                         "the tensor's weakest direction may be this uncertain (standard deviation relative "
+                         "to it); more: the rates do not fix it (a spin about one axis). Chosen among "
+                         "0.02-0.1 on the same seeds: 0.1 kept 2 % more flights and covered up to 2 % less"};
+    });
+  }
+};
+
+// The next piece starts this many gyro filter time constants after the last one ended:
+// behind a first-order low-pass the noise is correlated e^(-t/tau), so the two pieces'
+// residuals correlate by about -e^-3 / 2 = -2.5 %, which leaves a variance 5 % small, and
+// their intervals 2.5 % narrow, against independent pieces (derived).
+constexpr std::uint32_t piece_gap_filter_times = 3;
+// After a release or a break the first piece starts this many filter time constants in:
+// a hand's torque that stops at the release leaves the filtered rate a transient
+// e^(-t/tau) off a torque-free motion, which enters the first piece's equations to first
+// order in tau. Noise-free throws behind a 0.5 ms filter at 2 kHz (tests/core/
+// test_tensor_estimator.cpp): ratios 1.5e-3 off without the wait, 1.6e-4 after 5 time
+// constants, 4e-6 after 12; e^-8 leaves 3e-4 of the transient.
+constexpr std::uint32_t settle_filter_times = 8;
+
+template <typename Scalar>
+class TensorEstimator {
+ public:
+  TensorEstimator(const TensorEstimatorSettings<Scalar>& settings, const InertiaTensor<Scalar>& nominal,
+                  const Rotor<Scalar>& rotor)
+      : settings_(&settings), nominal_(&nominal), rotor_(&rotor) {}
+
+  // A new flight.
+  void start() {
+    ls_ = TensorLeastSquares<Scalar>();
+    phase_ = Phase::idle;
+  }
+
+  // One airborne sample: the body rate (body axes), the rotor's speed relative to the body
+  // (0 without one), and the time since the sample before (not read after start() or
+  // interrupt()).
+  void add(const Vec3<Scalar>& w, Scalar rotor_speed, std::uint32_t dt_us) {
+    if (phase_ == Phase::idle) {
+      // The filters start here: the first piece waits for their transient.
+      speed_f_ = rotor_speed;
+      omega_prev_ = w;
+      elapsed_us_ = 0;
+      phase_ = Phase::settle;
+      return;
+    }
+    const Scalar dt = static_cast<Scalar>(dt_us) * Scalar(1e-6);
+    const Scalar tau = static_cast<Scalar>(settings_->gyro_filter_us) * Scalar(1e-6);
+    // The rotor's speed through a filter like the gyro's, so that both lag alike.
+    const Scalar speed_before = speed_f_;
+    speed_f_ += (dt / (tau + dt)) * (rotor_speed - speed_f_);
+    const bool first_step = elapsed_us_ == 0;
+    elapsed_us_ += dt_us;
+    if (phase_ != Phase::piece) {
+      omega_prev_ = w;
+      const std::uint32_t filter_times = phase_ == Phase::gap ? piece_gap_filter_times : settle_filter_times;
+      if (elapsed_us_ >= filter_times * settings_->gyro_filter_us) start_piece(w);
+      return;
+    }
+    // The filter's own term over this interval (docs/tensor-estimate.md): the true rate is
+    // w + tau (w - w_before) / dt, which adds tau (tau + dt) ∫ w_dot w_dot^T dt to the
+    // gyroscopic integral, w_dot from the difference (midpoint rule).
+    const Vec3<Scalar> dw = w - omega_prev_;
+    const Scalar ds = speed_f_ - speed_before;
+    omega_prev_ = w;
+    integrate(dw, ds, tau * (tau + dt) / dt);
+    // Trapezoid rule on the rates: each sample weighs dt, the piece's first and last half
+    // of theirs (exact on evenly spaced samples, without keeping the sample before), and
+    // Euler-Maclaurin's end correction -dt²/12 (f'(t_b) - f'(t_a)), f' from the first and
+    // last differences: the trapezoid's error goes from (dt Ω)² to (dt Ω)⁴ at no cost per
+    // sample (a throw at 28 rad/s sampled at 1 kHz: ratios 1.6e-4 off without it).
+    if (first_step) {
+      integrate(omega_a_, speed_a_, Scalar(0.5) * dt);
+      integrate_slope(omega_a_, dw, speed_a_, ds, dt / Scalar(12));
+    }
+    integrate(w, speed_f_, dt);
+    if (elapsed_us_ >= settings_->piece_us) {
+      integrate(w, speed_f_, Scalar(-0.5) * dt);
+      integrate_slope(w, dw, speed_f_, ds, -dt / Scalar(12));
+      close_piece(w, speed_f_);
+    }
+  }
+
+  // The samples break here (a gap, a clipped gyro, a rotor speed missing): the open piece
+  // is dropped and the next sample starts a new one.
+  void interrupt() { phase_ = Phase::idle; }
+
+  // The flight's estimate (cold: once per flight).
+  ALOFT_COLD void finish(TensorEstimate<Scalar>& out) const {
+    const TensorDetermination<Scalar> d{settings_->min_pieces, settings_->min_rms_rate_rad_s,
+                                        settings_->max_relative_sd};
+    estimate_tensor(ls_, nominal_scale(), d, out);
+  }
+
+  const TensorLeastSquares<Scalar>& least_squares() const { return ls_; }
+
+ private:
+  enum class Phase : std::uint8_t {
+    idle,    // the next sample starts the filters
+    settle,  // waiting for the filters' transient after a start or a break
+    piece,   // integrating a piece
+    gap,     // between pieces
+  };
+
+  // theta's unit: the nominal tensor's mean moment.
+  Scalar nominal_scale() const { return nominal_->tensor().trace() / Scalar(3); }
+
+  void start_piece(const Vec3<Scalar>& w) {
+    phase_ = Phase::piece;
+    elapsed_us_ = 0;
+    omega_a_ = w;
+    omega_prev_ = w;
+    speed_a_ = speed_f_;
+    for (Scalar& p : products_) p = Scalar(0);
+    speed_omega_.setZero();
+  }
+
+  void integrate(const Vec3<Scalar>& w, Scalar rotor_speed, Scalar weight) {
+    const Vec3<Scalar> ww = weight * w;
+    products_[0] += ww.x() * w.x();
+    products_[1] += ww.y() * w.y();
+    products_[2] += ww.z() * w.z();
+    products_[3] += ww.x() * w.y();
+    products_[4] += ww.x() * w.z();
+    products_[5] += ww.y() * w.z();
+    speed_omega_ += rotor_speed * ww;
+  }
+
+  // weight (dw w^T + w dw^T) and weight (ds w + s dw): dt² f' of the integrands, times
+  // weight / dt.
+  void integrate_slope(const Vec3<Scalar>& w, const Vec3<Scalar>& dw, Scalar rotor_speed, Scalar ds,
+                       Scalar weight) {
+    const Vec3<Scalar> a = weight * w, b = weight * dw;
+    products_[0] += Scalar(2) * a.x() * dw.x();
+    products_[1] += Scalar(2) * a.y() * dw.y();
+    products_[2] += Scalar(2) * a.z() * dw.z();
+    products_[3] += a.x() * dw.y() + b.x() * w.y();
+    products_[4] += a.x() * dw.z() + b.x() * w.z();
+    products_[5] += a.y() * dw.z() + b.y() * w.z();
+    speed_omega_ += ds * a + rotor_speed * b;
+  }
+
+  // The piece's three rows: column m is the body's side of the integrated equations for
+  // the m-th unit tensor (theta's entries), the right side the rotor's.
+  ALOFT_OUT_OF_LINE void close_piece(const Vec3<Scalar>& w_b, Scalar speed_b) {
+    Mat3<Scalar> p;
+    p << products_[0], products_[3], products_[4], products_[3], products_[1], products_[5], products_[4],
+        products_[5], products_[2];
+    const Vec3<Scalar> delta_omega = w_b - omega_a_;
+    const Mat3<Scalar>& to_rates = nominal_->inverse();
+    const Scalar scale = nominal_scale();
+    Eigen::Matrix<Scalar, 3, 6> a;
+    for (int m = 0; m < 6; ++m) {
+      Mat3<Scalar> unit = Mat3<Scalar>::Zero();
+      const int i = m < 3 ? m : (m == 5 ? 1 : 0), j = m < 3 ? m : (m == 3 ? 1 : 2);
+      unit(i, j) = unit(j, i) = Scalar(1);
+      a.col(m) = scale * (to_rates * integrated_body_torque(unit, delta_omega, p));
+    }
+    Vec3<Scalar> b = Vec3<Scalar>::Zero();
+    if (rotor_->present()) {
+      b = -(to_rates * integrated_rotor_torque(*rotor_, speed_b - speed_a_, speed_omega_));
+      if (b.squaredNorm() > Scalar(0)) ls_.scaled = true;
+    }
+    for (int r = 0; r < 3; ++r) {
+      Scalar row[6];
+      for (int m = 0; m < 6; ++m) row[m] = a(r, m);
+      ls_.add_row(row, b(r));
+    }
+    ls_.rate_squared_s += products_[0] + products_[1] + products_[2];
+    ls_.time_s += static_cast<Scalar>(elapsed_us_) * Scalar(1e-6);
+    ++ls_.pieces;
+    phase_ = Phase::gap;
+    elapsed_us_ = 0;
+  }
+
+  const TensorEstimatorSettings<Scalar>* settings_;
+  const InertiaTensor<Scalar>* nominal_;
+  const Rotor<Scalar>* rotor_;
+  TensorLeastSquares<Scalar> ls_;
+  // The open piece: its first sample, and the integrals so far.
+  Vec3<Scalar> omega_a_ = Vec3<Scalar>::Zero();
+  Scalar speed_a_ = Scalar(0);
+  Scalar products_[6] = {};                          // ∫ w_i w_j dt: xx yy zz xy xz yz
+  Vec3<Scalar> speed_omega_ = Vec3<Scalar>::Zero();  // ∫ s w dt
+  Vec3<Scalar> omega_prev_ = Vec3<Scalar>::Zero();   // the sample before
+  Scalar speed_f_ = Scalar(0);                       // the rotor's speed, filtered
+  std::uint32_t elapsed_us_ = 0;                     // in the open piece, or since the last one ended
+  Phase phase_ = Phase::idle;
+};
+
+}  // namespace aloft
