@@ -87,6 +87,24 @@ struct OneWayEquivalence {
                 const Eigen::Quaterniond& sensor_to_body) = nullptr;
 };
 
+// Parameters each flight of a pooled fit has of its own, beside its initial rate, where the
+// physics shares only part of an effect: a wheel's axis is the body's, while each throw
+// starts and speeds its motor its own way. The pooled fit (3_fit/fit_setup.hpp) shares the
+// first `shared_count` entries of theta's parameterisation; each flight's local block is
+// its rate then `count` own parameters, and `theta_of` makes that flight's theta (the
+// descriptor's `parameter_count` entries, what the model and the report read). own(0) is
+// the flight's scale of the shared part (theta_of scales it by exp(own(0))), which the
+// shared part could take up as well: the
+// session's first flight has it pinned at 0 (the shared part is that flight's), so the
+// shared part is fixed by the data. Used for the effect alone, not in a compound model.
+struct FlightOwnParameters {
+  int count = 0;  // 0: the flights share every parameter
+  int shared_count = 0;
+  Eigen::VectorXd (*theta_of)(const Eigen::VectorXd& shared, const Eigen::VectorXd& own) = nullptr;
+  // A flight's own parameters that, with `shared`, come nearest to `theta` (a start).
+  Eigen::VectorXd (*own_of)(const Eigen::VectorXd& theta, const Eigen::VectorXd& shared) = nullptr;
+};
+
 struct EffectDescriptor {
   const char* name = nullptr;  // the SPEC §4 name, also the report's
   // Parameters in theta (flight_model.hpp), scaled so that a unit change moves the
@@ -129,6 +147,8 @@ struct EffectDescriptor {
   // nullptr: every parameter.
   int (*shared_part)(const Eigen::VectorXd& theta, const Eigen::MatrixXd& covariance, Eigen::VectorXd& part,
                      Eigen::MatrixXd& part_covariance) = nullptr;
+  // What each flight of a pooled fit has of its own (count 0: nothing but its rate).
+  FlightOwnParameters flight_own{};
   // Effects a gyro alone cannot tell from this one whatever the flight (SPEC §4), padded
   // with `none`.
   std::array<Effect, 2> gyro_equivalents{};

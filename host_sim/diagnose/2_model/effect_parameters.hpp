@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "diagnose/2_model/nominal_inertia.hpp"
 
@@ -36,10 +37,26 @@ struct EffectParameters {
   double spin_up_start_s = 0.0, spin_up_time_constant_s = 0.0, spin_up_end_s = 0.0;
   // h at spin_up_end_s.
   Eigen::Vector3d spin_up_h_at_end() const {
-    if (!(spin_up_end_s > 0.0)) return vector;
-    const double u = spin_up_end_s - spin_up_start_s;
+    return spin_up_h_at(vector, spin_up_start_s, spin_up_time_constant_s, spin_up_end_s);
+  }
+  // A session's pooled fit, which shares the wheel's axis only: each flight's own profile
+  // (empty: one flight, or a fit that shares every parameter). The fields above are then
+  // the longest flight's (set by the flow with the flights' ends).
+  struct SpinUpFlight {
+    Eigen::Vector3d final_h = Eigen::Vector3d::Zero();
+    double start_s = 0.0, time_constant_s = 0.0, end_s = 0.0;
+    Eigen::Vector3d h_at_end() const { return spin_up_h_at(final_h, start_s, time_constant_s, end_s); }
+  };
+  std::vector<SpinUpFlight> spin_up_flights;
+
+  // h of a first-order spin-up to `final_h` from `start_s` with `time_constant_s`, at `end_s`
+  // (0: unknown, read as the final h).
+  static Eigen::Vector3d spin_up_h_at(const Eigen::Vector3d& final_h, double start_s, double time_constant_s,
+                                      double end_s) {
+    if (!(end_s > 0.0)) return final_h;
+    const double u = end_s - start_s;
     return u <= 0.0 ? Eigen::Vector3d::Zero()
-                    : Eigen::Vector3d((1.0 - std::exp(-u / spin_up_time_constant_s)) * vector);
+                    : Eigen::Vector3d((1.0 - std::exp(-u / time_constant_s)) * final_h);
   }
 };
 

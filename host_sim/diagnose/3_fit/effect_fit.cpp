@@ -1,5 +1,6 @@
 #include "diagnose/3_fit/effect_fit.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -25,9 +26,21 @@ LeastSquaresResult lower_from_readings(const FitSetup& setup, const ArrowProblem
   if (read_off == nullptr) return fitted;
   std::vector<const Flight*> flights;
   for (const FlightData& d : *setup.data) flights.push_back(d.flight);
-  Eigen::VectorXd start(fitted.shared.size());
-  start << base, read_off(flights, *setup.nominal);
-  const std::vector<Eigen::VectorXd> rates = rates_read_at_reference(setup);
+  Eigen::VectorXd whole(base.size() + effect_parameter_count(setup.effect));
+  whole << base, read_off(flights, *setup.nominal);
+  Eigen::VectorXd start = whole.head(problem.shared_count);
+  std::vector<Eigen::VectorXd> rates = rates_read_at_reference(setup);
+  // Each flight's own parameters (FitSetup::own) read off its own readings, the shared
+  // part scaled to the first flight's (whose scale the fit pins at 0).
+  if (const FlightOwnParameters* own = setup.own()) {
+    for (std::size_t i = 0; i < flights.size(); ++i) {
+      const Eigen::VectorXd its = flights.size() > 1 ? read_off({flights[i]}, *setup.nominal) : whole;
+      rates[i].tail(own->count) = own->own_of(its, start);
+    }
+    const double first = rates[0](3);
+    start *= std::exp(first);
+    for (Eigen::VectorXd& local : rates) local(3) -= first;
+  }
   if (!(cost_at(problem, start, rates) < fitted.cost)) return fitted;
   LeastSquaresResult again = minimise(problem, start, rates, solution_options(setup));
   return again.cost < fitted.cost ? again : fitted;
@@ -50,7 +63,8 @@ EffectFit fit_effect(Effect effect, const NominalInertia& nominal, const std::ve
   const std::vector<Eigen::VectorXd> rates = starting_rates(setup, nominal_fit, theta);
   const StartGrid* grid = describe(effect).start_grid;
   if (!seeded && grid != nullptr) return fit_from_start_grid(setup, problem, *grid, rates, p);
-  LeastSquaresResult fitted = minimise(problem, theta, rates, solution_options(setup));
+  LeastSquaresResult fitted =
+      minimise(problem, theta.head(problem.shared_count), rates, solution_options(setup));
   if (!seeded) fitted = lower_from_readings(setup, problem, std::move(fitted), Eigen::VectorXd());
   return result_of(setup, fitted, p);
 }

@@ -8,10 +8,23 @@ EffectModel model_of(const EffectFit& fit, const NominalInertia& nominal, std::s
   return model;
 }
 
+const Eigen::VectorXd& flight_theta(const EffectFit& fit, std::size_t index) {
+  if (index < fit.flights.size() && fit.flights[index].own.size() > 0) return fit.flights[index].theta;
+  return fit.theta;
+}
+
+Eigen::VectorXd local_of(const EffectFit& fit, std::size_t index) {
+  const FlightState& state = fit.flights[index];
+  Eigen::VectorXd local(3 + state.own.size());
+  local << state.omega_ref, state.own;
+  return local;
+}
+
 void predict(const EffectFit& fit, const NominalInertia& nominal, std::size_t index, const Flight& flight,
              std::vector<Eigen::Vector3d>& readings) {
   const FlightState& state = fit.flights[index];
-  predict_readings(model_of(fit, nominal, index), flight, state.ref, state.omega_ref, fit.theta, readings);
+  predict_readings(model_of(fit, nominal, index), flight, state.ref, state.omega_ref,
+                   flight_theta(fit, index), readings);
 }
 
 double weighted_squares(const FlightData& data, const std::vector<Eigen::Vector3d>& readings,

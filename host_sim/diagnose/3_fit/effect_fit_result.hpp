@@ -22,6 +22,9 @@ struct FlightState {
   std::size_t ref = 0;  // sample whose body rate is omega_ref
   Eigen::Vector3d omega_ref = Eigen::Vector3d::Zero();
   double impulse_time_s = 0.0;  // impulse only
+  // Its own effect parameters in a pooled fit (FlightOwnParameters; empty: none), and the
+  // theta they make with the shared ones: what the flight is predicted with.
+  Eigen::VectorXd own, theta;
 };
 
 // Another minimum of a searched parameter (the impulse time, the damping rotor's start),
@@ -45,7 +48,10 @@ struct SolutionLinearisation;
 struct EffectFit {
   Effect effect = Effect::none;
   std::vector<Effect> base;  // a compound model: effects fitted with `effect` (flight_model.hpp)
-  Eigen::VectorXd theta;     // effect parameters, shared by the flights (see flight_model.hpp)
+  // Effect parameters, shared by the flights (see flight_model.hpp); where each flight has
+  // parameters of its own (FlightState::own), the first flight's theta, whose leading
+  // entries are the shared ones.
+  Eigen::VectorXd theta;
   std::vector<FlightState> flights;
   double cost = 0.0;       // weighted sum of squared training residuals
   int residual_count = 0;  // training residuals (3 per sample)
@@ -81,6 +87,12 @@ struct SolutionLinearisation {
 
 // The model of `fit` for flight `index` (impulse time included).
 EffectModel model_of(const EffectFit& fit, const NominalInertia& nominal, std::size_t index);
+
+// The theta flight `index` of `fit` is predicted with.
+const Eigen::VectorXd& flight_theta(const EffectFit& fit, std::size_t index);
+
+// Flight `index`'s local block of the fit: its rate, then its own parameters.
+Eigen::VectorXd local_of(const EffectFit& fit, std::size_t index);
 
 // Predicted readings of flight `index` under `fit`.
 void predict(const EffectFit& fit, const NominalInertia& nominal, std::size_t index, const Flight& flight,

@@ -21,7 +21,17 @@ namespace aloft::host::diagnose {
 Eigen::Vector3d starting_rate(const FlightData& data, std::size_t ref, const EffectFit* nominal_fit,
                               std::size_t index, const NominalInertia& nominal);
 
+// A flight's local block: `rate`, then, where each flight has parameters of its own
+// (FitSetup::own), those nearest `theta` (a whole theta; else zeros).
+Eigen::VectorXd with_own(const FitSetup& setup, const Eigen::Vector3d& rate, const Eigen::VectorXd& theta);
+
+// Each flight's theta in `fit` (FlightState::theta) from the shared parameters (the leading
+// ones of `shared`) and its own, and fit.theta the first flight's; nothing where the
+// flights share every parameter.
+void set_flight_thetas(const FitSetup& setup, const Eigen::VectorXd& shared, EffectFit& fit);
+
 // The least-squares problem of `setup`'s flights with `shared_count` effect parameters
+// (of which each flight's own are moved to its local block, FitSetup::own)
 // (flight_jacobian.hpp gives its Jacobian where it can); `setup` must outlive it.
 ArrowProblem problem_of(const FitSetup& setup, int shared_count);
 

@@ -7,6 +7,23 @@ using Vec3 = Eigen::Vector3d;
 
 }  // namespace
 
+const FlightOwnParameters* FitSetup::own() const {
+  const FlightOwnParameters& own = describe(effect).flight_own;
+  return own.count > 0 && base.empty() ? &own : nullptr;
+}
+
+int FitSetup::local_count() const { return 3 + (own() != nullptr ? own()->count : 0); }
+
+int FitSetup::shared_count(int model_count) const {
+  return own() != nullptr && model_count > 0 ? own()->shared_count : model_count;
+}
+
+Eigen::VectorXd FitSetup::block_theta(const Eigen::VectorXd& shared, const Eigen::VectorXd& local) const {
+  const FlightOwnParameters* o = own();
+  if (o == nullptr) return shared;
+  return o->theta_of(shared.head(o->shared_count), local.tail(o->count));
+}
+
 void residuals_of(const FlightData& data, const std::vector<Vec3>& readings, Eigen::VectorXd& r) {
   const Flight& flight = *data.flight;
   const std::size_t n = flight.size();

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "diagnose/2_model/effect.hpp"
+#include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/flight_model.hpp"
 #include "diagnose/2_model/nominal_inertia.hpp"
 #include "diagnose/3_fit/flight_data.hpp"
@@ -26,7 +27,25 @@ struct FitSetup {
   unsigned threads = 1;        // flights fitted concurrently (a pooled fit)
 
   EffectModel model() const { return EffectModel{effect, *nominal, impulse_time_s, base}; }
+
+  // Each flight's own parameters beside its rate (descriptor `flight_own`; the effect
+  // alone), null where the flights share every parameter.
+  const FlightOwnParameters* own() const;
+  // Entries of each flight's local block: its rate, then its own parameters.
+  int local_count() const;
+  // The parameters the pooled fit shares, of a model with `model_count` (theta's whole
+  // parameterisation, or 0 where they are held).
+  int shared_count(int model_count) const;
+  // The theta flight `block` is predicted with: the shared parameters (the leading ones of
+  // `shared` where it holds a whole theta) with the flight's own from `local`.
+  Eigen::VectorXd block_theta(const Eigen::VectorXd& shared, const Eigen::VectorXd& local) const;
 };
+
+// The first flight's scale of the shared part (FlightOwnParameters) is pinned at 0 by a
+// residual of this weight: the data do not see it (the shared part moves with it), so it
+// costs nothing there, and at 1e4 its variance leaves the shared part's errors alone
+// (1e-8 of their square).
+constexpr double kPinnedScaleWeight = 1e4;
 
 // The weighted residuals, every sample written once (no clearing first). Read through
 // plain pointers: writing r through Eigen's made the compiler reload every vector's data

@@ -41,6 +41,7 @@ void weight_column(const FlightData& d, Eigen::MatrixXd& jacobian, Eigen::Index 
 bool flight_jacobian(const FitSetup& setup, int block, const Eigen::VectorXd& theta,
                      const Eigen::VectorXd& local, Eigen::VectorXd& r, Eigen::MatrixXd& jacobian,
                      Eigen::Matrix3d* rate_derivative) {
+  if (setup.own() != nullptr) return false;  // each flight's own parameters: differenced, as the rest
   const EffectModel model = setup.model();
   const std::vector<char> sensor = sensor_directions(model, theta);
   std::vector<char> impulse = impulse_directions(model, theta);

@@ -28,6 +28,7 @@ EffectFit rates_fitted_from(const FitSetup& setup, const EffectFit& fixed,
   const LeastSquaresResult solution =
       minimise(rates_only(problem, fixed.theta), Eigen::VectorXd(), starts, options);
   EffectFit fit = result_of(setup, solution, 0);
+  set_flight_thetas(setup, fixed.theta, fit);
   fit.theta = fixed.theta;
   fit.theta_standard_error = fixed.theta_standard_error;
   return fit;
@@ -56,10 +57,10 @@ EffectFit fit_initial_rates_near(const EffectFit& fixed, const NominalInertia& n
   const std::vector<FlightData> flights{data};
   const FitSetup setup = rates_setup(fixed, nominal, flights);
   if (index >= near.flights.size() || near.flights[index].ref != setup.refs[0] ||
-      near.theta.size() != fixed.theta.size()) {
+      near.theta.size() != fixed.theta.size() || local_of(near, index).size() != setup.local_count()) {
     return fit_initial_rates(fixed, nominal, flights, nominal_fit);
   }
-  const std::vector<Eigen::VectorXd> start{Eigen::VectorXd(near.flights[index].omega_ref)};
+  const std::vector<Eigen::VectorXd> start{local_of(near, index)};
   EffectFit cheap = rates_fitted_from(setup, fixed, start);
   const ArrowProblem problem = problem_of(setup, 0);
   const double reference = cost_at(rates_only(problem, near.theta), Eigen::VectorXd(), start);

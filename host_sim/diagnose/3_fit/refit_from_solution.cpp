@@ -95,11 +95,13 @@ EffectFit refit_from_solution(const EffectFit& fit, const NominalInertia& nomina
       return true;
     };
   }
-  const std::vector<Eigen::VectorXd> rates{Eigen::VectorXd(fit.flights[0].omega_ref)};
-  const LeastSquaresResult step = gauss_newton_step(problem, fit.theta, rates);
+  const std::vector<Eigen::VectorXd> rates{local_of(fit, 0)};
+  const LeastSquaresResult step = gauss_newton_step(problem, fit.theta.head(problem.shared_count), rates);
   EffectFit out = fit;
   out.theta = step.shared;
-  out.flights[0].omega_ref = Vec3(step.local[0]);
+  out.flights[0].omega_ref = Vec3(step.local[0].head<3>());
+  out.flights[0].own = step.local[0].tail(step.local[0].size() - 3);
+  set_flight_thetas(setup, step.shared, out);
   out.flights[0].impulse_time_s = impulse_time_s;
   out.cost = step.cost;
   out.residual_count = data.residual_count();
@@ -114,8 +116,17 @@ std::vector<Eigen::VectorXd> leave_one_flight_out(const EffectFit& fit, const No
   for (const FlightState& f : fit.flights) setup.refs.push_back(f.ref);
   const ArrowProblem problem = problem_of(setup, static_cast<int>(fit.theta.size()));
   std::vector<Eigen::VectorXd> rates;
-  for (const FlightState& f : fit.flights) rates.emplace_back(Eigen::VectorXd(f.omega_ref));
-  return leave_one_block_out(problem, fit.theta, rates);
+  for (std::size_t i = 0; i < fit.flights.size(); ++i) rates.push_back(local_of(fit, i));
+  const Eigen::Index shared = problem.shared_count;
+  std::vector<Eigen::VectorXd> out = leave_one_block_out(problem, fit.theta.head(shared), rates);
+  // Where each flight has parameters of its own, a whole theta: the shared ones from the
+  // others, the rest as fit.theta's (the left-out flight fits its own).
+  for (Eigen::VectorXd& theta : out) {
+    Eigen::VectorXd whole = fit.theta;
+    whole.head(shared) = theta;
+    theta = whole;
+  }
+  return out;
 }
 
 }  // namespace aloft::host::diagnose

@@ -1,14 +1,17 @@
 // A rotor spun up by a motor (effects/internal_momentum_spin_up.cpp) is reported with h at
 // the end of the data it describes (SPEC §4: h_N_m_s is h at the flight's end), which its
-// parameters alone do not know: the flow gives the end (a flight's duration; a session's
-// longest flight's) to every fit of it in the analysis.
+// parameters alone do not know: the flow gives each flight's end (its duration) to every
+// fit of it in the analysis. A session's pooled fit gives each flight its own profile, and
+// reports the longest flight's as the effect's.
 #pragma once
+
+#include <vector>
 
 #include "diagnose/4_judge/analysis.hpp"
 
 namespace aloft::host::diagnose {
 
-// `end_s`: seconds after the first sample of the flight(s).
-void set_spin_up_end(Analysis& analysis, double end_s);
+// `ends_s`: each flight's end, seconds after its first sample.
+void set_spin_up_end(Analysis& analysis, const std::vector<double>& ends_s);
 
 }  // namespace aloft::host::diagnose

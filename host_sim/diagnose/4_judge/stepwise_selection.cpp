@@ -190,6 +190,9 @@ void describe_final_model(Analysis& analysis, const RankingContext& context,
       e.params = context.nominal != nullptr ? effect_parameters(model, current.fit.theta, effect)
                  : effect == joined.effect  ? joined.params
                                             : EffectParameters();
+      // Each flight's own spin-up profile, which the shared theta does not hold.
+      if (effect == joined.effect && e.params.spin_up)
+        e.params.spin_up_flights = joined.params.spin_up_flights;
       e.heldout_rms_rel_err_after = s.heldout_rms_rel_err_after;
       e.heldout_rms_da_after_deg = s.heldout_rms_da_after_deg;
       e.step_shrink = s.shrink;

@@ -32,6 +32,15 @@ std::optional<Eigen::VectorXd> median_of_flights(Effect effect, const std::vecto
   return median;
 }
 
+// A spin-up fitted with each flight's own profile (FlightState::own): each flight's.
+void add_flights_own(EffectParameters& p, const EffectFit& fit, const NominalInertia& nominal) {
+  if (!p.spin_up || fit.flights.empty() || fit.flights.front().own.size() == 0) return;
+  for (std::size_t j = 0; j < fit.flights.size(); ++j) {
+    const EffectParameters own = effect_parameters(model_of(fit, nominal, j), flight_theta(fit, j));
+    p.spin_up_flights.push_back({own.vector, own.spin_up_start_s, own.spin_up_time_constant_s, 0.0});
+  }
+}
+
 }  // namespace
 
 const Candidate* evaluated_candidate(const Analysis& analysis, Effect effect) {
@@ -103,8 +112,8 @@ std::vector<OwnFit> FlightsLeftOut::fit_each_flight(const Candidate& base, const
   parallel_for(flights_.size(), threads_, [&](std::size_t j) {
     EffectFit base_j = base.fit;
     base_j.flights = {base.fit.flights[j]};
-    const EffectFit fit = fit_added_effect(base_j, c.effect, nominal_, {flights_.all[j]}, &c.fit.theta, 1,
-                                           SecondStart::readings_when_seeded);
+    const EffectFit fit = fit_added_effect(base_j, c.effect, nominal_, {flights_.all[j]},
+                                           &flight_theta(c.fit, j), 1, SecondStart::readings_when_seeded);
     const int offset = theta_offset(model_of(fit, nominal_, 0), c.effect);
     if (offset < 0 || offset + count > fit.theta.size() || fit.theta_covariance.rows() != fit.theta.size())
       return;
@@ -127,6 +136,7 @@ Candidate FlightsLeftOut::evaluate(const Candidate& base, Effect added) const {
                          : fit_added_effect(base.fit, added, nominal_, flights_.all, nullptr, threads_,
                                             SecondStart::base_at_nominal);
   c.params = effect_parameters(model_of(c.fit, nominal_, 0), c.fit.theta);
+  add_flights_own(c.params, c.fit, nominal_);
   judge_leaving_flights_out(c);
   // On a base, or a variant (its flights' own analyses did not all try it): each
   // flight's own fit, for the agreement test of told_apart.hpp.

@@ -157,9 +157,9 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
   RankingContext context = pool.judged.ranking_context(nominal, resolution);
   context.own_analyses = pool.own;
   judge_candidates(analysis, context, FlightsLeftOut(pool.judged, pool.own, nominal, none_all, workers));
-  double longest = 0.0;
-  for (const Flight* f : pool.judged.flights) longest = std::max(longest, f->end_s() - f->start_s());
-  set_spin_up_end(analysis, longest);
+  std::vector<double> ends;
+  for (const Flight* f : pool.judged.flights) ends.push_back(f->end_s() - f->start_s());
+  set_spin_up_end(analysis, ends);
   note_disagreeing_flights(analysis, pool.judged.flights, pool.own);
   note_between_flight_scatter(analysis, pool.own);
   add_flip_periods(session, pool, none_all, flights, nominal);

@@ -139,19 +139,44 @@ nlohmann::json internal_momentum_json(const EffectParameters& p) { return {{"h_N
 
 // `internal_momentum` spun up by a motor: the final h, the profile, and h at the end of the
 // data (SPEC §4: h_N_m_s is h at the flight's end).
+// A session's flights share the wheel's axis and each has its own profile: the longest
+// flight's above, then each flight's.
 std::string internal_momentum_spin_up_text(const EffectParameters& p) {
   const Eigen::Vector3d end = p.spin_up_h_at_end();
-  return printf_text(
+  std::string out = printf_text(
       "a wheel spun up %.0f ms after the first sample, time constant %.0f ms, to h = (%.3g, %.3g, "
       "%.3g) N m s in body axes (|h| %.3g N m s; %.3g N m s at the end of the data)",
       1000.0 * p.spin_up_start_s, 1000.0 * p.spin_up_time_constant_s, p.vector(0), p.vector(1), p.vector(2),
       p.vector.norm(), end.norm());
+  if (p.spin_up_flights.empty()) return out;
+  const Eigen::Vector3d axis = p.vector.normalized();
+  out += printf_text("; the flights share its axis (%.3f, %.3f, %.3f), each its own profile:", axis(0),
+                     axis(1), axis(2));
+  for (std::size_t j = 0; j < p.spin_up_flights.size(); ++j) {
+    const EffectParameters::SpinUpFlight& f = p.spin_up_flights[j];
+    out += printf_text(" flight %zu from %.0f ms, %.0f ms, |h| %.3g, %.3g N m s at its end;", j + 1,
+                       1000.0 * f.start_s, 1000.0 * f.time_constant_s, f.final_h.norm(), f.h_at_end().norm());
+  }
+  out.pop_back();
+  return out;
 }
 
 nlohmann::json internal_momentum_spin_up_json(const EffectParameters& p) {
-  return {{"h_N_m_s", json_vec(p.spin_up_h_at_end())},    {"profile", "first_order_spin_up"},
-          {"final_h_N_m_s", json_vec(p.vector)},          {"start_s", p.spin_up_start_s},
-          {"time_constant_s", p.spin_up_time_constant_s}, {"end_s", p.spin_up_end_s}};
+  nlohmann::json out = {{"h_N_m_s", json_vec(p.spin_up_h_at_end())},    {"profile", "first_order_spin_up"},
+                        {"final_h_N_m_s", json_vec(p.vector)},          {"start_s", p.spin_up_start_s},
+                        {"time_constant_s", p.spin_up_time_constant_s}, {"end_s", p.spin_up_end_s}};
+  if (p.spin_up_flights.empty()) return out;
+  out["axis"] = json_vec(p.vector.normalized());
+  nlohmann::json flights = nlohmann::json::array();
+  for (const EffectParameters::SpinUpFlight& f : p.spin_up_flights) {
+    flights.push_back({{"h_N_m_s", json_vec(f.h_at_end())},
+                       {"final_h_N_m_s", json_vec(f.final_h)},
+                       {"start_s", f.start_s},
+                       {"time_constant_s", f.time_constant_s},
+                       {"end_s", f.end_s}});
+  }
+  out["flights"] = flights;
+  return out;
 }
 
 constexpr std::array kWords = {

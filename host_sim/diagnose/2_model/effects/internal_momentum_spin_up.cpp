@@ -8,7 +8,8 @@
 // Tried only where the steady rotor already fits as well as the best of the rest
 // (variant_candidates.hpp), and, like it, named only where told apart: in a session the
 // flights' own fits must agree on the wheel's axis (`shared_part`), not on its timing or
-// final speed, which each throw sets its own way.
+// final speed, which each throw sets its own way: the pooled fit shares the axis only, each
+// flight's start, time constant and final speed are its own (`flight_own`).
 #include <cmath>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
@@ -56,14 +57,23 @@ std::string too_small(const EffectParameters& p, const SignificanceScale& scale)
 // second tells from a steady rotor. kQuickestSpinUp_s: a quarter of the 40 ms the
 // quickest generated wheels take; the real wheels of issue 44 take about 200 ms to speed.
 constexpr double kQuickestSpinUp_s = 0.01, kSlowestSpinUp_s = 2.0;
-std::string unphysical(const FittedSlice& fit) {
-  if (fit.theta.size() < kSpinUpParameters) return {};
-  const double tau = time_constant_of(fit.theta);
+std::string unphysical_time_constant(double tau) {
   if (tau < kQuickestSpinUp_s)
     return printf_text("its wheel reaches speed in %.1f ms, quicker than a motor spins one up (a knock)",
                        1000.0 * tau);
   if (tau > kSlowestSpinUp_s) return printf_text("its wheel takes %.1f s to reach speed", tau);
   return {};
+}
+
+// Of the fit's theta, and of each flight's own profile where a session's flights have one.
+std::string unphysical(const FittedSlice& fit) {
+  if (fit.theta.size() < kSpinUpParameters) return {};
+  std::string why = unphysical_time_constant(time_constant_of(fit.theta));
+  if (fit.added == nullptr) return why;
+  for (const EffectParameters::SpinUpFlight& own : fit.added->spin_up_flights) {
+    if (why.empty()) why = unphysical_time_constant(own.time_constant_s);
+  }
+  return why;
 }
 
 // The wheel's axis: theta's h part as a unit vector, its covariance the projection's
@@ -80,6 +90,23 @@ int axis_part(const Eigen::VectorXd& theta, const Eigen::MatrixXd& covariance, E
   return 2;
 }
 
+// In a pooled fit the flights share the wheel's axis only: the shared part is the first
+// flight's I_nom^-1 h_inf, and each flight has its own (ln of its final speed over the first
+// flight's, start, ln time constant), so that its h_inf is exp(own(0)) times the shared part.
+Eigen::VectorXd flight_theta(const Eigen::VectorXd& shared, const Eigen::VectorXd& own) {
+  Eigen::VectorXd theta(kSpinUpParameters);
+  theta << std::exp(own(0)) * shared.head<3>(), own(1), own(2);
+  return theta;
+}
+
+Eigen::VectorXd own_of(const Eigen::VectorXd& theta, const Eigen::VectorXd& shared) {
+  const Eigen::Vector3d u = shared.head<3>();
+  const double along = u.norm() > 0.0 ? theta.head<3>().dot(u) / u.squaredNorm() : 0.0;
+  Eigen::VectorXd own(3);
+  own << (along > 0.0 ? std::log(along) : 0.0), theta(3), theta(4);
+  return own;
+}
+
 }  // namespace
 
 constexpr EffectDescriptor internal_momentum_spin_up_effect = [] {
@@ -90,6 +117,7 @@ constexpr EffectDescriptor internal_momentum_spin_up_effect = [] {
   d.variant_of = Effect::internal_momentum;
   d.shared_part = axis_part;
   d.start_from_readings = spin_up_theta_from_readings;
+  d.flight_own = {3, 3, flight_theta, own_of};
   d.hooks = {tolerance, apply, parameters, too_small, no_objection, unphysical};
   return d;
 }();
