@@ -9,7 +9,8 @@ std::vector<SessionCase> rotor_session_cases(RotorSeeds seeds, int per_kind, int
   // noise grid 31000 on), spaced by a large odd constant.
   std::uint64_t seed = seeds == RotorSeeds::tuning     ? 31310000ull
                        : seeds == RotorSeeds::withheld ? 31390000ull
-                                                       : 31470000ull;
+                       : seeds == RotorSeeds::fresh    ? 31470000ull
+                                                       : 31550000ull;
   const auto next = [&] { return seed += 0x9E3779B1ull; };
   const auto& bodies = body_names();
   std::vector<SessionCase> out;

@@ -42,7 +42,9 @@ struct SessionCase {
   std::uint64_t seed = 0;           // the effect's seed, shared by the flights
 };
 
-enum class RotorSeeds { tuning, withheld, fresh };
+// unseen: drawn only after the spin-up's per-flight profile was written, never looked at
+// while tuning it.
+enum class RotorSeeds { tuning, withheld, fresh, unseen };
 
 // `per_kind` sessions of each kind, of `flights` flights each.
 std::vector<SessionCase> rotor_session_cases(RotorSeeds seeds, int per_kind, int flights);
