@@ -83,7 +83,8 @@ class TensorFlight {
     const double dt = dt_us_ * 1e-6;
     if (sample_ > 0) advance(dt);
     Eigen::Vector3d x = omega_;
-    if (spec_.noise_rad_s > 0) x += spec_.noise_rad_s * Eigen::Vector3d(normal_.next(), normal_.next(), normal_.next());
+    if (spec_.noise_rad_s > 0)
+      x += spec_.noise_rad_s * Eigen::Vector3d(normal_.next(), normal_.next(), normal_.next());
     if (sample_ == 0 || spec_.filter_tau_s <= 0) {
       filtered_ = x;
     } else {
@@ -138,22 +139,27 @@ class TensorFlight {
 
 // The flight through a TensorEstimator<S> whose nominal tensor is `nominal` (body axes).
 template <typename S>
-aloft::TensorEstimate<S> estimate_flight(const TensorFlightSpec& spec, const aloft::TensorEstimatorSettings<S>& settings,
+aloft::TensorEstimate<S> estimate_flight(const TensorFlightSpec& spec,
+                                         const aloft::TensorEstimatorSettings<S>& settings,
                                          const aloft::Rotor<S>& rotor, const Eigen::Matrix3d& nominal) {
   aloft::InertiaTensor<S> nominal_tensor;
   (void)aloft::InertiaTensor<S>::make_from_tensor(nominal.cast<S>(), nominal_tensor);
-  aloft::TensorEstimator<S> estimator(settings, nominal_tensor, rotor);
+  aloft::TensorEstimator<S> estimator;
+  const aloft::TensorEstimatorInputs<S> inputs{settings, nominal_tensor, rotor};
   estimator.start();
   TensorFlight flight(spec);
   Eigen::Vector3d gyro;
+  aloft::Vec3<S> before = aloft::Vec3<S>::Zero();
   double speed = 0;
   bool first = true;
   while (flight.next(gyro, speed)) {
-    estimator.add(gyro.cast<S>(), static_cast<S>(speed), first ? 0u : flight.dt_us());
+    const aloft::Vec3<S> w = gyro.cast<S>();
+    estimator.add(w, before, static_cast<S>(speed), first ? 0u : flight.dt_us(), inputs);
+    before = w;
     first = false;
   }
   aloft::TensorEstimate<S> estimate;
-  estimator.finish(estimate);
+  estimator.finish(inputs, estimate);
   return estimate;
 }
 
@@ -162,7 +168,8 @@ template <typename S>
 double worst_axis_angle(const aloft::TensorEstimate<S>& e, const Eigen::Quaterniond& truth) {
   const Eigen::Matrix3d a = e.axes.template cast<double>().toRotationMatrix(), b = truth.toRotationMatrix();
   double worst = 0;
-  for (int i = 0; i < 3; ++i) worst = std::fmax(worst, std::acos(std::fmin(1.0, std::fabs(a.col(i).dot(b.col(i))))));
+  for (int i = 0; i < 3; ++i)
+    worst = std::fmax(worst, std::acos(std::fmin(1.0, std::fabs(a.col(i).dot(b.col(i))))));
   return worst;
 }
 

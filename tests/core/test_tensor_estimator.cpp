@@ -42,9 +42,10 @@ void noise_free_throws() {
       spec.filter_tau_s = tau;
       spec.rate_hz = tau > 0 ? 2000.0 : 1000.0;
       aloft::TensorEstimatorSettings<S> settings;
-      settings.gyro_filter_us = static_cast<std::uint32_t>(tau * 1e6);
+      settings.gyro_filter_us = static_cast<std::uint16_t>(tau * 1e6);
       const aloft_test::TensorFlight flight(spec);
-      const auto e = aloft_test::estimate_flight<S>(spec, settings, aloft::Rotor<S>(), flight.inertia().tensor());
+      const auto e =
+          aloft_test::estimate_flight<S>(spec, settings, aloft::Rotor<S>(), flight.inertia().tensor());
       ALOFT_REQUIRE(e.determined);
       ALOFT_CHECK(!e.absolute);
       ALOFT_CHECK(std::abs(double(e.ratio(0)) - truth_ratio(spec, 0)) < 1e-4);
@@ -74,8 +75,7 @@ void rotor_throws() {
     settings.gyro_filter_us = 0;
     const aloft_test::TensorFlight flight(spec);
     // The nominal tensor only weighs the rows: 20 % off, the moments come out the same.
-    const auto e =
-        aloft_test::estimate_flight<S>(spec, settings, rotor, 1.2 * flight.inertia().tensor());
+    const auto e = aloft_test::estimate_flight<S>(spec, settings, rotor, 1.2 * flight.inertia().tensor());
     ALOFT_REQUIRE(e.determined);
     ALOFT_CHECK(e.absolute);
     for (int i = 0; i < 3; ++i) ALOFT_CHECK(std::abs(double(e.principal(i)) / spec.moments(i) - 1.0) < 1e-4);
@@ -103,7 +103,8 @@ void not_determined() {
   aloft::TensorEstimatorSettings<S> exact;
   exact.gyro_filter_us = 0;
   const aloft_test::TensorFlight spin_flight(spin);
-  const auto e = aloft_test::estimate_flight<S>(spin, exact, aloft::Rotor<S>(), spin_flight.inertia().tensor());
+  const auto e =
+      aloft_test::estimate_flight<S>(spin, exact, aloft::Rotor<S>(), spin_flight.inertia().tensor());
   ALOFT_CHECK(!e.determined);
   ALOFT_CHECK(e.note == aloft::TensorEstimateNote::one_axis_spin);
   // About the smallest, and about the middle one (unstable: over 0.3 s it stays put).
@@ -152,8 +153,8 @@ ALOFT_TEST_CASE("integrated Euler equations: P = ∫ w w^T dt gives ∫ w x (I w
   const Vec3<double> a(1.0, -2.0, 0.5), b(0.3, 0.7, -1.1);
   aloft::Mat3<double> inertia;
   inertia << 2.0, 0.1, -0.2, 0.1, 3.0, 0.3, -0.2, 0.3, 4.0;
-  const aloft::Mat3<double> p = a * a.transpose() + 0.5 * (a * b.transpose() + b * a.transpose()) +
-                                b * b.transpose() / 3.0;
+  const aloft::Mat3<double> p =
+      a * a.transpose() + 0.5 * (a * b.transpose() + b * a.transpose()) + b * b.transpose() / 3.0;
   Vec3<double> direct = Vec3<double>::Zero();  // Simpson: exact for the quadratic integrand
   for (int k = 0; k <= 2; ++k) {
     const Vec3<double> w = a + b * (0.5 * k);

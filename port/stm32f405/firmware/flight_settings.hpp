@@ -17,7 +17,8 @@ constexpr float inertia_kg_m2[3][3] = {
     {0.0f, 0.0f, 0.010873489583f},
 };
 
-using Pipeline = aloft::OnboardPipeline<float, live_simulations>;
+// The practice brick has no rotor: the image keeps no rotor speeds (RotorSupport::none).
+using Pipeline = aloft::OnboardPipeline<float, live_simulations, aloft::RotorSupport::none>;
 
 // The tensor is symmetric, so the array reads the same in row or column order.
 inline aloft::Mat3<float> body_tensor() { return Eigen::Map<const aloft::Mat3<float>>(&inertia_kg_m2[0][0]); }

@@ -25,7 +25,8 @@ struct Rotor {
   template <typename Self, typename Visitor>
   static void visit(Self& s, Visitor&& v) {
     v(s.axis, [] {
-      return SettingInfo{"rotor.axis", "", "the rotor's spin axis, body axes, unit length: a property of the body"};
+      return SettingInfo{"rotor.axis", "",
+                         "the rotor's spin axis, body axes, unit length: a property of the body"};
     });
     v(s.inertia_kg_m2, [] {
       return SettingInfo{"rotor.inertia_kg_m2", "kg·m²",

@@ -44,8 +44,8 @@ inline void jacobi_rotation(Scalar app, Scalar aqq, Scalar apq, Scalar& c, Scala
 // m <- R^T m R and v <- v R, R the identity but R(p,p) = R(q,q) = c, R(p,q) = s,
 // R(q,p) = -s; m(p, q) is then zero.
 template <typename Scalar, int N>
-inline void apply_jacobi_rotation(Eigen::Matrix<Scalar, N, N>& m, Eigen::Matrix<Scalar, N, N>& v, int p, int q,
-                                  Scalar c, Scalar s) {
+inline void apply_jacobi_rotation(Eigen::Matrix<Scalar, N, N>& m, Eigen::Matrix<Scalar, N, N>& v, int p,
+                                  int q, Scalar c, Scalar s) {
   for (int k = 0; k < N; ++k) {  // rows p, q of R^T m
     const Scalar mp = m(p, k), mq = m(q, k);
     m(p, k) = c * mp - s * mq;
@@ -88,7 +88,8 @@ inline void sort_ascending(Eigen::Matrix<Scalar, N, 1>& values, Eigen::Matrix<Sc
 // of X^T X: in float a ratio of smallest to largest eigenvalue of 1e-10 still comes out to
 // a few per cent, where forming X^T X leaves only rounding below about 1e-7.
 template <typename Scalar, int N>
-ALOFT_COLD inline void gram_eigen_decomposition(Eigen::Matrix<Scalar, N, N>& x, Eigen::Matrix<Scalar, N, 1>& values,
+ALOFT_COLD inline void gram_eigen_decomposition(Eigen::Matrix<Scalar, N, N>& x,
+                                                Eigen::Matrix<Scalar, N, 1>& values,
                                                 Eigen::Matrix<Scalar, N, N>& vectors) {
   vectors.setIdentity();
   const Scalar eps = std::numeric_limits<Scalar>::epsilon();

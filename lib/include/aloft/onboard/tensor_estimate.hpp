@@ -49,16 +49,18 @@ constexpr const char* describe(TensorEstimateNote n) {
 
 template <typename Scalar>
 struct TensorEstimate {
-  bool determined = false;
-  bool absolute = false;  // principal is in kg·m²: a rotor's known momentum gave the scale
-  TensorEstimateNote note = TensorEstimateNote::too_short;
+  // The quaternion first: Eigen aligns it to 16 bytes, and behind the flags it left 16
+  // bytes of padding (80 B, not 64, in float).
+  Quat<Scalar> axes = Quat<Scalar>::Identity();  // principal frame into body axes
   // Principal moments, ascending: kg·m² when absolute, else scaled so that the largest is 1
   // (principal(0), principal(1) are then the ratios I1/I3, I2/I3).
   Vec3<Scalar> principal = Vec3<Scalar>::Zero();
   Vec3<Scalar> principal_95 = Vec3<Scalar>::Zero();  // 95 % half-widths, when absolute
   Scalar ratios_95[2] = {Scalar(0), Scalar(0)};      // 95 % half-widths of I1/I3, I2/I3
-  Quat<Scalar> axes = Quat<Scalar>::Identity();      // principal frame into body axes
   Vec3<Scalar> axes_95_rad = Vec3<Scalar>::Zero();   // each principal axis held within (95 %)
+  bool determined = false;
+  bool absolute = false;  // principal is in kg·m²: a rotor's known momentum gave the scale
+  TensorEstimateNote note = TensorEstimateNote::too_short;
 
   Scalar ratio(int i) const { return principal(i) / principal(2); }
 };
@@ -75,9 +77,6 @@ struct TensorLeastSquares {
   Scalar z[6] = {};                   // the right side, rotated with R
   Scalar rss = Scalar(0);             // residual sum of squares of b's part
   Scalar rate_squared_s = Scalar(0);  // sum over the pieces of ∫ |w|² dt, rad²/s
-  Scalar time_s = Scalar(0);          // the pieces' length together, s
-  std::uint16_t pieces = 0;
-  bool scaled = false;  // some piece had a rotor's momentum: b fixes the scale
 
   // One row a theta = b, rotated into R.
   void add_row(Scalar (&a)[6], Scalar b) {
@@ -107,12 +106,19 @@ struct TensorLeastSquares {
   }
 };
 
+// How many pieces went in, and whether any had a rotor's momentum (b fixes the scale).
+struct TensorPieces {
+  std::uint16_t count = 0;
+  bool scaled = false;
+};
+
 // What decides whether a flight determines the tensor (TensorEstimatorSettings holds them).
 template <typename Scalar>
 struct TensorDetermination {
   std::uint16_t min_pieces;
   Scalar min_rms_rate_rad_s;
   Scalar max_relative_sd;
+  std::uint32_t piece_us;  // the pieces last at least this long
 };
 
 namespace detail {
@@ -199,8 +205,9 @@ constexpr Scalar rounding_floor() {
 // sum of squares the first eigenvalue; false when the gap to the second leaves theta's
 // weakest direction more than max_relative_sd uncertain.
 template <typename Scalar>
-inline bool solve_scale_free(const Vec6<Scalar>& values, const Eigen::Matrix<Scalar, 6, 6>& vectors, Scalar rows,
-                             Scalar max_relative_sd, Vec6<Scalar>& theta, Vec6<Scalar>& weight, Scalar& dof) {
+inline bool solve_scale_free(const Vec6<Scalar>& values, const Eigen::Matrix<Scalar, 6, 6>& vectors,
+                             Scalar rows, Scalar max_relative_sd, Vec6<Scalar>& theta, Vec6<Scalar>& weight,
+                             Scalar& dof) {
   dof = rows - Scalar(5);
   theta = vectors.col(0);
   if (theta.template head<3>().sum() < Scalar(0)) theta = -theta;  // a positive trace
@@ -208,7 +215,8 @@ inline bool solve_scale_free(const Vec6<Scalar>& values, const Eigen::Matrix<Sca
   weight(0) = Scalar(0);  // theta's own direction: its scale, which nothing fixes
   for (int k = 1; k < 6; ++k) {
     const Scalar gap = values(k) - values(0);
-    weight(k) = gap > Scalar(0) ? variance * values(k) / (gap * gap) : std::numeric_limits<Scalar>::infinity();
+    weight(k) =
+        gap > Scalar(0) ? variance * values(k) / (gap * gap) : std::numeric_limits<Scalar>::infinity();
   }
   const Scalar floor = rounding_floor<Scalar>();
   return values(1) > floor * floor * values(5) && std::sqrt(weight(1)) <= max_relative_sd;
@@ -217,10 +225,10 @@ inline bool solve_scale_free(const Vec6<Scalar>& values, const Eigen::Matrix<Sca
 // With the scale: theta = N^-1 g from R's decomposition (x: R's columns rotated, x_k = R v_k),
 // the residual sum of squares as the rotations left it.
 template <typename Scalar>
-inline bool solve_scaled(const TensorLeastSquares<Scalar>& ls, const Vec6<Scalar>& values,
+inline bool solve_scaled(const TensorLeastSquares<Scalar>& ls, Scalar rows, const Vec6<Scalar>& values,
                          const Eigen::Matrix<Scalar, 6, 6>& vectors, const Eigen::Matrix<Scalar, 6, 6>& x,
                          Scalar max_relative_sd, Vec6<Scalar>& theta, Vec6<Scalar>& weight, Scalar& dof) {
-  dof = Scalar(3) * Scalar(ls.pieces) - Scalar(6);
+  dof = rows - Scalar(6);
   const Vec6<Scalar> z = Eigen::Map<const Vec6<Scalar>>(ls.z);
   const Scalar variance = ls.rss / dof;
   theta.setZero();
@@ -236,27 +244,39 @@ inline bool solve_scaled(const TensorLeastSquares<Scalar>& ls, const Vec6<Scalar
   return values(0) > floor * floor * values(5) && std::sqrt(weight(0)) <= max_relative_sd * theta.norm();
 }
 
+// N's eigen-decomposition from R, theta and its covariance's weights; false when the flight
+// does not fix theta. Its own frame: R's working copy is gone before the intervals are
+// carried to the figures (the stack of a firmware's flight end).
+template <typename Scalar>
+ALOFT_COLD inline bool solve_tensor(const TensorLeastSquares<Scalar>& ls, TensorPieces pieces,
+                                    Scalar max_relative_sd, Eigen::Matrix<Scalar, 6, 6>& vectors,
+                                    Vec6<Scalar>& theta, Vec6<Scalar>& weight, Scalar& dof) {
+  Eigen::Matrix<Scalar, 6, 6> x = ls.r_matrix();
+  Vec6<Scalar> values;
+  gram_eigen_decomposition(x, values, vectors);
+  const Scalar rows = Scalar(3) * static_cast<Scalar>(pieces.count);
+  return pieces.scaled ? solve_scaled(ls, rows, values, vectors, x, max_relative_sd, theta, weight, dof)
+                       : solve_scale_free(values, vectors, rows, max_relative_sd, theta, weight, dof);
+}
+
 }  // namespace detail
 
 // The estimate from a flight's least-squares problem; `scale` is theta's unit in kg·m².
 template <typename Scalar>
-ALOFT_COLD inline void estimate_tensor(const TensorLeastSquares<Scalar>& ls, Scalar scale,
-                                       const TensorDetermination<Scalar>& d, TensorEstimate<Scalar>& out) {
+ALOFT_COLD inline void estimate_tensor(const TensorLeastSquares<Scalar>& ls, TensorPieces pieces,
+                                       Scalar scale, const TensorDetermination<Scalar>& d,
+                                       TensorEstimate<Scalar>& out) {
   out = TensorEstimate<Scalar>();
-  if (ls.pieces < d.min_pieces) return;  // too_short
-  if (!(ls.rate_squared_s > d.min_rms_rate_rad_s * d.min_rms_rate_rad_s * ls.time_s)) {
+  if (pieces.count < d.min_pieces) return;  // too_short
+  const Scalar time_s = static_cast<Scalar>(pieces.count) * static_cast<Scalar>(d.piece_us) * Scalar(1e-6);
+  if (!(ls.rate_squared_s > d.min_rms_rate_rad_s * d.min_rms_rate_rad_s * time_s)) {
     out.note = TensorEstimateNote::too_little_turning;
     return;
   }
-  Eigen::Matrix<Scalar, 6, 6> x = ls.r_matrix(), vectors;
-  detail::Vec6<Scalar> values, theta, weight;
-  gram_eigen_decomposition(x, values, vectors);
+  Eigen::Matrix<Scalar, 6, 6> vectors;
+  detail::Vec6<Scalar> theta, weight;
   Scalar dof = Scalar(0);
-  const bool solved =
-      ls.scaled ? detail::solve_scaled(ls, values, vectors, x, d.max_relative_sd, theta, weight, dof)
-                : detail::solve_scale_free(values, vectors, Scalar(3) * Scalar(ls.pieces), d.max_relative_sd,
-                                           theta, weight, dof);
-  if (!solved) {
+  if (!detail::solve_tensor(ls, pieces, d.max_relative_sd, vectors, theta, weight, dof)) {
     out.note = TensorEstimateNote::one_axis_spin;
     return;
   }
@@ -267,7 +287,7 @@ ALOFT_COLD inline void estimate_tensor(const TensorLeastSquares<Scalar>& ls, Sca
   }
   out.determined = true;
   out.note = TensorEstimateNote::determined;
-  out.absolute = ls.scaled;
+  out.absolute = pieces.scaled;
   if (out.absolute) {
     out.principal *= scale;
     out.principal_95 *= scale;
