@@ -16,10 +16,13 @@ constexpr double kRadToDeg = 57.29577951308232;
 double shortest(float value) {
   char text[32];
   const auto [end, error] = std::to_chars(text, text + sizeof(text), value);
-  return error == std::errc() ? std::strtod(std::string(text, end).c_str(), nullptr) : static_cast<double>(value);
+  return error == std::errc() ? std::strtod(std::string(text, end).c_str(), nullptr)
+                              : static_cast<double>(value);
 }
 
-json interval(double value, double half_width) { return json::array({value - half_width, value + half_width}); }
+json interval(double value, double half_width) {
+  return json::array({value - half_width, value + half_width});
+}
 
 }  // namespace
 
@@ -27,8 +30,8 @@ json tensor_estimate_json(const TensorEstimate<float>& e) {
   json j;
   j["determined"] = e.determined;
   if (!e.determined) {
-    for (const char* key : {"principal_ratios", "principal_ratios_95", "axes", "axes_95_deg", "principal_kg_m2",
-                            "principal_kg_m2_95"})
+    for (const char* key : {"principal_ratios", "principal_ratios_95", "axes", "axes_95_deg",
+                            "principal_kg_m2", "principal_kg_m2_95"})
       j[key] = nullptr;
     j["note"] = describe(e.note);
     return j;
@@ -37,10 +40,12 @@ json tensor_estimate_json(const TensorEstimate<float>& e) {
   j["principal_ratios"] = {shortest(e.ratio(0)), shortest(e.ratio(1))};
   j["principal_ratios_95"] = {interval(r[0], e.ratios_95[0]), interval(r[1], e.ratios_95[1])};
   j["axes"] = {shortest(e.axes.w()), shortest(e.axes.x()), shortest(e.axes.y()), shortest(e.axes.z())};
-  j["axes_95_deg"] = {e.axes_95_rad(0) * kRadToDeg, e.axes_95_rad(1) * kRadToDeg, e.axes_95_rad(2) * kRadToDeg};
+  j["axes_95_deg"] = {e.axes_95_rad(0) * kRadToDeg, e.axes_95_rad(1) * kRadToDeg,
+                      e.axes_95_rad(2) * kRadToDeg};
   if (e.absolute) {
     j["principal_kg_m2"] = {shortest(e.principal(0)), shortest(e.principal(1)), shortest(e.principal(2))};
-    j["principal_kg_m2_95"] = {interval(e.principal(0), e.principal_95(0)), interval(e.principal(1), e.principal_95(1)),
+    j["principal_kg_m2_95"] = {interval(e.principal(0), e.principal_95(0)),
+                               interval(e.principal(1), e.principal_95(1)),
                                interval(e.principal(2), e.principal_95(2))};
   } else {
     j["principal_kg_m2"] = nullptr;
@@ -55,7 +60,8 @@ TensorEstimate<float> tensor_estimate_of(const FlightRecordTensor& t) {
   e.determined = t.determined;
   e.absolute = t.absolute;
   e.note = static_cast<TensorEstimateNote>(t.note);
-  const float xyz2 = t.axes_xyz[0] * t.axes_xyz[0] + t.axes_xyz[1] * t.axes_xyz[1] + t.axes_xyz[2] * t.axes_xyz[2];
+  const float xyz2 =
+      t.axes_xyz[0] * t.axes_xyz[0] + t.axes_xyz[1] * t.axes_xyz[1] + t.axes_xyz[2] * t.axes_xyz[2];
   e.axes = Quat<float>(std::sqrt(std::fmax(0.0f, 1.0f - xyz2)), t.axes_xyz[0], t.axes_xyz[1], t.axes_xyz[2]);
   for (int i = 0; i < 3; ++i) {
     e.principal(i) = t.principal[i];
@@ -73,12 +79,14 @@ std::string tensor_estimate_text(const TensorEstimate<float>& e) {
     std::snprintf(line, sizeof line, "not determined: %s", describe(e.note));
     return line;
   }
-  int n = std::snprintf(line, sizeof line, "I1/I3 %.4f ± %.4f, I2/I3 %.4f ± %.4f; axes held within %.2f %.2f %.2f deg",
-                        double(e.ratio(0)), double(e.ratios_95[0]), double(e.ratio(1)), double(e.ratios_95[1]),
-                        e.axes_95_rad(0) * kRadToDeg, e.axes_95_rad(1) * kRadToDeg, e.axes_95_rad(2) * kRadToDeg);
+  int n = std::snprintf(
+      line, sizeof line, "I1/I3 %.4f ± %.4f, I2/I3 %.4f ± %.4f; axes held within %.2f %.2f %.2f deg",
+      double(e.ratio(0)), double(e.ratios_95[0]), double(e.ratio(1)), double(e.ratios_95[1]),
+      e.axes_95_rad(0) * kRadToDeg, e.axes_95_rad(1) * kRadToDeg, e.axes_95_rad(2) * kRadToDeg);
   if (e.absolute && n > 0 && n < static_cast<int>(sizeof line))
-    std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n), "; moments %.4g ± %.2g, %.4g ± %.2g, %.4g ± %.2g kg·m²",
-                  double(e.principal(0)), double(e.principal_95(0)), double(e.principal(1)), double(e.principal_95(1)),
+    std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n),
+                  "; moments %.4g ± %.2g, %.4g ± %.2g, %.4g ± %.2g kg·m²", double(e.principal(0)),
+                  double(e.principal_95(0)), double(e.principal(1)), double(e.principal_95(1)),
                   double(e.principal(2)), double(e.principal_95(2)));
   return line;
 }
