@@ -250,9 +250,9 @@ class OnboardPipeline {
     return true;
   }
   // The same without a copy (a firmware's stack): the flight that ended, or null; valid
-  // until the next push, or until release_finished_flight(), which says it was taken. Its
-  // tensor estimate is solved here, on the first call: outside push, whose stack is the
-  // firmware's deepest.
+  // until release_finished_flight(), which says it was taken (no new flight starts before).
+  // Its tensor estimate is solved here, on the first call: outside push, so that a
+  // firmware can take the flight after its burst of samples, off the deepest stack.
   const FlightResult<Scalar>* finished_flight() {
     if (!finished_) return nullptr;
     if (tensor_pending_) solve_tensor_estimate();
@@ -307,6 +307,10 @@ class OnboardPipeline {
         detector_.find_release(history_, c, clock_.half_span(), known_r(), rearmed_at_us_);
     add_to_window(c);
     if (!release.found) return;
+    // The last flight is not taken yet: it is never overwritten. A firmware takes it after
+    // its burst of samples (port/stm32f405/firmware/main.cpp); after a landing no flight
+    // starts within rearm_after_landing_us anyway.
+    if (finished_) return;
     r_flight_ = release.r;
     on_probation_ = true;
     // A known r that missed this release (the detector fitted one near it) is no better

@@ -161,17 +161,18 @@ inline Scalar axis_angle_95(Scalar a, Scalar b, Scalar d, Scalar t_over_z) {
 // sum_k weight[k] v_k v_k^T over N's eigenvectors v_k, so each v_k is one such direction.
 // (A central difference in float, h = eps^(1/3), mixed the axes of moments within 0.5 %
 // of each other and got some intervals 3 times too narrow.)
+// m and axes: theta's tensor decomposed (the caller's frame: not stacked on this one's).
 template <typename Scalar>
-ALOFT_COLD inline void propagate(const Vec6<Scalar>& theta, const Eigen::Matrix<Scalar, 6, 6>& vectors,
-                                 const Vec6<Scalar>& weight, Scalar t, TensorEstimate<Scalar>& out) {
-  Vec3<Scalar> m;
-  Mat3<Scalar> axes;
-  symmetric_eigen_decomposition(tensor_of(theta), m, axes);
+ALOFT_COLD inline void propagate(const Vec3<Scalar>& m, const Mat3<Scalar>& axes,
+                                 const Eigen::Matrix<Scalar, 6, 6>& vectors, const Vec6<Scalar>& weight,
+                                 Scalar t, TensorEstimate<Scalar>& out) {
   Scalar var[5] = {};
   Mat3<Scalar> tilt = Mat3<Scalar>::Zero();
   for (int k = 0; k < 6; ++k) {
     if (!(weight(k) > Scalar(0))) continue;
-    const Mat3<Scalar> d = axes.transpose() * tensor_of<Scalar>(vectors.col(k)) * axes;
+    // d(a, b) = (V^T I(v_k) V)(a, b), only the six entries used.
+    const Mat3<Scalar> xv = tensor_of<Scalar>(vectors.col(k)) * axes;
+    const auto d = [&](int a, int b) { return axes.col(a).dot(xv.col(b)); };
     const Scalar u[5] = {(d(0, 0) * m(2) - m(0) * d(2, 2)) / (m(2) * m(2)),
                          (d(1, 1) * m(2) - m(1) * d(2, 2)) / (m(2) * m(2)), d(0, 0), d(1, 1), d(2, 2)};
     for (int i = 0; i < 5; ++i) var[i] += weight(k) * u[i] * u[i];
@@ -280,7 +281,10 @@ ALOFT_COLD inline void estimate_tensor(const TensorLeastSquares<Scalar>& ls, Ten
     out.note = TensorEstimateNote::one_axis_spin;
     return;
   }
-  detail::propagate(theta, vectors, weight, detail::t_quantile_975(dof), out);
+  Vec3<Scalar> m;
+  Mat3<Scalar> axes;
+  symmetric_eigen_decomposition(detail::tensor_of(theta), m, axes);
+  detail::propagate(m, axes, vectors, weight, detail::t_quantile_975(dof), out);
   if (!(out.principal(0) > Scalar(0))) {
     out.note = TensorEstimateNote::not_a_tensor;
     return;
