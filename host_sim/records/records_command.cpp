@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/json_text.hpp"
+#include "common/tensor_estimate_json.hpp"
 #include "common/commands.hpp"
 #include "records/record_dump.hpp"
 #include "records/records_command.hpp"
@@ -37,6 +38,27 @@ std::string fixed(double v, int decimals) {
 
 double seconds(std::uint64_t us) { return static_cast<double>(us) * 1e-6; }
 
+// The tensor estimate's ratio i (or its 95 % half-width); empty before version 3 and where
+// the flight did not determine it.
+std::string tensor_cell(const ListedRecord& r, int i, bool half_width) {
+  const FlightRecordTensor& t = r.record.tensor;
+  if (r.record.version < 3 || !t.determined) return "";
+  const TensorEstimate<float> e = tensor_estimate_of(t);
+  if (!half_width) return fixed(e.ratio(i), 5);
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.2g", static_cast<double>(e.ratios_95[i]));
+  return text;
+}
+
+// Absolute moment i, kg·m²: only where a rotor gave the scale.
+std::string moment_cell(const ListedRecord& r, int i) {
+  const FlightRecordTensor& t = r.record.tensor;
+  if (r.record.version < 3 || !t.determined || !t.absolute) return "";
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.6g", static_cast<double>(t.principal[i]));
+  return text;
+}
+
 // One row: the columns every format shares, as text ("" for a missing value).
 struct Column {
   const char* name;
@@ -59,6 +81,13 @@ const std::vector<Column>& columns() {
        }},
       {"rms_rel_err",
        [](const ListedRecord& r) { return r.record.turned ? fixed(r.record.rms_rel_err, 5) : ""; }},
+      {"i1_i3", [](const ListedRecord& r) { return tensor_cell(r, 0, false); }},
+      {"i1_i3_95", [](const ListedRecord& r) { return tensor_cell(r, 0, true); }},
+      {"i2_i3", [](const ListedRecord& r) { return tensor_cell(r, 1, false); }},
+      {"i2_i3_95", [](const ListedRecord& r) { return tensor_cell(r, 1, true); }},
+      {"i1_kg_m2", [](const ListedRecord& r) { return moment_cell(r, 0); }},
+      {"i2_kg_m2", [](const ListedRecord& r) { return moment_cell(r, 1); }},
+      {"i3_kg_m2", [](const ListedRecord& r) { return moment_cell(r, 2); }},
       {"tensor_hash", [](const ListedRecord& r) { return hex32(r.record.tensor_hash); }},
       {"settings_hash", [](const ListedRecord& r) { return hex32(r.record.settings_hash); }},
       {"offset", [](const ListedRecord& r) { return std::to_string(r.offset); }},
@@ -129,6 +158,8 @@ nlohmann::json flight_json(const ListedRecord& listed) {
           {"max_da_deg", number_or_null(r.turned, r.max_da_rad * degrees_per_radian)},
           {"max_rel_err", number_or_null(r.turned, r.max_rel_err)},
           {"first_seeds", seeds},
+          {"tensor_estimate",
+           r.version >= 3 ? tensor_estimate_json(tensor_estimate_of(r.tensor)) : nlohmann::json(nullptr)},
           {"tensor_hash", hex32(r.tensor_hash)},
           {"settings_hash", hex32(r.settings_hash)}};
 }

@@ -1,5 +1,7 @@
 #include "replay/replay_report_json.hpp"
 
+#include "common/tensor_estimate_json.hpp"
+
 #include <charconv>
 #include <cstdlib>
 #include <string>
@@ -50,6 +52,7 @@ json flight_json(const ReplayResult& result, const FlightResult<float>& f) {
     j["rms_rel_err"] = nullptr;
     j["note"] = note;
   }
+  j["tensor_estimate"] = tensor_estimate_json(f.tensor);
   return j;
 }
 

@@ -1,5 +1,7 @@
 #include "replay/replay_report_text.hpp"
 
+#include "common/tensor_estimate_json.hpp"
+
 #include <cstdarg>
 #include <cstdio>
 
@@ -46,6 +48,9 @@ std::string replay_report_text(const Recording& recording, const ReplayResult& r
   if (result.flights.empty()) return text + "no flight found\n";
   text += "flight  release_s  landing_s samples gaps  imu_position_mm         rms_da_deg rms_rel_err\n";
   for (const FlightResult<float>& f : result.flights) text += flight_row(result, f);
+  text += "tensor estimate, from each flight's own samples (95 % intervals):\n";
+  for (const FlightResult<float>& f : result.flights)
+    text += printf_text("%6u  %s\n", f.flight_number, tensor_estimate_text(f.tensor).c_str());
   return text;
 }
 

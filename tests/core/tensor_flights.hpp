@@ -144,18 +144,22 @@ aloft::TensorEstimate<S> estimate_flight(const TensorFlightSpec& spec,
                                          const aloft::Rotor<S>& rotor, const Eigen::Matrix3d& nominal) {
   aloft::InertiaTensor<S> nominal_tensor;
   (void)aloft::InertiaTensor<S>::make_from_tensor(nominal.cast<S>(), nominal_tensor);
-  aloft::TensorEstimator<S> estimator(settings, nominal_tensor, rotor);
+  aloft::TensorEstimator<S> estimator;
+  const aloft::TensorEstimatorInputs<S> inputs{settings, nominal_tensor, rotor};
   estimator.start();
   TensorFlight flight(spec);
   Eigen::Vector3d gyro;
+  aloft::Vec3<S> before = aloft::Vec3<S>::Zero();
   double speed = 0;
   bool first = true;
   while (flight.next(gyro, speed)) {
-    estimator.add(gyro.cast<S>(), static_cast<S>(speed), first ? 0u : flight.dt_us());
+    const aloft::Vec3<S> w = gyro.cast<S>();
+    estimator.add(w, before, static_cast<S>(speed), first ? 0u : flight.dt_us(), inputs);
+    before = w;
     first = false;
   }
   aloft::TensorEstimate<S> estimate;
-  estimator.finish(estimate);
+  estimator.finish(inputs, estimate);
   return estimate;
 }
 

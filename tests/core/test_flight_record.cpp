@@ -1,8 +1,9 @@
 // Flight records: the CRC-32 against its standard check value, the byte layout of
-// aloft/records/flight_record.hpp field by field, how a slot is classified (a version 1 record
-// still read), the tensor hash against a value computed independently (Python's struct and
-// zlib.crc32 over the bytes the header defines; the settings hash: test_settings_hash.cpp), the adapter from
-// the pipeline's result, and the ring on a device full of garbage and after several wraps.
+// aloft/records/flight_record.hpp field by field, how a slot is classified (version 1 and 2
+// records still read, with their first seeds), the tensor hash against a value computed independently
+// (Python's struct and zlib.crc32 over the bytes the header defines; the settings hash:
+// test_settings_hash.cpp), the adapter from the pipeline's result, and the ring on a device full of garbage
+// and after several wraps.
 #include <cmath>
 #include <cstdint>
 
@@ -33,9 +34,23 @@ FlightRecord sample_record() {
   r.rms_rel_err = 0.5f;
   r.max_da_rad = 2.0f;
   r.max_rel_err = -2.0f;
-  r.seeds_stored = 2;
-  r.seeds[0] = {0.25f, 0.125f};
-  r.seeds[1] = {4.0f, 8.0f};
+  r.tensor.determined = true;
+  r.tensor.absolute = true;
+  r.tensor.note = 0;
+  r.tensor.principal[0] = 0.001f;
+  r.tensor.principal[1] = 0.002f;
+  r.tensor.principal[2] = 0.003f;
+  r.tensor.axes_xyz[0] = 0.5f;
+  r.tensor.axes_xyz[1] = -0.25f;
+  r.tensor.axes_xyz[2] = 0.125f;
+  r.tensor.ratios_95[0] = 0.5f;  // bf16 holds these exactly
+  r.tensor.ratios_95[1] = 0.25f;
+  r.tensor.principal_95[0] = 0.0078125f;
+  r.tensor.principal_95[1] = 0.015625f;
+  r.tensor.principal_95[2] = 0.03125f;
+  r.tensor.axes_95_rad[0] = 0.0625f;
+  r.tensor.axes_95_rad[1] = 1.5f;
+  r.tensor.axes_95_rad[2] = 3.0f;
   r.tensor_hash = 0xDEADBEEFu;
   r.settings_hash = 0x0BADF00Du;
   return r;
@@ -61,21 +76,24 @@ ALOFT_TEST_CASE("crc32: the standard check value, chaining, and the empty input"
 ALOFT_TEST_CASE("flight record: every field at its offset, little-endian", "[records]") {
   std::uint8_t b[aloft::flight_record_size];
   aloft::encode_flight_record(sample_record(), b);
-  const std::uint8_t head[16] = {0x41, 0x4C, 0x46, 0x52, 2, 0, 128, 0, 4, 3, 2, 1, 7, 0, 0, 0};
+  const std::uint8_t head[16] = {0x41, 0x4C, 0x46, 0x52, 3, 0, 128, 0, 4, 3, 2, 1, 7, 0, 0, 0};
   ALOFT_CHECK(aloft::bytes_equal(b, head, 16));
   const std::uint8_t release[8] = {0x88, 0x77, 0x66, 0x55, 0x44, 0x33, 0x22, 0x11};
   ALOFT_CHECK(aloft::bytes_equal(b + 16, release, 8));
   ALOFT_CHECK(aloft::le::get_u64(b + 24) == 2500000u);
   ALOFT_CHECK((b[32] == 0x2C && b[33] == 0x03 && b[36] == 2 && b[40] == 5));  // 812 = 0x032C
-  ALOFT_CHECK(aloft::le::get_u32(b + 44) == 3u);                              // landed, turned
+  ALOFT_CHECK(aloft::le::get_u32(b + 44) == 3u + 8u + 16u);  // landed, turned; tensor determined, absolute
   ALOFT_CHECK(aloft::le::get_u32(b + 48) == 6000u);
   const std::uint8_t one[4] = {0x00, 0x00, 0x80, 0x3F};  // 1.0f
   ALOFT_CHECK(aloft::bytes_equal(b + 52, one, 4));
   const std::uint8_t minus_two[4] = {0x00, 0x00, 0x00, 0xC0};  // -2.0f
   ALOFT_CHECK(aloft::bytes_equal(b + 64, minus_two, 4));
-  ALOFT_CHECK(aloft::le::get_u32(b + 68) == 2u);
-  ALOFT_CHECK(same_bits(aloft::le::get_f32(b + 80), 4.0f));
-  ALOFT_CHECK(aloft::le::get_u32(b + 88) == 0u);  // seeds not stored are zero
+  ALOFT_CHECK(same_bits(aloft::le::get_f32(b + 76), 0.003f));
+  ALOFT_CHECK(same_bits(aloft::le::get_f32(b + 84), -0.25f));
+  ALOFT_CHECK(aloft::le::get_u16(b + 92) == 0x3F00u);   // 0.5 as bf16
+  ALOFT_CHECK(aloft::le::get_u16(b + 100) == 0x3D00u);  // 0.03125
+  ALOFT_CHECK(aloft::le::get_u16(b + 102) == 0x3D80u);  // 0.0625
+  ALOFT_CHECK(aloft::le::get_u16(b + 114) == 0x4040u);  // 3.0
   ALOFT_CHECK(aloft::le::get_u32(b + 104) == 0xDEADBEEFu);
   ALOFT_CHECK(aloft::le::get_u32(b + 108) == 0x0BADF00Du);
   ALOFT_CHECK(aloft::le::get_u32(b + 116) == aloft::crc32(b, 116));
@@ -93,8 +111,12 @@ ALOFT_TEST_CASE("flight record: decoded as written; torn, corrupt, foreign and o
   aloft::encode_flight_record(back, again);
   ALOFT_CHECK(aloft::bytes_equal(b, again, aloft::flight_record_size));
   ALOFT_CHECK(back.release_us == 0x1122334455667788ull);
-  ALOFT_CHECK(back.version == 2u);
-  ALOFT_CHECK(same_bits(back.seeds[1].rms_rel_err, 8.0f));
+  ALOFT_CHECK(back.version == 3u);
+  ALOFT_CHECK((back.tensor.determined && back.tensor.absolute && back.tensor.note == 0u));
+  ALOFT_CHECK(same_bits(back.tensor.principal[1], 0.002f));
+  ALOFT_CHECK(same_bits(back.tensor.axes_95_rad[1], 1.5f));
+  ALOFT_CHECK(same_bits(back.tensor.principal_95[0], 0.0078125f));
+  ALOFT_CHECK(back.seeds_stored == 0u);
 
   std::uint8_t s[aloft::flight_record_size];
   const auto state_with = [&](std::uint32_t offset, std::uint8_t value) {
@@ -106,7 +128,7 @@ ALOFT_TEST_CASE("flight record: decoded as written; torn, corrupt, foreign and o
   ALOFT_CHECK(state_with(60, static_cast<std::uint8_t>(b[60] ^ 0x10)) == SlotState::crc_mismatch);
   ALOFT_CHECK(state_with(116, static_cast<std::uint8_t>(b[116] ^ 1)) == SlotState::crc_mismatch);
   ALOFT_CHECK(state_with(123, 0xFF) == SlotState::not_committed);
-  ALOFT_CHECK(state_with(4, 3) == SlotState::unknown_version);
+  ALOFT_CHECK(state_with(4, 4) == SlotState::unknown_version);
   ALOFT_CHECK(state_with(4, 0) == SlotState::unknown_version);
   ALOFT_CHECK(state_with(6, 64) == SlotState::unknown_version);
   ALOFT_CHECK(state_with(0, 0x42) == SlotState::no_magic);
@@ -115,18 +137,30 @@ ALOFT_TEST_CASE("flight record: decoded as written; torn, corrupt, foreign and o
   ALOFT_CHECK(aloft::decode_flight_record(s, r) == SlotState::erased);
 }
 
-// A record written before the settings hash walked the settings' one list (version 1,
-// the same layout) still reads, and says it is version 1.
-ALOFT_TEST_CASE("flight record: a version 1 record still reads and says so", "[records]") {
-  std::uint8_t b[aloft::flight_record_size];
-  aloft::encode_flight_record(sample_record(), b);
-  aloft::le::put_u16(b + 4, 1);
-  aloft::le::put_u32(b + aloft::flight_record_crc_offset, aloft::crc32(b, aloft::flight_record_crc_offset));
-  FlightRecord back;
-  ALOFT_REQUIRE(aloft::decode_flight_record(b, back) == SlotState::valid);
-  ALOFT_CHECK(back.version == 1u);
-  ALOFT_CHECK(back.settings_hash == 0x0BADF00Du);
-  ALOFT_CHECK(back.release_us == 0x1122334455667788ull);
+// Records written before the tensor estimate (versions 1 and 2: the first seeds where
+// version 3 keeps the estimate, bytes 112..115 reserved) still read, and say which they are.
+ALOFT_TEST_CASE("flight record: version 1 and 2 records still read, with their seeds", "[records]") {
+  for (const std::uint16_t version : {std::uint16_t(1), std::uint16_t(2)}) {
+    std::uint8_t b[aloft::flight_record_size];
+    aloft::encode_flight_record(sample_record(), b);
+    aloft::le::put_u16(b + 4, version);
+    aloft::le::put_u32(b + 44, 3u);  // landed, turned: no tensor bits before version 3
+    aloft::le::put_u32(b + 68, 2u);
+    for (std::uint32_t i = 72; i < 104; i += 4) aloft::le::put_f32(b + i, 0.0f);
+    aloft::le::put_f32(b + 72, 0.25f);
+    aloft::le::put_f32(b + 84, 8.0f);
+    aloft::le::put_u32(b + 112, 0u);
+    aloft::le::put_u32(b + aloft::flight_record_crc_offset, aloft::crc32(b, aloft::flight_record_crc_offset));
+    FlightRecord back;
+    ALOFT_REQUIRE(aloft::decode_flight_record(b, back) == SlotState::valid);
+    ALOFT_CHECK(back.version == version);
+    ALOFT_CHECK(back.settings_hash == 0x0BADF00Du);
+    ALOFT_CHECK(back.release_us == 0x1122334455667788ull);
+    ALOFT_CHECK(back.seeds_stored == 2u);
+    ALOFT_CHECK(same_bits(back.seeds[0].rms_da_rad, 0.25f));
+    ALOFT_CHECK(same_bits(back.seeds[1].rms_rel_err, 8.0f));
+    ALOFT_CHECK(!back.tensor.determined);
+  }
 }
 
 ALOFT_TEST_CASE("flight record: the tensor hash is the CRC-32 of the bytes defined", "[records]") {
@@ -151,23 +185,24 @@ ALOFT_TEST_CASE("flight record: made from the pipeline's result", "[records]") {
   result.turned = true;
   result.overall.add_values(0.3f, 0.04f);  // RMS of (0.3, 0.4) is sqrt(0.125)
   result.overall.add_values(0.4f, 0.03f);
-  for (std::uint32_t i = 0; i < aloft::kept_first_seeds; ++i) {
-    result.first_seeds[i] = {0.1f * static_cast<float>(i + 1), 0.5f};
-  }
-  result.first_seed_count = aloft::kept_first_seeds;
-  aloft::FlightResult<float> no_seeds = result;
-  no_seeds.first_seed_count = 0;
+  result.tensor.determined = true;
+  result.tensor.note = aloft::TensorEstimateNote::determined;
+  result.tensor.principal = aloft::Vec3<float>(0.5f, 0.75f, 1.0f);
+  result.tensor.ratios_95[1] = 0.01f;
+  result.tensor.axes = aloft::Quat<float>(-0.6f, 0.0f, 0.8f, 0.0f);  // w < 0: kept as its negative
+  result.tensor.axes_95_rad = aloft::Vec3<float>(0.1f, 0.2f, 0.3f);
   const FlightRecord r = aloft::make_flight_record(result, 11u, 22u);
   ALOFT_CHECK(r.flight_number == 3u);
   ALOFT_CHECK((r.release_us == 1500000u && r.landing_us == 2300000u && r.landed && r.turned));
   ALOFT_CHECK((r.samples == 800u && r.gaps == 1u && r.clipped_samples == 4u && r.comparisons == 2u));
   ALOFT_CHECK(std::abs(r.rms_da_rad - std::sqrt(0.125f)) < 1e-6f);
   ALOFT_CHECK(same_bits(r.max_da_rad, 0.4f));
-  ALOFT_CHECK(r.seeds_stored == 4u);
-  ALOFT_CHECK(same_bits(r.seeds[3].rms_da_rad, 0.4f));
-  ALOFT_CHECK(same_bits(r.seeds[2].rms_rel_err, 0.5f));
+  ALOFT_CHECK((r.tensor.determined && !r.tensor.absolute && r.tensor.note == 0u));
+  ALOFT_CHECK(same_bits(r.tensor.principal[1], 0.75f));
+  ALOFT_CHECK(same_bits(r.tensor.ratios_95[1], 0.01f));
+  ALOFT_CHECK(same_bits(r.tensor.axes_xyz[1], -0.8f));
+  ALOFT_CHECK(same_bits(r.tensor.axes_95_rad[2], 0.3f));
   ALOFT_CHECK((r.tensor_hash == 11u && r.settings_hash == 22u));
-  ALOFT_CHECK(aloft::make_flight_record(no_seeds, 0u, 0u).seeds_stored == 0u);
 }
 
 ALOFT_TEST_CASE("record ring: starts on a device full of garbage, keeps the newest after wraps",

@@ -137,9 +137,12 @@ ALOFT_TEST_CASE("settings list: names every field of every onboard settings stru
   const int held =
       listed_settings<OnboardCheckSettings<float>>() + listed_settings<StreamClockSettings<float>>() +
       listed_settings<ReleaseDetectorSettings<float>>() + listed_settings<ReleaseWindowSettings<float>>() +
-      listed_settings<LeverArmEstimatorSettings<float>>() + listed_settings<aloft::Rotor<float>>();
+      listed_settings<LeverArmEstimatorSettings<float>>() + listed_settings<aloft::Rotor<float>>() +
+      listed_settings<aloft::TensorEstimatorSettings<float>>();
   ALOFT_CHECK(listed_settings<aloft::Rotor<float>>() == static_cast<int>(field_count<aloft::Rotor<float>>()));
-  ALOFT_CHECK(listed_settings<Settings>() == static_cast<int>(field_count<Settings>()) - 6 + held);
+  ALOFT_CHECK(listed_settings<aloft::TensorEstimatorSettings<float>>() ==
+              static_cast<int>(field_count<aloft::TensorEstimatorSettings<float>>()));
+  ALOFT_CHECK(listed_settings<Settings>() == static_cast<int>(field_count<Settings>()) - 7 + held);
   // The counting itself: a struct of three plain fields has three.
   struct Three {
     int a, b, c;
@@ -164,7 +167,7 @@ ALOFT_TEST_CASE("settings hash: changing any setting of the list changes it", "[
   }
   ALOFT_CHECK(unchanged == -1);
   ALOFT_CHECK(same_as_another == -1);
-  ALOFT_CHECK(count == 3 + 53);  // the build constants and the pipeline's settings listed today
+  ALOFT_CHECK(count == 3 + 58);  // the build constants and the pipeline's settings listed today
 }
 
 ALOFT_TEST_CASE("settings hash: the CRC-32 of the bytes the list defines, build constants first",
@@ -174,13 +177,13 @@ ALOFT_TEST_CASE("settings hash: the CRC-32 of the bytes the list defines, build 
   aloft::visit_settings(constants, written);
   const Settings defaults;
   aloft::visit_settings(defaults, written);
-  ALOFT_CHECK(written.size == 3u * 2u + 205u);
+  ALOFT_CHECK(written.size == 3u * 2u + 219u);
   const std::uint32_t default_hash = aloft::settings_hash(Settings(), 8);
   ALOFT_CHECK(default_hash == aloft::crc32(written.bytes, written.size));
   ALOFT_CHECK(aloft::settings_hash(aloft::OnboardPipelineSettings<double>(), 8) == default_hash);
   ALOFT_CHECK(aloft::settings_hash(Settings(), 4) != default_hash);
   // The defaults' hash, pinned: a change here changes what a record's settings hash means,
   // and flight_record_version must change with it (aloft/records/flight_record.hpp).
-  ALOFT_CHECK(default_hash == 0x985D3806u);
-  ALOFT_CHECK(aloft::flight_record_version == 2u);
+  ALOFT_CHECK(default_hash == 0x0BE8B1F2u);
+  ALOFT_CHECK(aloft::flight_record_version == 3u);
 }

@@ -42,7 +42,7 @@ void noise_free_throws() {
       spec.filter_tau_s = tau;
       spec.rate_hz = tau > 0 ? 2000.0 : 1000.0;
       aloft::TensorEstimatorSettings<S> settings;
-      settings.gyro_filter_us = static_cast<std::uint32_t>(tau * 1e6);
+      settings.gyro_filter_us = static_cast<std::uint16_t>(tau * 1e6);
       const aloft_test::TensorFlight flight(spec);
       const auto e =
           aloft_test::estimate_flight<S>(spec, settings, aloft::Rotor<S>(), flight.inertia().tensor());
@@ -161,6 +161,23 @@ ALOFT_TEST_CASE("integrated Euler equations: P = ∫ w w^T dt gives ∫ w x (I w
     direct += (k == 1 ? 4.0 : 1.0) / 6.0 * w.cross(inertia * w);
   }
   ALOFT_CHECK((aloft::integrated_gyroscopic_torque(inertia, p) - direct).norm() < 1e-12);
+}
+
+ALOFT_TEST_CASE("the integrated equations per tensor entry are the body's side for each unit tensor",
+                "[tensor]") {
+  aloft_test::NormalDeviates n(11);
+  const Vec3<double> delta_omega(n.next(), n.next(), n.next());
+  Eigen::Matrix3d root;
+  for (int i = 0; i < 9; ++i) root(i / 3, i % 3) = n.next();
+  const Eigen::Matrix3d p = root * root.transpose();  // a P = ∫ w w^T dt is symmetric
+  const Eigen::Matrix<double, 3, 6> a = aloft::integrated_body_torque_per_entry(delta_omega, p);
+  const int row[6] = {0, 1, 2, 0, 0, 1}, col[6] = {0, 1, 2, 1, 2, 2};
+  for (int m = 0; m < 6; ++m) {
+    Eigen::Matrix3d unit = Eigen::Matrix3d::Zero();
+    unit(row[m], col[m]) = unit(col[m], row[m]) = 1.0;
+    ALOFT_CHECK((a.col(m) - aloft::integrated_body_torque(unit, delta_omega, p)).norm() <
+                1e-14 * (1.0 + p.norm()));
+  }
 }
 
 ALOFT_TEST_CASE("tensor least squares: R's rotations keep the normal equations and the residual",

@@ -72,8 +72,8 @@ Coverage coverage(unsigned first_seed, int count, bool rotor, std::uint32_t piec
   for (unsigned seed = first_seed; seed < first_seed + static_cast<unsigned>(count); ++seed) {
     const TensorFlightSpec spec = random_flight(seed, rotor);
     aloft::TensorEstimatorSettings<float> settings;
-    settings.gyro_filter_us = static_cast<std::uint32_t>(std::lround(spec.filter_tau_s * 1e6));
-    if (piece_us > 0) settings.piece_us = piece_us;
+    settings.gyro_filter_us = static_cast<std::uint16_t>(std::lround(spec.filter_tau_s * 1e6));
+    if (piece_us > 0) settings.piece_us = static_cast<std::uint16_t>(piece_us);
     if (max_relative_sd > 0) settings.max_relative_sd = max_relative_sd;
     aloft::Rotor<float> r;
     if (rotor) {
@@ -145,7 +145,7 @@ TEST_CASE("tensor estimate: a few noisy flights, determined", "[tensor][small]")
 //   build/host/tests/host/aloft_tensor_coverage_tests "[.tensor_sweep]"
 TEST_CASE("tensor estimate: piece length and max_relative_sd on the tuning seeds", "[.tensor_sweep]") {
   std::printf("piece_ms max_relative_sd determined I1/I3_covered_%% I2/I3_covered_%% median_half_width_%%\n");
-  for (const std::uint32_t piece_us : {10000u, 20000u, 40000u, 80000u}) {
+  for (const std::uint32_t piece_us : {10000u, 20000u, 40000u, 60000u}) {
     for (const float sd : {0.02f, 0.05f, 0.1f}) {
       Coverage c = coverage(1, 300, false, piece_us, sd);
       std::printf("%8u %15.2f %10d %15.1f %15.1f %19.3f\n", piece_us / 1000, double(sd), c.determined,

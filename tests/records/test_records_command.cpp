@@ -77,10 +77,21 @@ TEST_CASE("aloft records lists the flights of a good dump as a table, JSON and C
   CHECK(f[3]["tensor_hash"] != f[0]["tensor_hash"]);
   CHECK(f[4]["landed"] == false);
   CHECK(f[4]["landing_s"].is_null());
-  REQUIRE(f[0]["first_seeds"].size() == 4);  // the check keeps the flight's first four seeds
-  for (const auto& seed : f[0]["first_seeds"]) CHECK(seed["rms_da_deg"].get<double>() < 0.1);
-  CHECK(f[3]["first_seeds"][0]["rms_da_deg"].get<double>() >
-        10 * f[0]["first_seeds"][0]["rms_da_deg"].get<double>());
+  // Version 3 keeps the flight's own tensor estimate (no first seeds): the top's ratios
+  // 1/3 and 2/3 within their intervals, also for the throw checked with a wrong tensor
+  // (the estimate is the flight's, not the body file's); the drop determines nothing.
+  CHECK(f[0]["first_seeds"].empty());
+  for (const int i : {0, 1, 3}) {
+    const auto& t = f[i]["tensor_estimate"];
+    INFO("flight " << i << ": " << t.dump());
+    REQUIRE(t["determined"] == true);
+    CHECK(std::abs(t["principal_ratios"][0].get<double>() - 1.0 / 3.0) < 1e-3);
+    CHECK(std::abs(t["principal_ratios"][1].get<double>() - 2.0 / 3.0) < 1e-3);
+    CHECK(t["principal_ratios_95"][0][0].get<double>() <= t["principal_ratios"][0].get<double>());
+    CHECK(t["principal_kg_m2"].is_null());
+  }
+  CHECK(f[2]["tensor_estimate"]["determined"] == false);
+  CHECK(f[2]["tensor_estimate"]["note"].get<std::string>().find("turning") != std::string::npos);
 
   const auto csv = run_aloft("records --csv '" + path + "'");
   CHECK(csv.exit_code == 0);
@@ -189,12 +200,12 @@ TEST_CASE("aloft records refuses random bytes, an empty file, another version, i
   CHECK_ONE_LINE_ERROR(aloft::host::read_record_dump(noise_path + ".missing"), "cannot be opened");
   CHECK_ONE_LINE_ERROR(aloft::host::read_record_dump(program_scratch().path("")), "a folder");
 
-  std::string v3 = good_dump_bytes();
-  for (int slot = 0; slot < 5; ++slot) v3[slot * 128 + 4] = 3;
-  const std::string v3_path = write_dump("v3.bin", v3);
-  CHECK_ONE_LINE_ERROR(aloft::host::read_record_dump(v3_path), v3_path, "record version 3 at offset 0",
-                       "versions 1 to 2");
-  for (const std::string& p : {noise_path, empty_path, v3_path}) {
+  std::string v4 = good_dump_bytes();
+  for (int slot = 0; slot < 5; ++slot) v4[slot * 128 + 4] = 4;
+  const std::string v4_path = write_dump("v4.bin", v4);
+  CHECK_ONE_LINE_ERROR(aloft::host::read_record_dump(v4_path), v4_path, "record version 4 at offset 0",
+                       "versions 1 to 3");
+  for (const std::string& p : {noise_path, empty_path, v4_path}) {
     const auto r = run_aloft("records '" + p + "'");
     CHECK(r.exit_code == 2);
     CHECK(aloft::test::count_lines(r.err) == 1);

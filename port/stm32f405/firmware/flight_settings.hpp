@@ -17,7 +17,17 @@ constexpr float inertia_kg_m2[3][3] = {
     {0.0f, 0.0f, 0.010873489583f},
 };
 
-using Pipeline = aloft::OnboardPipeline<float, live_simulations>;
+// The practice brick has no rotor: the image keeps no rotor speeds (RotorSupport::none).
+// The flight image leaves the tensor estimate out until it fits the image's 32 KiB of
+// flash (docs/stm32f405.md, "Footprint"); the images built with ALOFT_STM32F405_WITH_TENSOR
+// have it, to measure what it costs (measure_footprint.cmake).
+#if defined(ALOFT_STM32F405_WITH_TENSOR)
+constexpr aloft::TensorEstimation tensor_estimation = aloft::TensorEstimation::on;
+#else
+constexpr aloft::TensorEstimation tensor_estimation = aloft::TensorEstimation::off;
+#endif
+using Pipeline =
+    aloft::OnboardPipeline<float, live_simulations, aloft::RotorSupport::none, tensor_estimation>;
 
 // The tensor is symmetric, so the array reads the same in row or column order.
 inline aloft::Mat3<float> body_tensor() { return Eigen::Map<const aloft::Mat3<float>>(&inertia_kg_m2[0][0]); }

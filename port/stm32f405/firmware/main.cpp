@@ -139,7 +139,8 @@ std::uint32_t samples_this_poll = 0;
 
 // Each finished flight, in the lines the host's replay prints too (flight_lines.hpp);
 // times in the driver's base: µs after the first sample. The flight is read where the
-// pipeline holds it, not copied: this path runs under the driver's burst.
+// pipeline holds it, not copied; taken after each burst of samples, not under it: the
+// flight's tensor estimate is solved here, and its frames would add to the driver's.
 ALOFT_COLD void report_finished_flights() {
   ReportWriter out;
   if (const aloft::FlightResult<float>* flight = pipeline->finished_flight()) {
@@ -155,7 +156,6 @@ void push_sample(void*, const aloft::ImuSample<float>& sample) {
   const aloft::Status pushed = pipeline->push(sample);
   if (pushed != aloft::Status::ok)
     ReportWriter().text("sample dropped: ").text(aloft::describe(pushed)).line();
-  report_finished_flights();
 }
 
 // The driver's sink: in flash, not on the stack under every sample's path.
@@ -176,6 +176,7 @@ int run() {
       return exit_bus_failed;
     }
     if (samples_this_poll > 0) last_sample_at_us = aloft_stm32f405::imu_bus_now_us();
+    report_finished_flights();
   }
   pipeline->finish();
   report_finished_flights();

@@ -46,6 +46,22 @@ inline Vec3<Scalar> integrated_body_torque(const Mat3<Scalar>& inertia, const Ve
   return inertia * delta_omega + integrated_gyroscopic_torque(inertia, p);
 }
 
+// The same as a linear map of the tensor's six entries (xx yy zz xy xz yz): column m is
+// integrated_body_torque(E_m, delta_omega, p) for the m-th unit tensor E_m (1 at (i, j) and
+// (j, i)). With E_m w = e_i w_j + e_j w_i, its gyroscopic part integrates to
+// P e_j x e_i + P e_i x e_j (one term when i = j): entries of P, no product of tensors
+// (tests/core/test_tensor_estimator.cpp checks each column against the line above).
+template <typename Scalar>
+inline Eigen::Matrix<Scalar, 3, 6> integrated_body_torque_per_entry(const Vec3<Scalar>& d,
+                                                                    const Mat3<Scalar>& p) {
+  const Scalar xx = p(0, 0), yy = p(1, 1), zz = p(2, 2), xy = p(0, 1), xz = p(0, 2), yz = p(1, 2);
+  Eigen::Matrix<Scalar, 3, 6> a;
+  a << d.x(), -yz, yz, d.y() - xz, d.z() + xy, yy - zz,  //
+      xz, d.y(), -xz, d.x() + yz, zz - xx, d.z() - xy,   //
+      -xy, xy, d.z(), xx - yy, d.x() - yz, d.y() + xz;
+  return a;
+}
+
 // The rotor's side, (h_b - h_a) + ∫ w x h dt with h = J s axis: from the change of its
 // speed s and S = ∫ s w dt.
 template <typename Scalar>

@@ -7,8 +7,11 @@
 //           -> release and landing of a spinning, off-centre IMU (aloft/onboard/release_detector.hpp),
 //              the release dated anew over a window (aloft/onboard/release_window.hpp)
 //           -> the onboard check (aloft/onboard/onboard_check.hpp) over the airborne samples, fed
-//              from the history from the (dated back) release on, never past the landing
-//           -> FlightResult, taken by the caller once the flight has ended.
+//              from the history from the (dated back) release on, never past the landing,
+//              and the tensor estimate (aloft/onboard/tensor_estimator.hpp) over the same samples,
+//              with the rotor's speed where there is one
+//           -> FlightResult, taken by the caller once the flight has ended (the tensor estimate
+//              is solved then, outside push: finished_flight()).
 // This file is the flight's state machine: on the ground (find_release), on probation
 // (the release window), airborne (find_landing), and the feeding of the check. A gap
 // longer than `bridge_gap_up_to_us` ends the live simulations (they are seeded anew after
@@ -21,6 +24,7 @@
 #include <cstdint>
 #include <new>
 #include <optional>
+#include <type_traits>
 
 #include "aloft/cold_path.hpp"
 #include "aloft/dynamics/rotor.hpp"
@@ -48,6 +52,7 @@ struct OnboardPipelineSettings {
   ReleaseDetectorSettings<Scalar> release = {};
   ReleaseWindowSettings<Scalar> release_window = {};
   LeverArmEstimatorSettings<Scalar> lever_arm = {};
+  TensorEstimatorSettings<Scalar> tensor = {};
   std::uint32_t min_flight_us = 100000;
   std::uint32_t rearm_after_landing_us = 300000;
   Scalar turned_at_least_rad = Scalar(0.5);
@@ -63,6 +68,7 @@ struct OnboardPipelineSettings {
     visit_settings(s.release, v);
     visit_settings(s.release_window, v);
     visit_settings(s.lever_arm, v);
+    visit_settings(s.tensor, v);
   }
 
  private:
@@ -171,10 +177,21 @@ struct FlightResult {
   TensorEstimate<Scalar> tensor;  // the tensor the flight itself shows (aloft/onboard/tensor_estimator.hpp)
 };
 
-template <typename Scalar, int K>
+// Whether a pipeline takes a rotor whose speed comes with the samples (SPEC §2 rotor,
+// ImuSample::rotor_rad_s). A firmware whose body has none builds RotorSupport::none: it
+// keeps no speeds in its history and ignores settings.rotor.
+enum class RotorSupport : std::uint8_t { none, speed_with_samples };
+// Whether a pipeline estimates the tensor each flight shows (FlightResult::tensor); off only
+// to measure what the estimate costs (docs/firmware.md).
+enum class TensorEstimation : std::uint8_t { off, on };
+
+template <typename Scalar, int K, RotorSupport R = RotorSupport::speed_with_samples,
+          TensorEstimation T = TensorEstimation::on>
 class OnboardPipeline {
  public:
   static constexpr int history_samples = onboard_history_samples;
+  static constexpr bool takes_rotor = R == RotorSupport::speed_with_samples;
+  static constexpr bool estimates_tensor = T == TensorEstimation::on;
 
   OnboardPipeline(const InertiaTensor<Scalar>& inertia, const OnboardPipelineSettings<Scalar>& settings)
       : inertia_(inertia),
@@ -211,6 +228,7 @@ class OnboardPipeline {
       if (!all_finite(gyro, accel))
         flags = static_cast<std::uint8_t>(flags | imu_gyro_clipped | imu_accel_clipped);
     }
+    speeds_.set(history_.count(), sample.rotor_rad_s);
     history_.push(sample.t_us, gyro, accel, flags);
     if (history_.count() > clock_.half_span()) detect(history_.count() - 1 - clock_.half_span());
     return Status::ok;
@@ -232,8 +250,14 @@ class OnboardPipeline {
     return true;
   }
   // The same without a copy (a firmware's stack): the flight that ended, or null; valid
-  // until the next push, or until release_finished_flight(), which says it was taken.
-  const FlightResult<Scalar>* finished_flight() const { return finished_ ? &current_ : nullptr; }
+  // until release_finished_flight(), which says it was taken (no new flight starts before).
+  // Its tensor estimate is solved here, on the first call: outside push, so that a
+  // firmware can take the flight after its burst of samples, off the deepest stack.
+  const FlightResult<Scalar>* finished_flight() {
+    if (!finished_) return nullptr;
+    if (tensor_pending_) solve_tensor_estimate();
+    return &current_;
+  }
   void release_finished_flight() { finished_ = false; }
 
   const OnboardPipelineSettings<Scalar>& settings() const { return settings_; }
@@ -283,6 +307,10 @@ class OnboardPipeline {
         detector_.find_release(history_, c, clock_.half_span(), known_r(), rearmed_at_us_);
     add_to_window(c);
     if (!release.found) return;
+    // The last flight is not taken yet: it is never overwritten. A firmware takes it after
+    // its burst of samples (port/stm32f405/firmware/main.cpp); after a landing no flight
+    // starts within rearm_after_landing_us anyway.
+    if (finished_) return;
     r_flight_ = release.r;
     on_probation_ = true;
     // A known r that missed this release (the detector fitted one near it) is no better
@@ -337,12 +365,18 @@ class OnboardPipeline {
     release_index_ = release;
     release_missed_given_r_ = release_missed_given_r;
     lever_arm_.start_flight(release_missed_given_r);
+    tensor_.start();
+    tensor_pending_ = false;
   }
 
   // Feeds the check every sample before index `end` not fed yet.
   void feed_until(std::uint32_t end) {
     for (; next_feed_ < end; ++next_feed_) {
-      if (history_.holds(next_feed_)) feed(next_feed_);
+      if (history_.holds(next_feed_)) {
+        feed(next_feed_);
+      } else {
+        tensor_.interrupt();
+      }
     }
   }
 
@@ -358,11 +392,34 @@ class OnboardPipeline {
     const Scalar dt = static_cast<Scalar>(dt_us) * Scalar(1e-6);
     if ((flags & imu_gyro_clipped) != 0) {
       (void)check_->skip(dt);
+      tensor_.interrupt();
       return;
     }
     if (check_->update_finite(history_.gyro(i), dt) == Status::ok) ++current_.samples;
     current_.turn_angle_rad += history_.gyro(i).norm() * dt;
+    estimate_sample(i, dt_us, flags);
     fit_sample(i);
+  }
+
+  // The tensor estimate takes the sample unless the samples broke before it (a gap) or the
+  // rotor's speed is missing where a rotor is.
+  void estimate_sample(std::uint32_t i, std::uint32_t dt_us, std::uint8_t flags) {
+    const bool rotor = rotor_present();
+    const bool no_speed = rotor && (flags & imu_rotor_speed) == 0;
+    if ((flags & imu_gap_before) != 0 || no_speed || !history_.holds(i - 1)) tensor_.interrupt();
+    if (no_speed) return;
+    tensor_.add(history_.gyro(i), history_.gyro(i - 1), rotor ? speeds_.get(i) : Scalar(0), dt_us,
+                tensor_inputs());
+  }
+
+  bool rotor_present() const { return takes_rotor && settings_.rotor.present(); }
+  TensorEstimatorInputs<Scalar> tensor_inputs() const {
+    // Without rotor support every speed is 0, so a rotor in the settings adds nothing.
+    return {settings_.tensor, inertia_, settings_.rotor};
+  }
+  ALOFT_COLD void solve_tensor_estimate() {
+    tensor_.finish(tensor_inputs(), current_.tensor);
+    tensor_pending_ = false;
   }
 
   // The lever-arm fit takes the samples the gyro calls torque-free.
@@ -403,6 +460,7 @@ class OnboardPipeline {
     current_.turned = current_.turn_angle_rad >= settings_.turned_at_least_rad;
     if (landed) rearmed_at_us_ = at_us + settings_.rearm_after_landing_us;
     report_lever_arm();
+    tensor_pending_ = estimates_tensor;
     finished_ = true;
   }
 
@@ -435,6 +493,7 @@ class OnboardPipeline {
   ReleaseWindow<Scalar> window_;
   LeverArmEstimator<Scalar> lever_arm_;
   std::optional<OnboardCheck<Scalar, K>> check_;
+  std::conditional_t<estimates_tensor, TensorEstimator<Scalar>, NoTensorEstimator<Scalar>> tensor_;
   FlightResult<Scalar> current_;
   Vec3<Scalar> r_flight_ = Vec3<Scalar>::Zero();  // the lever arm the open flight is judged with
   std::uint64_t rearmed_at_us_ = 0;
@@ -444,6 +503,9 @@ class OnboardPipeline {
   bool release_missed_given_r_ = false;  // the open flight's release was found with a fitted r
   bool on_probation_ = false;            // the release is still to be dated over the window
   bool finished_ = false;
+  bool tensor_pending_ = false;  // the finished flight's tensor estimate is still to be solved
+  // Last: without rotor support it holds nothing, and takes one byte beside the flags.
+  RotorSpeedHistory<Scalar, history_samples, takes_rotor> speeds_;
 };
 
 }  // namespace aloft

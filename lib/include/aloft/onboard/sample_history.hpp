@@ -79,4 +79,23 @@ class SampleHistory {
   std::uint32_t count_ = 0;
 };
 
+// The rotor's speed (ImuSample::rotor_rad_s) of the same N samples, by the same index, kept
+// only by a pipeline that takes a rotor (RotorSupport): the others hold nothing and read 0.
+template <typename Scalar, int N, bool Keep>
+class RotorSpeedHistory {
+ public:
+  void set(std::uint32_t i, Scalar speed) { speeds_[i % N] = speed; }
+  Scalar get(std::uint32_t i) const { return speeds_[i % N]; }
+
+ private:
+  Scalar speeds_[N] = {};
+};
+
+template <typename Scalar, int N>
+class RotorSpeedHistory<Scalar, N, false> {
+ public:
+  void set(std::uint32_t, Scalar) {}
+  Scalar get(std::uint32_t) const { return Scalar(0); }
+};
+
 }  // namespace aloft

@@ -49,16 +49,18 @@ constexpr const char* describe(TensorEstimateNote n) {
 
 template <typename Scalar>
 struct TensorEstimate {
-  bool determined = false;
-  bool absolute = false;  // principal is in kg·m²: a rotor's known momentum gave the scale
-  TensorEstimateNote note = TensorEstimateNote::too_short;
+  // The quaternion first: Eigen aligns it to 16 bytes, and behind the flags it left 16
+  // bytes of padding (80 B, not 64, in float).
+  Quat<Scalar> axes = Quat<Scalar>::Identity();  // principal frame into body axes
   // Principal moments, ascending: kg·m² when absolute, else scaled so that the largest is 1
   // (principal(0), principal(1) are then the ratios I1/I3, I2/I3).
   Vec3<Scalar> principal = Vec3<Scalar>::Zero();
   Vec3<Scalar> principal_95 = Vec3<Scalar>::Zero();  // 95 % half-widths, when absolute
   Scalar ratios_95[2] = {Scalar(0), Scalar(0)};      // 95 % half-widths of I1/I3, I2/I3
-  Quat<Scalar> axes = Quat<Scalar>::Identity();      // principal frame into body axes
   Vec3<Scalar> axes_95_rad = Vec3<Scalar>::Zero();   // each principal axis held within (95 %)
+  bool determined = false;
+  bool absolute = false;  // principal is in kg·m²: a rotor's known momentum gave the scale
+  TensorEstimateNote note = TensorEstimateNote::too_short;
 
   Scalar ratio(int i) const { return principal(i) / principal(2); }
 };
@@ -75,9 +77,6 @@ struct TensorLeastSquares {
   Scalar z[6] = {};                   // the right side, rotated with R
   Scalar rss = Scalar(0);             // residual sum of squares of b's part
   Scalar rate_squared_s = Scalar(0);  // sum over the pieces of ∫ |w|² dt, rad²/s
-  Scalar time_s = Scalar(0);          // the pieces' length together, s
-  std::uint16_t pieces = 0;
-  bool scaled = false;  // some piece had a rotor's momentum: b fixes the scale
 
   // One row a theta = b, rotated into R.
   void add_row(Scalar (&a)[6], Scalar b) {
@@ -107,12 +106,19 @@ struct TensorLeastSquares {
   }
 };
 
+// How many pieces went in, and whether any had a rotor's momentum (b fixes the scale).
+struct TensorPieces {
+  std::uint16_t count = 0;
+  bool scaled = false;
+};
+
 // What decides whether a flight determines the tensor (TensorEstimatorSettings holds them).
 template <typename Scalar>
 struct TensorDetermination {
   std::uint16_t min_pieces;
   Scalar min_rms_rate_rad_s;
   Scalar max_relative_sd;
+  std::uint32_t piece_us;  // the pieces last at least this long
 };
 
 namespace detail {
@@ -155,17 +161,18 @@ inline Scalar axis_angle_95(Scalar a, Scalar b, Scalar d, Scalar t_over_z) {
 // sum_k weight[k] v_k v_k^T over N's eigenvectors v_k, so each v_k is one such direction.
 // (A central difference in float, h = eps^(1/3), mixed the axes of moments within 0.5 %
 // of each other and got some intervals 3 times too narrow.)
+// m and axes: theta's tensor decomposed (the caller's frame: not stacked on this one's).
 template <typename Scalar>
-ALOFT_COLD inline void propagate(const Vec6<Scalar>& theta, const Eigen::Matrix<Scalar, 6, 6>& vectors,
-                                 const Vec6<Scalar>& weight, Scalar t, TensorEstimate<Scalar>& out) {
-  Vec3<Scalar> m;
-  Mat3<Scalar> axes;
-  symmetric_eigen_decomposition(tensor_of(theta), m, axes);
+ALOFT_COLD inline void propagate(const Vec3<Scalar>& m, const Mat3<Scalar>& axes,
+                                 const Eigen::Matrix<Scalar, 6, 6>& vectors, const Vec6<Scalar>& weight,
+                                 Scalar t, TensorEstimate<Scalar>& out) {
   Scalar var[5] = {};
   Mat3<Scalar> tilt = Mat3<Scalar>::Zero();
   for (int k = 0; k < 6; ++k) {
     if (!(weight(k) > Scalar(0))) continue;
-    const Mat3<Scalar> d = axes.transpose() * tensor_of<Scalar>(vectors.col(k)) * axes;
+    // d(a, b) = (V^T I(v_k) V)(a, b), only the six entries used.
+    const Mat3<Scalar> xv = tensor_of<Scalar>(vectors.col(k)) * axes;
+    const auto d = [&](int a, int b) { return axes.col(a).dot(xv.col(b)); };
     const Scalar u[5] = {(d(0, 0) * m(2) - m(0) * d(2, 2)) / (m(2) * m(2)),
                          (d(1, 1) * m(2) - m(1) * d(2, 2)) / (m(2) * m(2)), d(0, 0), d(1, 1), d(2, 2)};
     for (int i = 0; i < 5; ++i) var[i] += weight(k) * u[i] * u[i];
@@ -219,10 +226,10 @@ inline bool solve_scale_free(const Vec6<Scalar>& values, const Eigen::Matrix<Sca
 // With the scale: theta = N^-1 g from R's decomposition (x: R's columns rotated, x_k = R v_k),
 // the residual sum of squares as the rotations left it.
 template <typename Scalar>
-inline bool solve_scaled(const TensorLeastSquares<Scalar>& ls, const Vec6<Scalar>& values,
+inline bool solve_scaled(const TensorLeastSquares<Scalar>& ls, Scalar rows, const Vec6<Scalar>& values,
                          const Eigen::Matrix<Scalar, 6, 6>& vectors, const Eigen::Matrix<Scalar, 6, 6>& x,
                          Scalar max_relative_sd, Vec6<Scalar>& theta, Vec6<Scalar>& weight, Scalar& dof) {
-  dof = Scalar(3) * Scalar(ls.pieces) - Scalar(6);
+  dof = rows - Scalar(6);
   const Vec6<Scalar> z = Eigen::Map<const Vec6<Scalar>>(ls.z);
   const Scalar variance = ls.rss / dof;
   theta.setZero();
@@ -238,38 +245,53 @@ inline bool solve_scaled(const TensorLeastSquares<Scalar>& ls, const Vec6<Scalar
   return values(0) > floor * floor * values(5) && std::sqrt(weight(0)) <= max_relative_sd * theta.norm();
 }
 
+// N's eigen-decomposition from R, theta and its covariance's weights; false when the flight
+// does not fix theta. Its own frame: R's working copy is gone before the intervals are
+// carried to the figures (the stack of a firmware's flight end).
+template <typename Scalar>
+ALOFT_COLD inline bool solve_tensor(const TensorLeastSquares<Scalar>& ls, TensorPieces pieces,
+                                    Scalar max_relative_sd, Eigen::Matrix<Scalar, 6, 6>& vectors,
+                                    Vec6<Scalar>& theta, Vec6<Scalar>& weight, Scalar& dof) {
+  Eigen::Matrix<Scalar, 6, 6> x = ls.r_matrix();
+  Vec6<Scalar> values;
+  gram_eigen_decomposition(x, values, vectors);
+  const Scalar rows = Scalar(3) * static_cast<Scalar>(pieces.count);
+  return pieces.scaled ? solve_scaled(ls, rows, values, vectors, x, max_relative_sd, theta, weight, dof)
+                       : solve_scale_free(values, vectors, rows, max_relative_sd, theta, weight, dof);
+}
+
 }  // namespace detail
 
 // The estimate from a flight's least-squares problem; `scale` is theta's unit in kg·m².
 template <typename Scalar>
-ALOFT_COLD inline void estimate_tensor(const TensorLeastSquares<Scalar>& ls, Scalar scale,
-                                       const TensorDetermination<Scalar>& d, TensorEstimate<Scalar>& out) {
+ALOFT_COLD inline void estimate_tensor(const TensorLeastSquares<Scalar>& ls, TensorPieces pieces,
+                                       Scalar scale, const TensorDetermination<Scalar>& d,
+                                       TensorEstimate<Scalar>& out) {
   out = TensorEstimate<Scalar>();
-  if (ls.pieces < d.min_pieces) return;  // too_short
-  if (!(ls.rate_squared_s > d.min_rms_rate_rad_s * d.min_rms_rate_rad_s * ls.time_s)) {
+  if (pieces.count < d.min_pieces) return;  // too_short
+  const Scalar time_s = static_cast<Scalar>(pieces.count) * static_cast<Scalar>(d.piece_us) * Scalar(1e-6);
+  if (!(ls.rate_squared_s > d.min_rms_rate_rad_s * d.min_rms_rate_rad_s * time_s)) {
     out.note = TensorEstimateNote::too_little_turning;
     return;
   }
-  Eigen::Matrix<Scalar, 6, 6> x = ls.r_matrix(), vectors;
-  detail::Vec6<Scalar> values, theta, weight;
-  gram_eigen_decomposition(x, values, vectors);
+  Eigen::Matrix<Scalar, 6, 6> vectors;
+  detail::Vec6<Scalar> theta, weight;
   Scalar dof = Scalar(0);
-  const bool solved =
-      ls.scaled ? detail::solve_scaled(ls, values, vectors, x, d.max_relative_sd, theta, weight, dof)
-                : detail::solve_scale_free(values, vectors, Scalar(3) * Scalar(ls.pieces), d.max_relative_sd,
-                                           theta, weight, dof);
-  if (!solved) {
+  if (!detail::solve_tensor(ls, pieces, d.max_relative_sd, vectors, theta, weight, dof)) {
     out.note = TensorEstimateNote::one_axis_spin;
     return;
   }
-  detail::propagate(theta, vectors, weight, detail::t_quantile_975(dof), out);
+  Vec3<Scalar> m;
+  Mat3<Scalar> axes;
+  symmetric_eigen_decomposition(detail::tensor_of(theta), m, axes);
+  detail::propagate(m, axes, vectors, weight, detail::t_quantile_975(dof), out);
   if (!(out.principal(0) > Scalar(0))) {
     out.note = TensorEstimateNote::not_a_tensor;
     return;
   }
   out.determined = true;
   out.note = TensorEstimateNote::determined;
-  out.absolute = ls.scaled;
+  out.absolute = pieces.scaled;
   if (out.absolute) {
     out.principal *= scale;
     out.principal_95 *= scale;

@@ -29,8 +29,10 @@ namespace aloft {
 
 template <typename Scalar>
 struct TensorEstimatorSettings {
-  std::uint32_t piece_us = 40000;
-  std::uint32_t gyro_filter_us = 640;
+  // 16 bits: at most 65,535 µs each (the settings' struct in float stays a multiple of
+  // its 16-byte alignment: 32 bits each made it 16 bytes longer).
+  std::uint16_t piece_us = 40000;
+  std::uint16_t gyro_filter_us = 640;
   std::uint16_t min_pieces = 4;
   Scalar min_rms_rate_rad_s = Scalar(2);
   Scalar max_relative_sd = Scalar(0.05);
@@ -40,10 +42,10 @@ struct TensorEstimatorSettings {
   static void visit(Self& s, Visitor&& v) {
     v(s.piece_us, [] {
       return SettingInfo{"tensor.piece_us", "µs",
-                         "pieces over which Euler's equations are integrated. Chosen among 10-80 ms on "
+                         "pieces over which Euler's equations are integrated. Chosen among 10-60 ms on "
                          "generated flights (seeds 1-300, docs/tensor-estimate.md): 40 ms narrowed the "
-                         "ratios' intervals from 0.17 % (20 ms) to 0.13 % and covered 97 %; 80 ms lost short "
-                         "flights"};
+                         "ratios' intervals from 0.17 % (20 ms) to 0.13 % and covered 97 %; 60 ms narrowed "
+                         "them 13 % more but needs 0.26 s of flight for 4 pieces"};
     });
     v(s.gyro_filter_us, [] {
       return SettingInfo{"tensor.gyro_filter_us", "µs",
@@ -84,65 +86,70 @@ constexpr std::uint32_t piece_gap_filter_times = 3;
 // constants, 4e-6 after 12; e^-8 leaves 3e-4 of the transient.
 constexpr std::uint32_t settle_filter_times = 8;
 
+// What the estimator reads and does not keep (a firmware's RAM holds them once, in the
+// pipeline): its settings, the nominal tensor that weighs the rows, the rotor.
+template <typename Scalar>
+struct TensorEstimatorInputs {
+  const TensorEstimatorSettings<Scalar>& settings;
+  const InertiaTensor<Scalar>& nominal;
+  const Rotor<Scalar>& rotor;
+};
+
 template <typename Scalar>
 class TensorEstimator {
  public:
-  TensorEstimator(const TensorEstimatorSettings<Scalar>& settings, const InertiaTensor<Scalar>& nominal,
-                  const Rotor<Scalar>& rotor)
-      : settings_(&settings), nominal_(&nominal), rotor_(&rotor) {}
+  using Inputs = TensorEstimatorInputs<Scalar>;
 
   // A new flight.
   void start() {
     ls_ = TensorLeastSquares<Scalar>();
+    piece_count_ = 0;
+    scaled_ = false;
     phase_ = Phase::idle;
   }
 
-  // One airborne sample: the body rate (body axes), the rotor's speed relative to the body
-  // (0 without one), and the time since the sample before (not read after start() or
-  // interrupt()).
-  void add(const Vec3<Scalar>& w, Scalar rotor_speed, std::uint32_t dt_us) {
+  // One airborne sample: the body rate (body axes), the rate of the sample before it (the
+  // caller holds it: a pipeline's history), the rotor's speed relative to the body (0
+  // without one), and the time since the sample before. The sample before is not read
+  // after start() or interrupt().
+  void add(const Vec3<Scalar>& w, const Vec3<Scalar>& w_before, Scalar rotor_speed, std::uint32_t dt_us,
+           const Inputs& in) {
     if (phase_ == Phase::idle) {
       // The filters start here: the first piece waits for their transient.
       speed_f_ = rotor_speed;
-      omega_prev_ = w;
       elapsed_us_ = 0;
       phase_ = Phase::settle;
       return;
     }
     const Scalar dt = static_cast<Scalar>(dt_us) * Scalar(1e-6);
-    const Scalar tau = static_cast<Scalar>(settings_->gyro_filter_us) * Scalar(1e-6);
-    // The rotor's speed through a filter like the gyro's, so that both lag alike.
+    const Scalar tau = static_cast<Scalar>(in.settings.gyro_filter_us) * Scalar(1e-6);
+    // The rotor's speed through a filter like the gyro's, so that both lag alike (without a
+    // rotor it stays 0, and the sample's work has no rotor terms).
+    const bool rotor = in.rotor.present();
     const Scalar speed_before = speed_f_;
-    speed_f_ += (dt / (tau + dt)) * (rotor_speed - speed_f_);
+    if (rotor) speed_f_ += (dt / (tau + dt)) * (rotor_speed - speed_f_);
     const bool first_step = elapsed_us_ == 0;
     elapsed_us_ += dt_us;
     if (phase_ != Phase::piece) {
-      omega_prev_ = w;
       const std::uint32_t filter_times = phase_ == Phase::gap ? piece_gap_filter_times : settle_filter_times;
-      if (elapsed_us_ >= filter_times * settings_->gyro_filter_us) start_piece(w);
+      if (elapsed_us_ >= filter_times * in.settings.gyro_filter_us) start_piece(w);
       return;
     }
     // The filter's own term over this interval (docs/tensor-estimate.md): the true rate is
     // w + tau (w - w_before) / dt, which adds tau (tau + dt) ∫ w_dot w_dot^T dt to the
     // gyroscopic integral, w_dot from the difference (midpoint rule).
-    const Vec3<Scalar> dw = w - omega_prev_;
+    const Vec3<Scalar> dw = w - w_before;
     const Scalar ds = speed_f_ - speed_before;
-    omega_prev_ = w;
-    integrate(dw, ds, tau * (tau + dt) / dt);
     // Trapezoid rule on the rates: each sample weighs dt, the piece's first and last half
     // of theirs (exact on evenly spaced samples, without keeping the sample before), and
     // Euler-Maclaurin's end correction -dt²/12 (f'(t_b) - f'(t_a)), f' from the first and
     // last differences: the trapezoid's error goes from (dt Ω)² to (dt Ω)⁴ at no cost per
     // sample (a throw at 28 rad/s sampled at 1 kHz: ratios 1.6e-4 off without it).
-    if (first_step) {
-      integrate(omega_a_, speed_a_, Scalar(0.5) * dt);
-      integrate_slope(omega_a_, dw, speed_a_, ds, dt / Scalar(12));
-    }
-    integrate(w, speed_f_, dt);
-    if (elapsed_us_ >= settings_->piece_us) {
-      integrate(w, speed_f_, Scalar(-0.5) * dt);
-      integrate_slope(w, dw, speed_f_, ds, -dt / Scalar(12));
-      close_piece(w, speed_f_);
+    if (first_step) integrate_end(omega_a_, dw, speed_a_, ds, dt);
+    integrate_sample(w, dw, ds, dt, tau * (tau + dt) / dt, rotor);
+    if (elapsed_us_ >= in.settings.piece_us) {
+      integrate_end(w, dw, speed_f_, ds, -dt);
+      close_piece(w, speed_f_, in);
     }
   }
 
@@ -151,13 +158,15 @@ class TensorEstimator {
   void interrupt() { phase_ = Phase::idle; }
 
   // The flight's estimate (cold: once per flight).
-  ALOFT_COLD void finish(TensorEstimate<Scalar>& out) const {
-    const TensorDetermination<Scalar> d{settings_->min_pieces, settings_->min_rms_rate_rad_s,
-                                        settings_->max_relative_sd};
-    estimate_tensor(ls_, nominal_scale(), d, out);
+  ALOFT_COLD void finish(const Inputs& in, TensorEstimate<Scalar>& out) const {
+    const TensorDetermination<Scalar> d{in.settings.min_pieces, in.settings.min_rms_rate_rad_s,
+                                        in.settings.max_relative_sd,
+                                        static_cast<std::uint32_t>(in.settings.piece_us)};
+    estimate_tensor(ls_, pieces(), nominal_scale(in.nominal), d, out);
   }
 
   const TensorLeastSquares<Scalar>& least_squares() const { return ls_; }
+  TensorPieces pieces() const { return TensorPieces{piece_count_, scaled_}; }
 
  private:
   enum class Phase : std::uint8_t {
@@ -168,13 +177,14 @@ class TensorEstimator {
   };
 
   // theta's unit: the nominal tensor's mean moment.
-  Scalar nominal_scale() const { return nominal_->tensor().trace() / Scalar(3); }
+  static Scalar nominal_scale(const InertiaTensor<Scalar>& nominal) {
+    return nominal.tensor().trace() / Scalar(3);
+  }
 
   void start_piece(const Vec3<Scalar>& w) {
     phase_ = Phase::piece;
     elapsed_us_ = 0;
     omega_a_ = w;
-    omega_prev_ = w;
     speed_a_ = speed_f_;
     for (Scalar& p : products_) p = Scalar(0);
     speed_omega_.setZero();
@@ -189,6 +199,28 @@ class TensorEstimator {
     products_[4] += ww.x() * w.z();
     products_[5] += ww.y() * w.z();
     speed_omega_ += rotor_speed * ww;
+  }
+
+  // One sample's share, in one pass over the integrals: dt w w^T and the filter's term
+  // c dw dw^T (c = tau (tau + dt) / dt), and the rotor's dt s w and c ds dw.
+  void integrate_sample(const Vec3<Scalar>& w, const Vec3<Scalar>& dw, Scalar ds, Scalar dt, Scalar c,
+                        bool rotor) {
+    const Vec3<Scalar> a = dt * w, b = c * dw;
+    products_[0] += a.x() * w.x() + b.x() * dw.x();
+    products_[1] += a.y() * w.y() + b.y() * dw.y();
+    products_[2] += a.z() * w.z() + b.z() * dw.z();
+    products_[3] += a.x() * w.y() + b.x() * dw.y();
+    products_[4] += a.x() * w.z() + b.x() * dw.z();
+    products_[5] += a.y() * w.z() + b.y() * dw.z();
+    if (rotor) speed_omega_ += speed_f_ * a + ds * b;
+  }
+
+  // A piece's end (dt > 0 its first, dt < 0 its last): half the sample's weight, and the
+  // end correction. Out of line: twice a piece, not on every sample's code path.
+  ALOFT_OUT_OF_LINE void integrate_end(const Vec3<Scalar>& w, const Vec3<Scalar>& dw, Scalar speed, Scalar ds,
+                                       Scalar dt) {
+    integrate(w, speed, Scalar(0.5) * dt);
+    integrate_slope(w, dw, speed, ds, dt / Scalar(12));
   }
 
   // weight (dw w^T + w dw^T) and weight (ds w + s dw): dt² f' of the integrands, times
@@ -207,24 +239,19 @@ class TensorEstimator {
 
   // The piece's three rows: column m is the body's side of the integrated equations for
   // the m-th unit tensor (theta's entries), the right side the rotor's.
-  ALOFT_OUT_OF_LINE void close_piece(const Vec3<Scalar>& w_b, Scalar speed_b) {
+  ALOFT_OUT_OF_LINE void close_piece(const Vec3<Scalar>& w_b, Scalar speed_b, const Inputs& in) {
     Mat3<Scalar> p;
     p << products_[0], products_[3], products_[4], products_[3], products_[1], products_[5], products_[4],
         products_[5], products_[2];
     const Vec3<Scalar> delta_omega = w_b - omega_a_;
-    const Mat3<Scalar>& to_rates = nominal_->inverse();
-    const Scalar scale = nominal_scale();
-    Eigen::Matrix<Scalar, 3, 6> a;
-    for (int m = 0; m < 6; ++m) {
-      Mat3<Scalar> unit = Mat3<Scalar>::Zero();
-      const int i = m < 3 ? m : (m == 5 ? 1 : 0), j = m < 3 ? m : (m == 3 ? 1 : 2);
-      unit(i, j) = unit(j, i) = Scalar(1);
-      a.col(m) = scale * (to_rates * integrated_body_torque(unit, delta_omega, p));
-    }
+    const Mat3<Scalar>& to_rates = in.nominal.inverse();
+    const Scalar scale = nominal_scale(in.nominal);
+    const Eigen::Matrix<Scalar, 3, 6> a =
+        (scale * to_rates) * integrated_body_torque_per_entry(delta_omega, p);
     Vec3<Scalar> b = Vec3<Scalar>::Zero();
-    if (rotor_->present()) {
-      b = -(to_rates * integrated_rotor_torque(*rotor_, speed_b - speed_a_, speed_omega_));
-      if (b.squaredNorm() > Scalar(0)) ls_.scaled = true;
+    if (in.rotor.present()) {
+      b = -(to_rates * integrated_rotor_torque(in.rotor, speed_b - speed_a_, speed_omega_));
+      if (b.squaredNorm() > Scalar(0)) scaled_ = true;
     }
     for (int r = 0; r < 3; ++r) {
       Scalar row[6];
@@ -232,25 +259,35 @@ class TensorEstimator {
       ls_.add_row(row, b(r));
     }
     ls_.rate_squared_s += products_[0] + products_[1] + products_[2];
-    ls_.time_s += static_cast<Scalar>(elapsed_us_) * Scalar(1e-6);
-    ++ls_.pieces;
+    ++piece_count_;
     phase_ = Phase::gap;
     elapsed_us_ = 0;
   }
 
-  const TensorEstimatorSettings<Scalar>* settings_;
-  const InertiaTensor<Scalar>* nominal_;
-  const Rotor<Scalar>* rotor_;
   TensorLeastSquares<Scalar> ls_;
   // The open piece: its first sample, and the integrals so far.
   Vec3<Scalar> omega_a_ = Vec3<Scalar>::Zero();
   Scalar speed_a_ = Scalar(0);
   Scalar products_[6] = {};                          // ∫ w_i w_j dt: xx yy zz xy xz yz
   Vec3<Scalar> speed_omega_ = Vec3<Scalar>::Zero();  // ∫ s w dt
-  Vec3<Scalar> omega_prev_ = Vec3<Scalar>::Zero();   // the sample before
   Scalar speed_f_ = Scalar(0);                       // the rotor's speed, filtered
   std::uint32_t elapsed_us_ = 0;                     // in the open piece, or since the last one ended
+  // Packed in one word (196 B in float with a TensorPieces here, 192 without).
+  std::uint16_t piece_count_ = 0;
+  bool scaled_ = false;  // some piece had a rotor's momentum
   Phase phase_ = Phase::idle;
+};
+
+// What a pipeline built without the estimate (TensorEstimation::off) holds in its place:
+// nothing, so that the estimate's cost can be measured against it.
+template <typename Scalar>
+class NoTensorEstimator {
+ public:
+  void start() {}
+  void add(const Vec3<Scalar>&, const Vec3<Scalar>&, Scalar, std::uint32_t,
+           const TensorEstimatorInputs<Scalar>&) {}
+  void interrupt() {}
+  void finish(const TensorEstimatorInputs<Scalar>&, TensorEstimate<Scalar>&) const {}
 };
 
 }  // namespace aloft

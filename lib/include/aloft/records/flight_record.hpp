@@ -2,13 +2,16 @@
 // versioned slot of 128 bytes that a firmware appends to its record ring
 // (aloft/records/record_ring.hpp) and `aloft records` reads back from a dump. Every field is
 // little-endian and written byte by byte (aloft/records/little_endian.hpp); floats are IEEE-754
-// binary32; angles are radians. Versions 1 and 2 share one layout and differ only in what
-// the settings hash covers (aloft/records/settings_hash.hpp): version 2 walks the settings'
-// one list with the build constants; version 1, written before, hashed a shorter list.
-// Both are read, and a record says which it is. Layout:
+// binary32, "bf16" their upper 16 bits rounded (3 significant digits); angles are radians.
+// Versions 1 and 2 share one layout and differ only in what the settings hash covers
+// (aloft/records/settings_hash.hpp): version 2 walks the settings' one list with the build
+// constants; version 1, written before, hashed a shorter list. Version 3 keeps the flight's
+// own tensor estimate (aloft/onboard/tensor_estimate.hpp) where versions 1 and 2 kept the
+// first seeds' figures, and hashes the settings' list with the tensor estimate's. All three
+// are read, and a record says which it is. Layout:
 //   offset size field
 //        0    4 magic "ALFR" (41 4C 46 52)
-//        4    2 version (2; 1 for records written before)
+//        4    2 version (3; 1 or 2 for records written before)
 //        6    2 record size in bytes (128)
 //        8    4 sequence number: 1, 2, ... over the life of the ring, across wraps
 //       12    4 flight number within its recording (FlightResult::flight_number)
@@ -17,17 +20,28 @@
 //       32    4 airborne samples fed to the check
 //       36    4 gaps while airborne
 //       40    4 clipped samples while airborne
-//       44    4 flags: bit 0 landed, bit 1 turned, bit 2 IMU position estimated
+//       44    4 flags: bit 0 landed, bit 1 turned, bit 2 IMU position estimated; version 3:
+//                bit 3 tensor determined, bit 4 absolute moments, bits 5-7 its note
+//                (TensorEstimateNote)
 //       48    4 comparisons behind the overall statistics
 //       52    4 RMS deviation angle, overall (rad)
 //       56    4 RMS relative error, overall
 //       60    4 maximum deviation angle (rad)
 //       64    4 maximum relative error
+//   versions 1 and 2:
 //       68    4 seeds stored below (0 to 4)
 //       72   32 the first 4 seeds: RMS deviation angle (rad), RMS relative error; 4+4 each
+//      112    4 reserved, 0
+//   version 3, the tensor estimate:
+//       68   12 principal moments, ascending: kg·m² when absolute, else I1/I3, I2/I3, 1
+//       80   12 principal axes: x, y, z of the quaternion (w >= 0, the rest of a unit one)
+//       92    4 bf16: 95 % half-widths of I1/I3, I2/I3
+//       96    6 bf16: 95 % half-widths of the moments (absolute only, else 0)
+//      102    2 bf16: the angle within which principal axis 1 is held (95 %)
+//      112    4 bf16: the same for axes 2 and 3
+//   all versions:
 //      104    4 tensor hash (aloft/records/flight_record_from_result.hpp says what is hashed)
 //      108    4 settings hash (same)
-//      112    4 reserved, 0
 //      116    4 CRC-32 (aloft/records/crc32.hpp) of bytes 0..115
 //      120    4 commit marker "COMT" (43 4F 4D 54), programmed after everything else
 //      124    4 left erased (0xFF)
@@ -48,7 +62,7 @@ constexpr std::uint32_t flight_record_size = 128;
 constexpr std::uint32_t flight_record_body_size = 120;  // programmed first: bytes 0..119
 constexpr std::uint32_t flight_record_crc_offset = 116;
 constexpr std::uint32_t flight_record_commit_offset = 120;
-constexpr std::uint16_t flight_record_version = 2;         // the version written
+constexpr std::uint16_t flight_record_version = 3;         // the version written
 constexpr std::uint16_t flight_record_oldest_version = 1;  // the oldest one read
 constexpr std::uint32_t flight_record_seeds = 4;
 constexpr std::uint8_t flight_record_magic[4] = {0x41, 0x4C, 0x46, 0x52};   // "ALFR"
@@ -57,6 +71,18 @@ constexpr std::uint8_t flight_record_commit[4] = {0x43, 0x4F, 0x4D, 0x54};  // "
 struct FlightRecordSeed {
   float rms_da_rad = 0.0f;
   float rms_rel_err = 0.0f;
+};
+
+// The tensor estimate a version 3 record keeps (TensorEstimate's figures, in float).
+struct FlightRecordTensor {
+  bool determined = false;
+  bool absolute = false;
+  std::uint8_t note = 0;       // TensorEstimateNote
+  float principal[3] = {};     // kg·m² when absolute, else I1/I3, I2/I3, 1
+  float axes_xyz[3] = {};      // quaternion x, y, z; w = sqrt(1 - x² - y² - z²) >= 0
+  float ratios_95[2] = {};     // half-widths
+  float principal_95[3] = {};  // half-widths, absolute only
+  float axes_95_rad[3] = {};
 };
 
 struct FlightRecord {
@@ -77,7 +103,8 @@ struct FlightRecord {
   float max_da_rad = 0.0f;
   float max_rel_err = 0.0f;
   std::uint32_t seeds_stored = 0;
-  FlightRecordSeed seeds[flight_record_seeds] = {};
+  FlightRecordSeed seeds[flight_record_seeds] = {};  // versions 1 and 2
+  FlightRecordTensor tensor;                         // version 3
   std::uint32_t tensor_hash = 0;
   std::uint32_t settings_hash = 0;
 };
@@ -118,24 +145,55 @@ inline void encode_flight_record(const FlightRecord& r, std::uint8_t (&slot)[fli
   le::put_u32(p + 32, r.samples);
   le::put_u32(p + 36, r.gaps);
   le::put_u32(p + 40, r.clipped_samples);
-  le::put_u32(p + 44, (r.landed ? 1u : 0u) | (r.turned ? 2u : 0u) | (r.imu_position_estimated ? 4u : 0u));
+  const FlightRecordTensor& t = r.tensor;
+  le::put_u32(p + 44, (r.landed ? 1u : 0u) | (r.turned ? 2u : 0u) | (r.imu_position_estimated ? 4u : 0u) |
+                          (t.determined ? 8u : 0u) | (t.absolute ? 16u : 0u) | ((t.note & 7u) << 5));
   le::put_u32(p + 48, r.comparisons);
   le::put_f32(p + 52, r.rms_da_rad);
   le::put_f32(p + 56, r.rms_rel_err);
   le::put_f32(p + 60, r.max_da_rad);
   le::put_f32(p + 64, r.max_rel_err);
-  const std::uint32_t seeds = r.seeds_stored < flight_record_seeds ? r.seeds_stored : flight_record_seeds;
-  le::put_u32(p + 68, seeds);
-  for (std::uint32_t i = 0; i < flight_record_seeds; ++i) {
-    const FlightRecordSeed s = i < seeds ? r.seeds[i] : FlightRecordSeed();
-    le::put_f32(p + 72 + 8 * i, s.rms_da_rad);
-    le::put_f32(p + 76 + 8 * i, s.rms_rel_err);
+  for (int i = 0; i < 3; ++i) {
+    le::put_f32(p + 68 + 4 * i, t.principal[i]);
+    le::put_f32(p + 80 + 4 * i, t.axes_xyz[i]);
+    le::put_bf16(p + 96 + 2 * i, t.principal_95[i]);
   }
+  le::put_bf16(p + 92, t.ratios_95[0]);
+  le::put_bf16(p + 94, t.ratios_95[1]);
+  le::put_bf16(p + 102, t.axes_95_rad[0]);
+  le::put_bf16(p + 112, t.axes_95_rad[1]);
+  le::put_bf16(p + 114, t.axes_95_rad[2]);
   le::put_u32(p + 104, r.tensor_hash);
   le::put_u32(p + 108, r.settings_hash);
-  le::put_u32(p + 112, 0);
   le::put_u32(p + flight_record_crc_offset, crc32(p, flight_record_crc_offset));
   for (std::uint32_t i = 0; i < 4; ++i) p[flight_record_commit_offset + i] = flight_record_commit[i];
+}
+
+// Versions 1 and 2: the first seeds' figures.
+inline void decode_seeds(const std::uint8_t* p, FlightRecord& r) {
+  const std::uint32_t seeds = le::get_u32(p + 68);
+  r.seeds_stored = seeds < flight_record_seeds ? seeds : flight_record_seeds;
+  for (std::uint32_t i = 0; i < flight_record_seeds; ++i) {
+    r.seeds[i].rms_da_rad = le::get_f32(p + 72 + 8 * i);
+    r.seeds[i].rms_rel_err = le::get_f32(p + 76 + 8 * i);
+  }
+}
+
+// Version 3: the tensor estimate.
+inline void decode_tensor(const std::uint8_t* p, std::uint32_t flags, FlightRecordTensor& t) {
+  t.determined = (flags & 8u) != 0;
+  t.absolute = (flags & 16u) != 0;
+  t.note = static_cast<std::uint8_t>((flags >> 5) & 7u);
+  for (int i = 0; i < 3; ++i) {
+    t.principal[i] = le::get_f32(p + 68 + 4 * i);
+    t.axes_xyz[i] = le::get_f32(p + 80 + 4 * i);
+    t.principal_95[i] = le::get_bf16(p + 96 + 2 * i);
+  }
+  t.ratios_95[0] = le::get_bf16(p + 92);
+  t.ratios_95[1] = le::get_bf16(p + 94);
+  t.axes_95_rad[0] = le::get_bf16(p + 102);
+  t.axes_95_rad[1] = le::get_bf16(p + 112);
+  t.axes_95_rad[2] = le::get_bf16(p + 114);
 }
 
 // The fields of a slot whose state is `valid` (left untouched otherwise).
@@ -157,11 +215,10 @@ inline void decode_flight_record_fields(const std::uint8_t* p, FlightRecord& r) 
   r.rms_rel_err = le::get_f32(p + 56);
   r.max_da_rad = le::get_f32(p + 60);
   r.max_rel_err = le::get_f32(p + 64);
-  const std::uint32_t seeds = le::get_u32(p + 68);
-  r.seeds_stored = seeds < flight_record_seeds ? seeds : flight_record_seeds;
-  for (std::uint32_t i = 0; i < flight_record_seeds; ++i) {
-    r.seeds[i].rms_da_rad = le::get_f32(p + 72 + 8 * i);
-    r.seeds[i].rms_rel_err = le::get_f32(p + 76 + 8 * i);
+  if (r.version <= 2) {
+    decode_seeds(p, r);
+  } else {
+    decode_tensor(p, flags, r.tensor);
   }
   r.tensor_hash = le::get_u32(p + 104);
   r.settings_hash = le::get_u32(p + 108);

@@ -25,9 +25,28 @@ std::uint32_t tensor_hash(const Mat3<Scalar>& tensor) {
   return crc32(bytes, sizeof(bytes));
 }
 
-// The record of one finished flight, with its first seeds (FlightResult::first_seeds);
-// its sequence number is set when the ring stores it.
-static_assert(kept_first_seeds == flight_record_seeds, "a record holds the seeds the check keeps");
+// The tensor estimate as a version 3 record keeps it (the quaternion with w >= 0).
+template <typename Scalar>
+FlightRecordTensor record_tensor(const TensorEstimate<Scalar>& e) {
+  FlightRecordTensor t;
+  t.determined = e.determined;
+  t.absolute = e.absolute;
+  t.note = static_cast<std::uint8_t>(e.note);
+  const Scalar sign = e.axes.w() < Scalar(0) ? Scalar(-1) : Scalar(1);
+  const Scalar xyz[3] = {e.axes.x(), e.axes.y(), e.axes.z()};
+  for (int i = 0; i < 3; ++i) {
+    t.principal[i] = static_cast<float>(e.principal(i));
+    t.axes_xyz[i] = static_cast<float>(sign * xyz[i]);
+    t.principal_95[i] = static_cast<float>(e.principal_95(i));
+    t.axes_95_rad[i] = static_cast<float>(e.axes_95_rad(i));
+  }
+  t.ratios_95[0] = static_cast<float>(e.ratios_95[0]);
+  t.ratios_95[1] = static_cast<float>(e.ratios_95[1]);
+  return t;
+}
+
+// The record of one finished flight, with its tensor estimate (FlightResult::tensor); its
+// sequence number is set when the ring stores it. (Version 3 keeps no first seeds.)
 template <typename Scalar>
 FlightRecord make_flight_record(const FlightResult<Scalar>& result, std::uint32_t tensor_hash_value,
                                 std::uint32_t settings_hash_value) {
@@ -46,12 +65,7 @@ FlightRecord make_flight_record(const FlightResult<Scalar>& result, std::uint32_
   r.rms_rel_err = static_cast<float>(result.overall.rms_relative_error());
   r.max_da_rad = static_cast<float>(result.overall.max_da());
   r.max_rel_err = static_cast<float>(result.overall.max_relative_error());
-  r.seeds_stored =
-      result.first_seed_count < flight_record_seeds ? result.first_seed_count : flight_record_seeds;
-  for (std::uint32_t i = 0; i < r.seeds_stored; ++i) {
-    r.seeds[i].rms_da_rad = static_cast<float>(result.first_seeds[i].rms_da_rad);
-    r.seeds[i].rms_rel_err = static_cast<float>(result.first_seeds[i].rms_rel_err);
-  }
+  r.tensor = record_tensor(result.tensor);
   r.tensor_hash = tensor_hash_value;
   r.settings_hash = settings_hash_value;
   return r;

@@ -54,12 +54,27 @@ inline void put_f32(std::uint8_t* p, float v) {
   put_u32(p, bits);
 }
 
+// The float's upper 16 bits, rounded to nearest (bfloat16: its sign, exponent and 7
+// mantissa bits, 0.4 % apart): for the figures a record keeps to a few digits.
+inline void put_bf16(std::uint8_t* p, float v) {
+  std::uint32_t bits = 0;
+  std::memcpy(&bits, &v, 4);
+  put_u16(p, static_cast<std::uint16_t>((bits + 0x8000u) >> 16));
+}
+
 inline std::uint16_t get_u16(const std::uint8_t* p) { return get<std::uint16_t>(p); }
 inline std::uint32_t get_u32(const std::uint8_t* p) { return get<std::uint32_t>(p); }
 inline std::uint64_t get_u64(const std::uint8_t* p) { return get<std::uint64_t>(p); }
 
 inline float get_f32(const std::uint8_t* p) {
   const std::uint32_t bits = get_u32(p);
+  float v = 0.0f;
+  std::memcpy(&v, &bits, 4);
+  return v;
+}
+
+inline float get_bf16(const std::uint8_t* p) {
+  const std::uint32_t bits = static_cast<std::uint32_t>(get_u16(p)) << 16;
   float v = 0.0f;
   std::memcpy(&v, &bits, 4);
   return v;

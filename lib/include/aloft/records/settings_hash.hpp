@@ -6,7 +6,8 @@
 // whatever Scalar is (a firmware checks in float), an integer in its own width, a flag one
 // byte, a quaternion w x y z, a vector x y z. docs/onboard-settings.md lists the settings
 // in that order. Records of version 1 carry the hash of an earlier, hand-written list
-// (without the build constants and the two level factors).
+// (without the build constants and the two level factors); records of version 2 that of the
+// list before the rotor and the tensor estimate's settings joined it.
 #pragma once
 
 #include <cstdint>
