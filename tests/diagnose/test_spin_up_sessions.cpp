@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -29,19 +30,23 @@ namespace gen = aloft::generator;
 
 namespace {
 
-// The tuning set unless ALOFT_SPIN_UP_SEEDS=withheld, =fresh or =unseen.
-gen::RotorSeeds spin_up_seeds() {
-  const char* set = std::getenv("ALOFT_SPIN_UP_SEEDS");
-  const std::string name = set != nullptr ? set : "";
-  if (name == "withheld") return gen::RotorSeeds::withheld;
-  if (name == "fresh") return gen::RotorSeeds::fresh;
-  if (name == "unseen") return gen::RotorSeeds::unseen;
-  return gen::RotorSeeds::tuning;
-}
-
 int sessions_per_kind() {
   const char* count = std::getenv("ALOFT_SPIN_UP_SESSIONS");
   return count != nullptr ? std::max(1, std::atoi(count)) : 5;
+}
+
+// The tuning set unless ALOFT_SPIN_UP_SEEDS=withheld, =fresh, =unseen, or a number: the
+// first seed of a set never drawn before.
+std::vector<gen::SessionCase> spin_up_cases() {
+  const char* set = std::getenv("ALOFT_SPIN_UP_SEEDS");
+  const std::string name = set != nullptr ? set : "";
+  if (!name.empty() && std::isdigit(static_cast<unsigned char>(name.front())))
+    return gen::flight_controller_session_cases(std::stoull(name), sessions_per_kind(), 4);
+  const gen::RotorSeeds seeds = name == "withheld" ? gen::RotorSeeds::withheld
+                                : name == "fresh"  ? gen::RotorSeeds::fresh
+                                : name == "unseen" ? gen::RotorSeeds::unseen
+                                                   : gen::RotorSeeds::tuning;
+  return gen::flight_controller_session_cases(seeds, sessions_per_kind(), 4);
 }
 
 std::string effects_text(const Verdict& v) {
@@ -157,8 +162,7 @@ TEST_CASE("the spin-up model moves as the generator's independent integrator doe
 
 TEST_CASE("spin-up rotor sessions are named a rotor, their look-alikes never", "[rotor][spin_up]") {
   std::map<std::string, Tally> tallies;
-  for (const gen::SessionCase& c :
-       gen::flight_controller_session_cases(spin_up_seeds(), sessions_per_kind(), 4)) {
+  for (const gen::SessionCase& c : spin_up_cases()) {
     std::vector<gen::GeneratedFlight> generated;
     const SessionDiagnosis d = judge(c, generated, false);
     const std::string kind = c.name.substr(0, c.name.rfind('_'));
@@ -199,8 +203,7 @@ TEST_CASE("spin-up rotor sessions are named a rotor, their look-alikes never", "
 
 TEST_CASE("windows before the wheel starts make no confident claim", "[rotor][spin_up]") {
   int windows = 0, confident = 0;
-  for (const gen::SessionCase& c :
-       gen::flight_controller_session_cases(spin_up_seeds(), sessions_per_kind(), 4)) {
+  for (const gen::SessionCase& c : spin_up_cases()) {
     if (c.name.rfind("spin_up", 0) != 0) continue;
     std::vector<gen::GeneratedFlight> generated;
     const SessionDiagnosis d = judge(c, generated, true);
