@@ -55,11 +55,21 @@ std::string effects_text(const Verdict& v) {
   return out.empty() ? std::string("none") : out;
 }
 
-// A rotor named, steady or spun up (both report as internal_momentum).
-bool names_rotor(const Verdict& v) {
-  return std::any_of(v.effects.begin(), v.effects.end(), [](const VerdictEffect& e) {
+// The rotor the verdict names, steady or spun up (both report as internal_momentum); null:
+// none.
+const VerdictEffect* named_rotor(const Verdict& v) {
+  const auto named = std::find_if(v.effects.begin(), v.effects.end(), [](const VerdictEffect& e) {
     return std::string(effect_name(e.effect)) == "internal_momentum";
   });
+  return named == v.effects.end() ? nullptr : &*named;
+}
+
+bool names_rotor(const Verdict& v) { return named_rotor(v) != nullptr; }
+
+// The true h at the end of a generated flight.
+Eigen::Vector3d true_h_at_end(const gen::GeneratedFlight& g) {
+  const auto& h = g.truth.params.at("h_N_m_s");
+  return Eigen::Vector3d(h[0], h[1], h[2]);
 }
 
 struct Tally {
@@ -69,16 +79,13 @@ struct Tally {
 // The named rotor's h at the end of the data (the session's longest flight) along the true
 // wheel's axis, over that flight's true h there: the held-back real wheels' bar is 0.5-2.
 double h_at_end_ratio(const Verdict& v, const std::vector<gen::GeneratedFlight>& generated, bool& spun_up) {
-  const auto named = std::find_if(v.effects.begin(), v.effects.end(), [](const VerdictEffect& e) {
-    return std::string(effect_name(e.effect)) == "internal_momentum";
-  });
-  if (named == v.effects.end()) return 0.0;
+  const VerdictEffect* named = named_rotor(v);
+  if (named == nullptr) return 0.0;
   spun_up = named->params.spin_up;
   const auto longest = std::max_element(generated.begin(), generated.end(), [](const auto& a, const auto& b) {
     return a.truth.duration_s < b.truth.duration_s;
   });
-  const auto& h = longest->truth.params.at("h_N_m_s");
-  const Eigen::Vector3d truth(h[0], h[1], h[2]);
+  const Eigen::Vector3d truth = true_h_at_end(*longest);
   const Eigen::Vector3d found =
       named->params.spin_up ? named->params.spin_up_h_at_end() : named->params.vector;
   return found.dot(truth.normalized()) / truth.norm();
@@ -89,14 +96,11 @@ double h_at_end_ratio(const Verdict& v, const std::vector<gen::GeneratedFlight>&
 // report gives no flight its own.
 std::pair<double, double> each_flight_h_ratio(const Verdict& v,
                                               const std::vector<gen::GeneratedFlight>& generated) {
-  const auto named = std::find_if(v.effects.begin(), v.effects.end(), [](const VerdictEffect& e) {
-    return std::string(effect_name(e.effect)) == "internal_momentum";
-  });
-  if (named == v.effects.end() || named->params.spin_up_flights.size() != generated.size()) return {0.0, 0.0};
+  const VerdictEffect* named = named_rotor(v);
+  if (named == nullptr || named->params.spin_up_flights.size() != generated.size()) return {0.0, 0.0};
   double low = INFINITY, high = 0.0;
   for (std::size_t j = 0; j < generated.size(); ++j) {
-    const auto& h = generated[j].truth.params.at("h_N_m_s");
-    const Eigen::Vector3d truth(h[0], h[1], h[2]);
+    const Eigen::Vector3d truth = true_h_at_end(generated[j]);
     const double ratio = named->params.spin_up_flights[j].h_at_end().dot(truth.normalized()) / truth.norm();
     low = std::min(low, ratio);
     high = std::max(high, ratio);
