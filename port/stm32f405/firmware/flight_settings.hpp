@@ -18,13 +18,13 @@ constexpr float inertia_kg_m2[3][3] = {
 };
 
 // The practice brick has no rotor: the image keeps no rotor speeds (RotorSupport::none).
-// The flight image leaves the tensor estimate out until it fits the image's 32 KiB of
-// flash (docs/stm32f405.md, "Footprint"); the images built with ALOFT_STM32F405_WITH_TENSOR
-// have it, to measure what it costs (measure_footprint.cmake).
-#if defined(ALOFT_STM32F405_WITH_TENSOR)
-constexpr aloft::TensorEstimation tensor_estimation = aloft::TensorEstimation::on;
-#else
+// The flight image estimates each flight's tensor; the images built with
+// ALOFT_STM32F405_WITHOUT_TENSOR leave it out, to measure what it costs
+// (measure_footprint.cmake).
+#if defined(ALOFT_STM32F405_WITHOUT_TENSOR)
 constexpr aloft::TensorEstimation tensor_estimation = aloft::TensorEstimation::off;
+#else
+constexpr aloft::TensorEstimation tensor_estimation = aloft::TensorEstimation::on;
 #endif
 using Pipeline =
     aloft::OnboardPipeline<float, live_simulations, aloft::RotorSupport::none, tensor_estimation>;

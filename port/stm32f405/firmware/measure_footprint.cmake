@@ -1,6 +1,6 @@
 # Measures the STM32F405 firmware's footprint and writes footprint.json (SPEC §5). Run by
 # the build (CMakeLists.txt) as
-#   cmake -DFIRMWARE=... -DNO_RECORDS=... -DWITH_TENSOR=... -DTIMED=... -DTIMED_WITH_TENSOR=... -DBASELINE=... -DSIZE=... -DOBJDUMP=... -DQEMU=<list>
+#   cmake -DFIRMWARE=... -DNO_RECORDS=... -DWITHOUT_TENSOR=... -DTIMED=... -DTIMED_WITHOUT_TENSOR=... -DBASELINE=... -DSIZE=... -DOBJDUMP=... -DQEMU=<list>
 #         -DSTACK_TOOL=... -DCI_DIRS=<list> -DOUTPUT=.../footprint.json -P measure_footprint.cmake
 #
 # Method, key by key (shared pieces: ../../cortex_m/footprint_functions.cmake):
@@ -19,9 +19,8 @@
 #     data + bss + worst-case stack each.
 #   details.tensor_flash_bytes, details.tensor_ram_bytes, details.tensor_instructions_per_sample:
 #     what the tensor estimate adds (bars: <= 256 B RAM, <= 150 instructions per sample):
-#     the flight image and the timing image built with TensorEstimation::on
-#     (ALOFT_STM32F405_WITH_TENSOR, flight_settings.hpp) minus the same as shipped, without
-#     it (it does not fit the image's flash yet).
+#     the flight image and the timing image as shipped, with it, minus the same built with
+#     TensorEstimation::off (ALOFT_STM32F405_WITHOUT_TENSOR, flight_settings.hpp).
 #   instructions_per_sample: the timing image and its baseline run under QEMU with
 #     -icount shift=0, where every guest instruction advances the virtual clock by 1 ns;
 #     each measures instructions per SysTick tick itself on a loop of known length, then
@@ -40,12 +39,12 @@ math(EXPR ram_bytes_without_stack "${image_data} + ${image_bss}")
 run_timed(${TIMED} with)
 run_timed(${BASELINE} without)
 timed_difference(instructions_per_sample)
-run_timed(${TIMED_WITH_TENSOR} with_tensor)
-if(NOT with_tensor_steady_updates EQUAL with_steady_updates)
+run_timed(${TIMED_WITHOUT_TENSOR} without_tensor)
+if(NOT without_tensor_steady_updates EQUAL with_steady_updates)
   message(FATAL_ERROR "the timing images with and without the tensor estimate did not time the same loop")
 endif()
 math(EXPR tensor_instructions_per_sample
-     "((${with_tensor_steady_ticks} - ${with_steady_ticks}) * ${milli_instructions_per_tick} / ${with_steady_updates} + 500) / 1000")
+     "((${with_steady_ticks} - ${without_tensor_steady_ticks}) * ${milli_instructions_per_tick} / ${with_steady_updates} + 500) / 1000")
 
 # Worst-case stack of an image; indirect calls besides the text output: the ImuBus's and
 # the internal flash's (BlockDevice) function pointers, and the driver's sample sink
@@ -101,10 +100,10 @@ object_flash_bytes(${FIRMWARE}.map "internal_flash\\.cpp\\.obj" records_driver_f
 math(EXPR plain_ram_bytes "${plain_data} + ${plain_bss} + ${plain_stack_bytes}")
 math(EXPR records_ram_bytes "${ram_bytes} - ${plain_ram_bytes}")
 
-section_sizes(${WITH_TENSOR} with_tensor)
-image_stack(${WITH_TENSOR} "${WITH_TENSOR_CI_DIRS}" with_tensor)
-math(EXPR tensor_flash_bytes "${with_tensor_flash} - ${image_flash}")
-math(EXPR tensor_ram_bytes "${with_tensor_data} + ${with_tensor_bss} + ${with_tensor_stack_bytes} - ${ram_bytes}")
+section_sizes(${WITHOUT_TENSOR} without_tensor)
+image_stack(${WITHOUT_TENSOR} "${WITHOUT_TENSOR_CI_DIRS}" without_tensor)
+math(EXPR tensor_flash_bytes "${image_flash} - ${without_tensor_flash}")
+math(EXPR tensor_ram_bytes "${ram_bytes} - ${without_tensor_data} - ${without_tensor_bss} - ${without_tensor_stack_bytes}")
 
 # The bars are for the whole flight image as it ships, flight records included: flash
 # 32 KiB, RAM 4,352 B, 2,650 instructions per sample.
@@ -135,7 +134,7 @@ set(json "{
     \"tensor_flash_bytes\": ${tensor_flash_bytes},
     \"tensor_ram_bytes\": ${tensor_ram_bytes},
     \"tensor_instructions_per_sample\": ${tensor_instructions_per_sample},
-    \"tensor_is\": \"what the tensor estimate (aloft/onboard/tensor_estimator.hpp, fed each airborne sample, solved once per flight after the driver's burst) would add: the same images built with TensorEstimation::on minus this one, which leaves it out (it does not fit 32 KiB of flash yet); RAM is data + bss + worst-case stack\",
+    \"tensor_is\": \"what the tensor estimate (aloft/onboard/tensor_estimator.hpp, fed each airborne sample, solved once per flight after the driver's burst) adds: this image and the timing image minus the same built with TensorEstimation::off; RAM is data + bss + worst-case stack\",
     \"targets_met_by\": \"flash and RAM: the whole image, flight records included, flash_bytes and ram_bytes\",
     \"targets_met\": {\"flash_le_32KiB\": ${flash_ok}, \"ram_le_4352B\": ${ram_ok}, \"heap_0\": true, \"instructions_per_sample_le_2650\": ${instructions_ok}},
     \"instructions_per_sample_covers\": \"the ICM-42688-P driver's poll and decode (fake chip on the bus) + release detection + onboard check at K = 8 (OnboardPipeline::push), minus the same bus reads without decoding\",
@@ -152,4 +151,4 @@ set(json "{
 # Written whole under a temporary name, then renamed: never a half-written report.
 file(WRITE ${OUTPUT}.tmp "${json}")
 file(RENAME ${OUTPUT}.tmp ${OUTPUT})
-message(STATUS "stm32f405 footprint: flash ${image_flash} B (text ${image_text}, data ${image_data}), RAM ${ram_bytes} B (bss ${image_bss}, stack ${stack_bytes}), ${instructions_per_sample} instructions/sample; flight records add ${records_flash_bytes} B flash (${records_code_flash_bytes} record code, ${records_driver_flash_bytes} flash driver), ${records_ram_bytes} B RAM; the tensor estimate would add ${tensor_flash_bytes} B flash, ${tensor_ram_bytes} B RAM, ${tensor_instructions_per_sample} instructions/sample")
+message(STATUS "stm32f405 footprint: flash ${image_flash} B (text ${image_text}, data ${image_data}), RAM ${ram_bytes} B (bss ${image_bss}, stack ${stack_bytes}), ${instructions_per_sample} instructions/sample; flight records add ${records_flash_bytes} B flash (${records_code_flash_bytes} record code, ${records_driver_flash_bytes} flash driver), ${records_ram_bytes} B RAM; the tensor estimate adds ${tensor_flash_bytes} B flash, ${tensor_ram_bytes} B RAM, ${tensor_instructions_per_sample} instructions/sample")

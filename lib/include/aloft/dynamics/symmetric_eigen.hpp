@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <utility>
 
@@ -64,25 +65,59 @@ inline void apply_jacobi_rotation(Eigen::Matrix<Scalar, N, N>& m, Eigen::Matrix<
   m(q, p) = Scalar(0);
 }
 
-// Sorts values ascending, carrying the columns of `vectors` (and of `also`) along.
-template <typename Scalar, int N>
-inline void sort_ascending(Eigen::Matrix<Scalar, N, 1>& values, Eigen::Matrix<Scalar, N, N>& vectors,
-                           Eigen::Matrix<Scalar, N, N>* also) {
-  for (int i = 0; i < N; ++i) {
-    for (int j = i + 1; j < N; ++j) {
-      if (values(j) < values(i)) {
-        const Scalar t = values(i);
-        values(i) = values(j);
-        values(j) = t;
-        // Element by element: Eigen's column swap took a 96-byte frame in float on the
-        // Cortex-M4 (the tensor estimate's deepest path at a flight's end).
-        for (int k = 0; k < N; ++k) {
-          std::swap(vectors(k, i), vectors(k, j));
-          if (also != nullptr) std::swap((*also)(k, i), (*also)(k, j));
+// The dot product of two columns of length n.
+template <typename Scalar>
+inline Scalar column_dot(const Scalar* a, const Scalar* b, int n) {
+  Scalar sum = Scalar(0);
+  for (int k = 0; k < n; ++k) sum += a[k] * b[k];
+  return sum;
+}
+
+// One-sided Jacobi on the n x n matrices x and v (column-major, columns of length n): x's
+// columns rotated until orthogonal, v <- v R alike, then values(k) = |x_k|², ascending, the
+// columns of v and x sorted with them. The size is an argument, not a template's: the 3 x 3
+// and the 6 x 6 of the tensor estimate share one copy of the code in a firmware's flash.
+// Returns whether the sort swapped columns an odd number of times: the rotations keep v's
+// determinant, so v, started at the identity, then has determinant -1.
+template <typename Scalar>
+ALOFT_COLD inline bool gram_eigen_columns(Scalar* x, Scalar* v, Scalar* values, int n) {
+  const Scalar eps = std::numeric_limits<Scalar>::epsilon();
+  for (int sweep = 0; sweep < 32; ++sweep) {
+    bool rotated = false;
+    for (int p = 0; p < n - 1; ++p) {
+      for (int q = p + 1; q < n; ++q) {
+        Scalar* xp = x + p * n;
+        Scalar* xq = x + q * n;
+        const Scalar app = column_dot(xp, xp, n), aqq = column_dot(xq, xq, n), apq = column_dot(xp, xq, n);
+        if (!(std::abs(apq) > eps * std::sqrt(app * aqq))) continue;
+        rotated = true;
+        Scalar c, s;
+        jacobi_rotation(app, aqq, apq, c, s);
+        for (Scalar* m : {x, v}) {
+          for (int k = 0; k < n; ++k) {
+            const Scalar mp = m[p * n + k], mq = m[q * n + k];
+            m[p * n + k] = c * mp - s * mq;
+            m[q * n + k] = s * mp + c * mq;
+          }
         }
       }
     }
+    if (!rotated) break;
   }
+  for (int k = 0; k < n; ++k) values[k] = column_dot(x + k * n, x + k * n, n);
+  bool odd = false;
+  for (int i = 0; i < n; ++i) {  // ascending, the columns carried along
+    for (int j = i + 1; j < n; ++j) {
+      if (!(values[j] < values[i])) continue;
+      odd = !odd;
+      std::swap(values[i], values[j]);
+      for (int k = 0; k < n; ++k) {
+        std::swap(v[i * n + k], v[j * n + k]);
+        std::swap(x[i * n + k], x[j * n + k]);
+      }
+    }
+  }
+  return odd;
 }
 
 }  // namespace detail
@@ -92,34 +127,36 @@ inline void sort_ascending(Eigen::Matrix<Scalar, N, 1>& values, Eigen::Matrix<Sc
 // them) and X^T X = V diag(values) V^T. The small eigenvalues keep the precision of X, not
 // of X^T X: in float a ratio of smallest to largest eigenvalue of 1e-10 still comes out to
 // a few per cent, where forming X^T X leaves only rounding below about 1e-7.
+// Returns whether `vectors` came out with determinant -1 (a reflection).
 template <typename Scalar, int N>
-ALOFT_COLD inline void gram_eigen_decomposition(Eigen::Matrix<Scalar, N, N>& x,
-                                                Eigen::Matrix<Scalar, N, 1>& values,
-                                                Eigen::Matrix<Scalar, N, N>& vectors) {
+inline bool gram_eigen_decomposition(Eigen::Matrix<Scalar, N, N>& x, Eigen::Matrix<Scalar, N, 1>& values,
+                                     Eigen::Matrix<Scalar, N, N>& vectors) {
   vectors.setIdentity();
-  const Scalar eps = std::numeric_limits<Scalar>::epsilon();
-  for (int sweep = 0; sweep < 32; ++sweep) {
-    bool rotated = false;
-    for (int p = 0; p < N - 1; ++p) {
-      for (int q = p + 1; q < N; ++q) {
-        const Scalar app = x.col(p).squaredNorm(), aqq = x.col(q).squaredNorm(), apq = x.col(p).dot(x.col(q));
-        if (!(std::abs(apq) > eps * std::sqrt(app * aqq))) continue;
-        rotated = true;
-        Scalar c, s;
-        detail::jacobi_rotation(app, aqq, apq, c, s);
-        for (int k = 0; k < N; ++k) {
-          const Scalar xp = x(k, p), xq = x(k, q), vp = vectors(k, p), vq = vectors(k, q);
-          x(k, p) = c * xp - s * xq;
-          x(k, q) = s * xp + c * xq;
-          vectors(k, p) = c * vp - s * vq;
-          vectors(k, q) = s * vp + c * vq;
-        }
-      }
+  return detail::gram_eigen_columns(x.data(), vectors.data(), values.data(), N);
+}
+
+// The eigen-decomposition of a positive definite 3 x 3 `a` (an inertia tensor) through its
+// Cholesky factor, a = L L^T = X^T X with X = L^T, by the one-sided Jacobi above: the same
+// code as the 6 x 6 Gram matrix's (a firmware that estimates a tensor holds one copy), the
+// small moment to the precision of X. values ascending, vectors right-handed. False, and
+// nothing filled, when `a` is not positive definite.
+template <typename Scalar>
+inline bool positive_definite_eigen_decomposition(const Mat3<Scalar>& a, Vec3<Scalar>& values,
+                                                  Mat3<Scalar>& vectors) {
+  Mat3<Scalar> x = Mat3<Scalar>::Zero();  // L^T, upper triangular
+  for (int j = 0; j < 3; ++j) {
+    Scalar d = a(j, j);
+    for (int k = 0; k < j; ++k) d -= x(k, j) * x(k, j);
+    if (!(d > Scalar(0))) return false;
+    x(j, j) = std::sqrt(d);
+    for (int i = j + 1; i < 3; ++i) {
+      Scalar e = a(j, i);
+      for (int k = 0; k < j; ++k) e -= x(k, j) * x(k, i);
+      x(j, i) = e / x(j, j);
     }
-    if (!rotated) break;
   }
-  for (int k = 0; k < N; ++k) values(k) = x.col(k).squaredNorm();
-  detail::sort_ascending(values, vectors, &x);
+  if (gram_eigen_decomposition(x, values, vectors)) vectors.col(2) = -vectors.col(2);
+  return true;
 }
 
 // Fills `values` (ascending) and `vectors` (columns, orthonormal; right-handed for 3 x 3)

@@ -195,7 +195,8 @@ class OnboardPipeline {
   using TorqueTest = std::conditional_t<takes_rotor, GyrostatTorqueTest<Scalar, onboard_history_samples>,
                                         BodyTorqueTest<Scalar>>;
 
-  OnboardPipeline(const InertiaTensor<Scalar>& inertia, const OnboardPipelineSettings<Scalar>& settings)
+  ALOFT_COLD OnboardPipeline(const InertiaTensor<Scalar>& inertia,
+                             const OnboardPipelineSettings<Scalar>& settings)
       : inertia_(inertia),
         settings_(settings),
         sensor_to_body_(settings.check.sensor_to_body.normalized().toRotationMatrix()),

@@ -65,21 +65,31 @@ struct TensorEstimate {
   Scalar ratio(int i) const { return principal(i) / principal(2); }
 };
 
+namespace detail {
+// The right side b's part of the problem: kept only where a rotor may give b (RightSide);
+// torque-free rows have b = 0, and a firmware without rotor support keeps 28 B less.
+template <typename Scalar, bool RightSide>
+struct LeastSquaresRightSide {
+  Scalar z[6] = {};        // the right side, rotated with R
+  Scalar rss = Scalar(0);  // residual sum of squares of b's part
+};
+template <typename Scalar>
+struct LeastSquaresRightSide<Scalar, false> {};
+}  // namespace detail
+
 // What a flight's pieces left (aloft/onboard/tensor_estimator.hpp), in theta's scaled units:
 // the least-squares problem A theta = b in square-root form, R theta = z with R upper
 // triangular, each piece's rows rotated in as they come (Givens), and the residual sum of
 // squares those rotations leave. Not N = A^T A: summed in float, N keeps nothing of a
 // residual below 1e-7 of its largest eigenvalue, and a gyro's noise against a throw's
 // rates lies near 1e-8 (docs/tensor-estimate.md); R keeps the square root of that ratio.
-template <typename Scalar>
-struct TensorLeastSquares {
+template <typename Scalar, bool RightSide = true>
+struct TensorLeastSquares : detail::LeastSquaresRightSide<Scalar, RightSide> {
   Scalar r[21] = {};                  // R's upper triangle, row by row
-  Scalar z[6] = {};                   // the right side, rotated with R
-  Scalar rss = Scalar(0);             // residual sum of squares of b's part
   Scalar rate_squared_s = Scalar(0);  // sum over the pieces of ∫ |w|² dt, rad²/s
 
-  // One row a theta = b, rotated into R. Out of line: three rows a piece share its code.
-  ALOFT_OUT_OF_LINE void add_row(Scalar (&a)[6], Scalar b) {
+  // One row a theta = b, rotated into R. Cold: three rows a piece, once every tens of ms.
+  ALOFT_COLD void add_row(Scalar (&a)[6], Scalar b) {
     int k = 0;  // r's index of R(i, i)
     for (int i = 0; i < 6; k += 6 - i, ++i) {
       if (!(std::abs(a[i]) > Scalar(0))) continue;
@@ -91,11 +101,13 @@ struct TensorLeastSquares {
         r[k + j - i] = c * rj + s * a[j];
         a[j] = c * a[j] - s * rj;
       }
-      const Scalar zi = z[i];
-      z[i] = c * zi + s * b;
-      b = c * b - s * zi;
+      if constexpr (RightSide) {
+        const Scalar zi = this->z[i];
+        this->z[i] = c * zi + s * b;
+        b = c * b - s * zi;
+      }
     }
-    rss += b * b;
+    if constexpr (RightSide) this->rss += b * b;
   }
   Eigen::Matrix<Scalar, 6, 6> r_matrix() const {
     Eigen::Matrix<Scalar, 6, 6> m = Eigen::Matrix<Scalar, 6, 6>::Zero();
@@ -134,6 +146,13 @@ inline Mat3<Scalar> tensor_of(const Vec6<Scalar>& t) {
   return m;
 }
 
+// u^T T w for the symmetric tensor T of theta's six entries t.
+template <typename Scalar>
+inline Scalar symmetric_form(const Scalar* t, const Scalar* u, const Scalar* w) {
+  return t[0] * u[0] * w[0] + t[1] * u[1] * w[1] + t[2] * u[2] * w[2] + t[3] * (u[0] * w[1] + u[1] * w[0]) +
+         t[4] * (u[0] * w[2] + u[2] * w[0]) + t[5] * (u[1] * w[2] + u[2] * w[1]);
+}
+
 // Student's t 97.5 % quantile for nu degrees of freedom (Cornish-Fisher from the normal's
 // 1.96: 2.226 at nu = 10 against 2.228, exact to 1e-3 from nu = 15).
 template <typename Scalar>
@@ -167,25 +186,28 @@ ALOFT_COLD inline void propagate(const Vec3<Scalar>& m, const Mat3<Scalar>& axes
                                  const Eigen::Matrix<Scalar, 6, 6>& vectors, const Vec6<Scalar>& weight,
                                  Scalar t, TensorEstimate<Scalar>& out) {
   Scalar var[5] = {};
-  Mat3<Scalar> tilt = Mat3<Scalar>::Zero();
+  Scalar tilt[6] = {};  // the tilts' covariance: 00 11 22 01 02 12
+  const int row[6] = {0, 1, 2, 0, 0, 1}, col[6] = {0, 1, 2, 1, 2, 2};
   for (int k = 0; k < 6; ++k) {
     if (!(weight(k) > Scalar(0))) continue;
-    // d(a, b) = (V^T I(v_k) V)(a, b), only the six entries used.
-    const Mat3<Scalar> xv = tensor_of<Scalar>(vectors.col(k)) * axes;
-    const auto d = [&](int a, int b) { return axes.col(a).dot(xv.col(b)); };
-    const Scalar u[5] = {(d(0, 0) * m(2) - m(0) * d(2, 2)) / (m(2) * m(2)),
-                         (d(1, 1) * m(2) - m(1) * d(2, 2)) / (m(2) * m(2)), d(0, 0), d(1, 1), d(2, 2)};
+    // d[e] = (V^T I(v_k) V)(row[e], col[e]), each from I(v_k)'s six entries (no 3 x 3
+    // products: Eigen's unrolled ones took 730 B of the flight image's flash).
+    Scalar d[6];
+    for (int e = 0; e < 6; ++e)
+      d[e] = symmetric_form(vectors.col(k).data(), axes.col(row[e]).data(), axes.col(col[e]).data());
+    const Scalar u[5] = {(d[0] * m(2) - m(0) * d[2]) / (m(2) * m(2)),
+                         (d[1] * m(2) - m(1) * d[2]) / (m(2) * m(2)), d[0], d[1], d[2]};
     for (int i = 0; i < 5; ++i) var[i] += weight(k) * u[i] * u[i];
-    const Vec3<Scalar> phi(d(2, 1) / (m(1) - m(2)), d(0, 2) / (m(2) - m(0)), d(1, 0) / (m(0) - m(1)));
-    tilt += weight(k) * phi * phi.transpose();
+    const Scalar phi[3] = {d[5] / (m(1) - m(2)), d[4] / (m(2) - m(0)), d[3] / (m(0) - m(1))};
+    for (int e = 0; e < 6; ++e) tilt[e] += weight(k) * phi[row[e]] * phi[col[e]];
   }
   out.ratios_95[0] = t * std::sqrt(var[0]);
   out.ratios_95[1] = t * std::sqrt(var[1]);
   for (int i = 0; i < 3; ++i) out.principal_95(i) = t * std::sqrt(var[2 + i]);
   const Scalar t_over_z = t / Scalar(1.959964);
-  out.axes_95_rad(0) = axis_angle_95(tilt(1, 1), tilt(1, 2), tilt(2, 2), t_over_z);
-  out.axes_95_rad(1) = axis_angle_95(tilt(0, 0), tilt(0, 2), tilt(2, 2), t_over_z);
-  out.axes_95_rad(2) = axis_angle_95(tilt(0, 0), tilt(0, 1), tilt(1, 1), t_over_z);
+  out.axes_95_rad(0) = axis_angle_95(tilt[1], tilt[5], tilt[2], t_over_z);
+  out.axes_95_rad(1) = axis_angle_95(tilt[0], tilt[4], tilt[2], t_over_z);
+  out.axes_95_rad(2) = axis_angle_95(tilt[0], tilt[3], tilt[1], t_over_z);
 }
 
 // theta's tensor decomposed and its figures with their intervals. Its own frame: the
@@ -195,9 +217,13 @@ ALOFT_COLD inline void describe(const Vec6<Scalar>& theta, const Eigen::Matrix<S
                                 const Vec6<Scalar>& weight, Scalar t, TensorEstimate<Scalar>& out) {
   Vec3<Scalar> m;
   Mat3<Scalar> axes;
-  symmetric_eigen_decomposition(tensor_of(theta), m, axes);
+  // Not positive definite (no physical tensor): out keeps its zero moments, which the
+  // caller reads as not a tensor.
+  if (!positive_definite_eigen_decomposition(tensor_of(theta), m, axes)) return;
   propagate(m, axes, vectors, weight, t, out);
-  out.axes = Quat<Scalar>(axes).normalized();
+  // Unit to rounding as it stands: the Jacobi rotations keep the axes orthonormal to a few
+  // eps, and the record rebuilds w from x, y, z (normalising took 118 B of flash).
+  out.axes = Quat<Scalar>(axes);
   out.principal = m;
 }
 
@@ -237,7 +263,7 @@ inline bool solve_scale_free(const Vec6<Scalar>& values, const Eigen::Matrix<Sca
 // With the scale: theta = N^-1 g from R's decomposition (x: R's columns rotated, x_k = R v_k),
 // the residual sum of squares as the rotations left it.
 template <typename Scalar>
-inline bool solve_scaled(const TensorLeastSquares<Scalar>& ls, Scalar rows, const Vec6<Scalar>& values,
+inline bool solve_scaled(const TensorLeastSquares<Scalar, true>& ls, Scalar rows, const Vec6<Scalar>& values,
                          const Eigen::Matrix<Scalar, 6, 6>& vectors, const Eigen::Matrix<Scalar, 6, 6>& x,
                          Scalar max_relative_sd, Vec6<Scalar>& theta, Vec6<Scalar>& weight, Scalar& dof) {
   dof = rows - Scalar(6);
@@ -261,15 +287,16 @@ inline bool solve_scaled(const TensorLeastSquares<Scalar>& ls, Scalar rows, cons
 // carried to the figures (the stack of a firmware's flight end). MayBeScaled: whether a
 // rotor may have given the scale (without, the scaled solve is not compiled in).
 template <typename Scalar, bool MayBeScaled>
-ALOFT_COLD inline bool solve_tensor(const TensorLeastSquares<Scalar>& ls, TensorPieces pieces,
+ALOFT_COLD inline bool solve_tensor(const TensorLeastSquares<Scalar, MayBeScaled>& ls, TensorPieces pieces,
                                     Scalar max_relative_sd, Eigen::Matrix<Scalar, 6, 6>& vectors,
                                     Vec6<Scalar>& theta, Vec6<Scalar>& weight, Scalar& dof) {
   Eigen::Matrix<Scalar, 6, 6> x = ls.r_matrix();
   Vec6<Scalar> values;
   gram_eigen_decomposition(x, values, vectors);
   const Scalar rows = Scalar(3) * static_cast<Scalar>(pieces.count);
-  if (MayBeScaled && pieces.scaled)
-    return solve_scaled(ls, rows, values, vectors, x, max_relative_sd, theta, weight, dof);
+  if constexpr (MayBeScaled) {
+    if (pieces.scaled) return solve_scaled(ls, rows, values, vectors, x, max_relative_sd, theta, weight, dof);
+  }
   return solve_scale_free(values, vectors, rows, max_relative_sd, theta, weight, dof);
 }
 
@@ -277,7 +304,7 @@ ALOFT_COLD inline bool solve_tensor(const TensorLeastSquares<Scalar>& ls, Tensor
 
 // The estimate from a flight's least-squares problem; `scale` is theta's unit in kg·m².
 template <typename Scalar, bool MayBeScaled = true>
-ALOFT_COLD inline void estimate_tensor(const TensorLeastSquares<Scalar>& ls, TensorPieces pieces,
+ALOFT_COLD inline void estimate_tensor(const TensorLeastSquares<Scalar, MayBeScaled>& ls, TensorPieces pieces,
                                        Scalar scale, const TensorDetermination<Scalar>& d,
                                        TensorEstimate<Scalar>& out) {
   out = TensorEstimate<Scalar>();

@@ -95,16 +95,29 @@ struct TensorEstimatorInputs {
   const Rotor<Scalar>& rotor;
 };
 
+namespace detail {
+// The rotor's share of the open piece: its filtered speed, the speed at the piece's start
+// and ∫ s w dt. Nothing without rotor support (a firmware without it keeps 20 B less).
+template <typename Scalar, bool Rotor>
+struct RotorPieceIntegrals {
+  Scalar speed_f = Scalar(0);                       // the rotor's speed, filtered
+  Scalar speed_a = Scalar(0);                       // the filtered speed at the open piece's first sample
+  Vec3<Scalar> speed_omega = Vec3<Scalar>::Zero();  // ∫ s w dt
+};
+template <typename Scalar>
+struct RotorPieceIntegrals<Scalar, false> {};
+}  // namespace detail
+
 // Rotor: whether a rotor's speed may come with the samples (a pipeline's RotorSupport);
 // without, the rotor's terms are not compiled in.
 template <typename Scalar, bool Rotor = true>
-class TensorEstimator {
+class TensorEstimator : detail::RotorPieceIntegrals<Scalar, Rotor> {
  public:
   using Inputs = TensorEstimatorInputs<Scalar>;
 
   // A new flight.
   void start() {
-    ls_ = TensorLeastSquares<Scalar>();
+    ls_ = TensorLeastSquares<Scalar, Rotor>();
     piece_count_ = 0;
     scaled_ = false;
     phase_ = Phase::idle;
@@ -118,7 +131,7 @@ class TensorEstimator {
            const Inputs& in) {
     if (phase_ == Phase::idle) {
       // The filters start here: the first piece waits for their transient.
-      speed_f_ = rotor_speed;
+      if constexpr (Rotor) this->speed_f = rotor_speed;
       elapsed_us_ = 0;
       phase_ = Phase::settle;
       return;
@@ -128,8 +141,12 @@ class TensorEstimator {
     // The rotor's speed through a filter like the gyro's, so that both lag alike (without a
     // rotor it stays 0, and the sample's work has no rotor terms).
     const bool rotor = Rotor && in.rotor.present();
-    const Scalar speed_before = speed_f_;
-    if (rotor) speed_f_ += (dt / (tau + dt)) * (rotor_speed - speed_f_);
+    Scalar ds = Scalar(0);  // the filtered speed's change over the interval
+    if constexpr (Rotor) {
+      const Scalar speed_before = this->speed_f;
+      if (rotor) this->speed_f += (dt / (tau + dt)) * (rotor_speed - this->speed_f);
+      ds = this->speed_f - speed_before;
+    }
     const bool first_step = elapsed_us_ == 0;
     elapsed_us_ += dt_us;
     if (phase_ != Phase::piece) {
@@ -141,17 +158,16 @@ class TensorEstimator {
     // w + tau (w - w_before) / dt, which adds tau (tau + dt) ∫ w_dot w_dot^T dt to the
     // gyroscopic integral, w_dot from the difference (midpoint rule).
     const Vec3<Scalar> dw = w - w_before;
-    const Scalar ds = speed_f_ - speed_before;
     // Trapezoid rule on the rates: each sample weighs dt, the piece's first and last half
     // of theirs (exact on evenly spaced samples, without keeping the sample before), and
     // Euler-Maclaurin's end correction -dt²/12 (f'(t_b) - f'(t_a)), f' from the first and
     // last differences: the trapezoid's error goes from (dt Ω)² to (dt Ω)⁴ at no cost per
     // sample (a throw at 28 rad/s sampled at 1 kHz: ratios 1.6e-4 off without it).
-    if (first_step) integrate_end(omega_a_, dw, speed_a_, ds, dt);
+    if (first_step) integrate_end(omega_a_, dw, speed_at_start(), ds, dt);
     integrate_sample(w, dw, ds, dt, tau * (tau + dt) / dt, rotor);
     if (elapsed_us_ >= in.settings.piece_us) {
-      integrate_end(w, dw, speed_f_, ds, -dt);
-      close_piece(w, speed_f_, in);
+      integrate_end(w, dw, filtered_speed(), ds, -dt);
+      close_piece(w, filtered_speed(), in);
     }
   }
 
@@ -167,7 +183,7 @@ class TensorEstimator {
     estimate_tensor<Scalar, Rotor>(ls_, pieces(), nominal_scale(in.nominal), d, out);
   }
 
-  const TensorLeastSquares<Scalar>& least_squares() const { return ls_; }
+  const TensorLeastSquares<Scalar, Rotor>& least_squares() const { return ls_; }
   TensorPieces pieces() const { return TensorPieces{piece_count_, scaled_}; }
 
  private:
@@ -178,18 +194,27 @@ class TensorEstimator {
     gap,     // between pieces
   };
 
+  Scalar filtered_speed() const {
+    if constexpr (Rotor) return this->speed_f;
+    return Scalar(0);
+  }
+  Scalar speed_at_start() const {
+    if constexpr (Rotor) return this->speed_a;
+    return Scalar(0);
+  }
+
   // theta's unit: the nominal tensor's mean moment.
   static Scalar nominal_scale(const InertiaTensor<Scalar>& nominal) {
     return nominal.tensor().trace() / Scalar(3);
   }
 
-  void start_piece(const Vec3<Scalar>& w) {
+  ALOFT_COLD void start_piece(const Vec3<Scalar>& w) {
     phase_ = Phase::piece;
     elapsed_us_ = 0;
     omega_a_ = w;
-    speed_a_ = speed_f_;
+    if constexpr (Rotor) this->speed_a = this->speed_f;
     for (Scalar& p : products_) p = Scalar(0);
-    speed_omega_.setZero();
+    if constexpr (Rotor) this->speed_omega.setZero();
   }
 
   void integrate(const Vec3<Scalar>& w, Scalar rotor_speed, Scalar weight) {
@@ -200,7 +225,7 @@ class TensorEstimator {
     products_[3] += ww.x() * w.y();
     products_[4] += ww.x() * w.z();
     products_[5] += ww.y() * w.z();
-    if (Rotor) speed_omega_ += rotor_speed * ww;
+    if constexpr (Rotor) this->speed_omega += rotor_speed * ww;
   }
 
   // One sample's share, in one pass over the integrals: dt w w^T and the filter's term
@@ -214,13 +239,15 @@ class TensorEstimator {
     products_[3] += a.x() * w.y() + b.x() * dw.y();
     products_[4] += a.x() * w.z() + b.x() * dw.z();
     products_[5] += a.y() * w.z() + b.y() * dw.z();
-    if (Rotor && rotor) speed_omega_ += speed_f_ * a + ds * b;
+    if constexpr (Rotor) {
+      if (rotor) this->speed_omega += this->speed_f * a + ds * b;
+    }
   }
 
   // A piece's end (dt > 0 its first, dt < 0 its last): half the sample's weight, and the
   // end correction. Out of line: twice a piece, not on every sample's code path.
-  ALOFT_OUT_OF_LINE void integrate_end(const Vec3<Scalar>& w, const Vec3<Scalar>& dw, Scalar speed, Scalar ds,
-                                       Scalar dt) {
+  ALOFT_COLD void integrate_end(const Vec3<Scalar>& w, const Vec3<Scalar>& dw, Scalar speed, Scalar ds,
+                                Scalar dt) {
     integrate(w, speed, Scalar(0.5) * dt);
     integrate_slope(w, dw, speed, ds, dt / Scalar(12));
   }
@@ -236,28 +263,31 @@ class TensorEstimator {
     products_[3] += a.x() * dw.y() + b.x() * w.y();
     products_[4] += a.x() * dw.z() + b.x() * w.z();
     products_[5] += a.y() * dw.z() + b.y() * w.z();
-    if (Rotor) speed_omega_ += ds * a + rotor_speed * b;
+    if constexpr (Rotor) this->speed_omega += ds * a + rotor_speed * b;
   }
 
   // The piece's three rows: column m is the body's side of the integrated equations for
   // the m-th unit tensor (theta's entries), the right side the rotor's.
-  ALOFT_OUT_OF_LINE void close_piece(const Vec3<Scalar>& w_b, Scalar speed_b, const Inputs& in) {
+  ALOFT_COLD void close_piece(const Vec3<Scalar>& w_b, Scalar speed_b, const Inputs& in) {
     Mat3<Scalar> p;
     p << products_[0], products_[3], products_[4], products_[3], products_[1], products_[5], products_[4],
         products_[5], products_[2];
     const Vec3<Scalar> delta_omega = w_b - omega_a_;
     const Mat3<Scalar>& to_rates = in.nominal.inverse();
     const Scalar scale = nominal_scale(in.nominal);
-    const Eigen::Matrix<Scalar, 3, 6> a =
-        (scale * to_rates) * integrated_body_torque_per_entry(delta_omega, p);
+    const Eigen::Matrix<Scalar, 3, 6> torque = integrated_body_torque_per_entry(delta_omega, p);
     Vec3<Scalar> b = Vec3<Scalar>::Zero();
-    if (Rotor && in.rotor.present()) {
-      b = -(to_rates * integrated_rotor_torque(in.rotor, speed_b - speed_a_, speed_omega_));
-      if (b.squaredNorm() > Scalar(0)) scaled_ = true;
+    if constexpr (Rotor) {
+      if (in.rotor.present()) {
+        b = -(to_rates * integrated_rotor_torque(in.rotor, speed_b - this->speed_a, this->speed_omega));
+        if (b.squaredNorm() > Scalar(0)) scaled_ = true;
+      }
     }
+    // Row r of (scale to_rates) torque, as a plain loop: Eigen's unrolled 3 x 6 product took
+    // 730 B of the flight image's flash for a path run once a piece.
     for (int r = 0; r < 3; ++r) {
       Scalar row[6];
-      for (int m = 0; m < 6; ++m) row[m] = a(r, m);
+      for (int m = 0; m < 6; ++m) row[m] = scale * to_rates.row(r).dot(torque.col(m));
       ls_.add_row(row, b(r));
     }
     ls_.rate_squared_s += products_[0] + products_[1] + products_[2];
@@ -266,14 +296,11 @@ class TensorEstimator {
     elapsed_us_ = 0;
   }
 
-  TensorLeastSquares<Scalar> ls_;
+  TensorLeastSquares<Scalar, Rotor> ls_;
   // The open piece: its first sample, and the integrals so far.
   Vec3<Scalar> omega_a_ = Vec3<Scalar>::Zero();
-  Scalar speed_a_ = Scalar(0);
-  Scalar products_[6] = {};                          // ∫ w_i w_j dt: xx yy zz xy xz yz
-  Vec3<Scalar> speed_omega_ = Vec3<Scalar>::Zero();  // ∫ s w dt
-  Scalar speed_f_ = Scalar(0);                       // the rotor's speed, filtered
-  std::uint32_t elapsed_us_ = 0;                     // in the open piece, or since the last one ended
+  Scalar products_[6] = {};       // ∫ w_i w_j dt: xx yy zz xy xz yz
+  std::uint32_t elapsed_us_ = 0;  // in the open piece, or since the last one ended
   // Packed in one word (196 B in float with a TensorPieces here, 192 without).
   std::uint16_t piece_count_ = 0;
   bool scaled_ = false;  // some piece had a rotor's momentum
