@@ -1,7 +1,9 @@
 // Host program: `aloft records`' own reader (host_sim/records/record_dump.cpp) on a
 // record-area dump, printing each intact record in the lines the STM32F405 replay image
 // prints for the flight it stored (flight_lines.hpp's keys, and record_sequence), and
-// each bad slot as "problem OFFSET REASON". tests/stm32f405 compares the two.
+// each bad slot as "problem OFFSET REASON", and the record's tensor estimate
+// (tensor_record_lines.hpp). tests/stm32f405 compares them with the image's lines and with
+// the host's replay.
 //   records_lines DUMP
 #include <cstdio>
 #include <cstring>
@@ -10,6 +12,7 @@
 #include "aloft_port/report_writer.hpp"
 #include "flight_lines.hpp"
 #include "records/record_dump.hpp"
+#include "tensor_record_lines.hpp"
 
 namespace {
 
@@ -34,6 +37,7 @@ void write_record(aloft::port::ReportWriter& out, const aloft::FlightRecord& r) 
   out.text("rms_rel_err ").fixed(r.rms_rel_err, 6).line();
   out.text("rms_rel_err_bits ").integer(aloft_flight_lines::bits_of(r.rms_rel_err)).line();
   out.text("record_sequence ").integer(r.sequence).line();
+  aloft_tensor_record_lines::write_tensor_lines(out, r.tensor);
 }
 
 }  // namespace

@@ -3,9 +3,11 @@
 # every one must be equal, float results to the bit. At least one flight, with
 # comparisons, must be there: an empty answer checks nothing.
 #   cmake -DFIRMWARE_COMMAND=<list> -DHOST_COMMAND=<list> [-DKEYS=<list>] [-DREMOVE_FIRST=FILE]
-#         -P compare_replay_lines.cmake
+#         [-DTARGET_READER=<list>] [-DREQUIRE_LINE=REGEX] -P compare_replay_lines.cmake
 # KEYS replaces the keys compared; REMOVE_FIRST is deleted before the firmware runs (a file
-# it writes, that the host command then reads).
+# it writes, that the host command then reads). TARGET_READER, run after the firmware,
+# prints the firmware's side instead of the firmware itself (a file it wrote, read back).
+# REQUIRE_LINE: a line the firmware's side must hold (what makes the comparison count).
 set(keys flight release_s landing_s samples gaps imu_position_from comparisons rms_da_deg rms_da_rad_bits
          rms_rel_err rms_rel_err_bits stream_samples stream_gaps)
 if(DEFINED KEYS)
@@ -31,12 +33,18 @@ function(key_lines text result)
 endfunction()
 
 run_and_read("firmware (float, QEMU)" "${FIRMWARE_COMMAND}" 240 target_output)
+if(DEFINED TARGET_READER)
+  run_and_read("what the firmware wrote, read back" "${TARGET_READER}" 240 target_output)
+endif()
 key_lines("${target_output}" target)
 run_and_read("host replay (float, the code of aloft replay)" "${HOST_COMMAND}" 240 host_output)
 key_lines("${host_output}" host)
 
 if(NOT "${target}" MATCHES "(^|;)flight 0(;|$)")
   message(FATAL_ERROR "the firmware found no flight: nothing was checked")
+endif()
+if(DEFINED REQUIRE_LINE AND NOT "${target}" MATCHES "(^|;)${REQUIRE_LINE}(;|$)")
+  message(FATAL_ERROR "no line \"${REQUIRE_LINE}\" on the firmware's side: nothing was checked")
 endif()
 if("${target}" MATCHES "(^|;)comparisons 0(;|$)")
   message(FATAL_ERROR "a flight without comparisons: its verdict checks nothing")
