@@ -45,6 +45,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -371,6 +372,13 @@ class ThrowGenerator {
     telemetry.delay_s = rotor_uniform(0.001, 0.004);
     telemetry.first_frame_s = rotor_uniform(0.0, telemetry.period_s);
     telemetry.pole_pairs = rotor_uniform(0, 1) < 0.5 ? 6 : 7;
+    // ALOFT_ROTOR_TELEMETRY_EXACT: the speed read without delay or hold (a frame every 10 µs),
+    // after the draws (the throws stay the same), to measure what the telemetry costs.
+    if (std::getenv("ALOFT_ROTOR_TELEMETRY_EXACT") != nullptr) {
+      telemetry.delay_s = 0.0;
+      telemetry.period_s = 1e-5;
+      telemetry.first_frame_s = 0.0;
+    }
   }
 
   aloft::test::RotorProfile draw_rotor_profile(double release_s) {
