@@ -37,7 +37,8 @@ std::vector<aloft::FlightResult<float>> replay(const Recording& rec) {
   settings.rotor.inertia_kg_m2 = static_cast<float>(rec.rotor_inertia_kg_m2);
   // The gyro's 2nd-order Butterworth as the first-order filter of the same delay, √2/(2π fc).
   const double cutoff_hz = std::min(0.25 * rec.rate_hz, 500.0);
-  settings.tensor.gyro_filter_us = static_cast<std::uint16_t>(std::lround(1e6 * std::sqrt(2.0) / (2 * M_PI * cutoff_hz)));
+  settings.tensor.gyro_filter_us =
+      static_cast<std::uint16_t>(std::lround(1e6 * std::sqrt(2.0) / (2 * M_PI * cutoff_hz)));
   aloft::InertiaTensor<float> inertia;
   REQUIRE(aloft::InertiaTensor<float>::make_from_tensor(rec.nominal_tensor.cast<float>(), inertia) ==
           aloft::Status::ok);
@@ -108,10 +109,12 @@ TEST_CASE("tensor estimate on generated rotor throws", "[.][tensor_rotor_throws]
       score(aloft_test::ThrowGenerator(spec).generate(), s);
     }
   }
-  std::printf("flights %d determined %d absolute %d; ratios mean |err| %.2f %% (covered %d); moments mean |err| %.2f %% "
-              "(covered %d)\n",
-              s.flights, s.determined, s.absolute, 100 * mean(s.ratio_errors), s.ratios_covered,
-              100 * mean(s.moment_errors), s.moments_covered);
-  std::printf("notes: determined %d too_short %d too_little_turning %d one_axis_spin %d not_a_tensor %d\n", s.notes[0],
-              s.notes[1], s.notes[2], s.notes[3], s.notes[4]);
+  std::printf(
+      "flights %d determined %d absolute %d; ratios mean |err| %.2f %% (covered %d); moments mean |err| %.2f "
+      "%% "
+      "(covered %d)\n",
+      s.flights, s.determined, s.absolute, 100 * mean(s.ratio_errors), s.ratios_covered,
+      100 * mean(s.moment_errors), s.moments_covered);
+  std::printf("notes: determined %d too_short %d too_little_turning %d one_axis_spin %d not_a_tensor %d\n",
+              s.notes[0], s.notes[1], s.notes[2], s.notes[3], s.notes[4]);
 }
