@@ -36,6 +36,11 @@ inline aloft::Mat3<float> body_tensor() { return Eigen::Map<const aloft::Mat3<fl
 // machine (port/host_tools/bake_flight_inertia.cpp writes flight_inertia.cpp in the build
 // folder; a rejected tensor stops the build), so the image carries no eigen solver.
 extern const aloft::InertiaTensorParts<float> flight_inertia_parts;
+// The hashes the flight records carry (aloft/records/flight_record_from_result.hpp,
+// settings_hash.hpp) of body_tensor() and of pipeline_settings() at K = live_simulations,
+// made by the same build-time program: the image links no settings hasher (about 700 B).
+extern const std::uint32_t flight_tensor_hash;
+extern const std::uint32_t flight_settings_hash;
 inline aloft::InertiaTensor<float> flight_inertia() {
   return aloft::InertiaTensor<float>::from_accepted_parts(flight_inertia_parts);
 }

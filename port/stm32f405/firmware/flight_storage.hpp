@@ -12,10 +12,16 @@
 
 namespace aloft_stm32f405 {
 
+// The hashes each record carries: of the tensor and of the settings the flights are
+// checked with (aloft/records/flight_record_from_result.hpp, settings_hash.hpp).
+struct RecordHashes {
+  std::uint32_t tensor = 0;
+  std::uint32_t settings = 0;
+};
+
 // Mounts the ring on `device` (which must outlive it) and remembers the hashes; ok, or
 // the ring's status (the flights are then checked and printed, but not stored).
-aloft::Status start_flight_storage(const aloft::BlockDevice& device, const aloft::Mat3<float>& tensor,
-                                   const aloft::OnboardPipelineSettings<float>& settings);
+aloft::Status start_flight_storage(const aloft::BlockDevice& device, RecordHashes hashes);
 
 // Appends the flight's record; its sequence number in `sequence`.
 aloft::Status store_flight(const aloft::FlightResult<float>& flight, std::uint32_t& sequence);

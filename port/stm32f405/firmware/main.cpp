@@ -26,6 +26,8 @@
 #include "fake_imu_bus.hpp"  // provides fake_imu_bus(): see CMakeLists.txt
 #include "record_area_dump.hpp"
 #include "replay_throw.hpp"
+#include "aloft/records/flight_record_from_result.hpp"
+#include "aloft/records/settings_hash.hpp"
 #else
 #include "internal_flash.hpp"
 #include "spi1_imu_bus.hpp"
@@ -82,6 +84,13 @@ aloft::Mat3<float> body_tensor() {
   }
   return tensor;
 }
+#if !defined(ALOFT_STM32F405_NO_RECORDS)
+// The replay's body and settings are the recorded throw's: hashed here, at start-up, by the
+// code the flight image's build runs (bake_flight_inertia), so the records test covers it.
+aloft_stm32f405::RecordHashes record_hashes() {
+  return {aloft::tensor_hash(body_tensor()), aloft::settings_hash(pipeline_settings(), aloft_stm32f405::live_simulations)};
+}
+#endif
 #else
 constexpr const char* bus_name = "SPI1";
 aloft::ImuBus board_imu_bus() {
@@ -96,19 +105,24 @@ aloft::port::stm32f405::InternalFlash record_flash;
 const aloft::BlockDevice& record_device() { return record_flash.device(); }
 #endif
 void write_records() {}
-using aloft_stm32f405::body_tensor;
 using aloft_stm32f405::flight_inertia;
 using aloft_stm32f405::pipeline_settings;
+#if !defined(ALOFT_STM32F405_NO_RECORDS)
+// Hashed on the build machine (bake_flight_inertia): the image carries no settings hasher.
+aloft_stm32f405::RecordHashes record_hashes() {
+  return {aloft_stm32f405::flight_tensor_hash, aloft_stm32f405::flight_settings_hash};
+}
+#endif
 #endif
 
 #if defined(ALOFT_STM32F405_NO_RECORDS)
 // The image without flight records, built only to measure what the records add to
 // footprint.json (CMakeLists.txt).
-void start_records(const aloft::Mat3<float>&, const aloft::OnboardPipelineSettings<float>&) {}
+void start_records() {}
 void store_record(const aloft::FlightResult<float>&) {}
 #else
-void start_records(const aloft::Mat3<float>& tensor, const aloft::OnboardPipelineSettings<float>& settings) {
-  const aloft::Status mounted = aloft_stm32f405::start_flight_storage(record_device(), tensor, settings);
+void start_records() {
+  const aloft::Status mounted = aloft_stm32f405::start_flight_storage(record_device(), record_hashes());
   if (mounted != aloft::Status::ok)
     ReportWriter().text("flight records off: ").text(aloft::describe(mounted)).line();
 }
@@ -212,7 +226,7 @@ ALOFT_COLD int set_up() {
     return exit_bus_failed;
   }
   start_pipeline();
-  start_records(body_tensor(), pipeline->settings());
+  start_records();
   out.text("ICM-42688-P found on ").text(bus_name).text("; onboard pipeline running, K = ");
   out.integer(aloft_stm32f405::live_simulations).line();
   return 0;
