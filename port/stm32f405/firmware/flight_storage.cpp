@@ -21,7 +21,8 @@ aloft::Status start_flight_storage(const aloft::BlockDevice& device, RecordHashe
 
 aloft::Status store_flight(const aloft::FlightResult<float>& flight, std::uint32_t& sequence) {
   if (!ring) return aloft::Status::storage_full;
-  aloft::FlightRecord record = aloft::make_flight_record(flight, record_hashes.tensor, record_hashes.settings);
+  aloft::FlightRecord record =
+      aloft::make_flight_record(flight, record_hashes.tensor, record_hashes.settings);
   const aloft::Status stored = ring->append(record);
   sequence = record.sequence;
   return stored;

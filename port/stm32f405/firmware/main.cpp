@@ -88,7 +88,8 @@ aloft::Mat3<float> body_tensor() {
 // The replay's body and settings are the recorded throw's: hashed here, at start-up, by the
 // code the flight image's build runs (bake_flight_inertia), so the records test covers it.
 aloft_stm32f405::RecordHashes record_hashes() {
-  return {aloft::tensor_hash(body_tensor()), aloft::settings_hash(pipeline_settings(), aloft_stm32f405::live_simulations)};
+  return {aloft::tensor_hash(body_tensor()),
+          aloft::settings_hash(pipeline_settings(), aloft_stm32f405::live_simulations)};
 }
 #endif
 #else
