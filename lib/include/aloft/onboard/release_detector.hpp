@@ -21,6 +21,7 @@
 // used for later flights, keep that from going further than one flight.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "aloft/cold_path.hpp"
@@ -418,20 +419,26 @@ class ReleaseDetector {
     return after_fade_out(history, j0, c, h, r, level);
   }
 
-  // Where the hand's force ended: a fall of the residual, extended as a straight line to
-  // zero; the first sample from then on is the release. Which fall depends on how far
-  // apart the samples are:
+  // Where the hand's force ended: a fall of the residual, extended to zero; the first
+  // sample from then on is the release. Which fall depends on how far apart the samples
+  // are:
   //  - under `steepest_fall_from_us`: from the newest earlier sample still above
   //    `fall_from_over_level` times the level to
   //    j0, the first at flight level. The last of a force that fades hides in the noise
-  //    there, so the line runs on past j0 (noise at j0 can only move the release later).
+  //    there, so the fall runs on past j0 (noise at j0 can only move the release later).
+  //    It is extended as the square root of the residual, a straight line: a force that
+  //    ends at zero slope (a finger that lifts off, a raised-cosine fall) is quadratic
+  //    near its end, where a straight line through the residual itself reaches zero up to
+  //    a quarter of the fall too early; the root's line reaches zero no earlier than any
+  //    force whose tail is quadratic or steeper (a linear one: later).
   //  - from `steepest_fall_from_us` up to `fade_out_at_most_us` (about 285 Hz to 1.1 kHz): the
   //    sensor's anti-alias filter, set in proportion to its rate, draws the end of the
   //    force out into a tail of a few samples, and a few samples are 5-10 ms here (j0 came
   //    5-9 ms after the release at 400 Hz behind a 100 Hz filter). So the steepest fall in
   //    the `fall_search_samples` up to j0, each measured over at least `fall_chord_us`: its line reaches
   //    zero no earlier than a force that falls with a slope (or ever more steeply) has
-  //    ended, and later by the filter's delay rather than by its settling.
+  //    ended, and later by the filter's delay rather than by its settling. A straight
+  //    line through the residual.
   // The line is extended `fade_out_at_most_us` at most.
   ALOFT_COLD std::uint32_t after_fade_out(const History& history, std::uint32_t j0, std::uint32_t c,
                                           std::uint32_t h, const Vec3<Scalar>& r, Scalar level) const {
@@ -465,7 +472,16 @@ class ReleaseDetector {
       }
     }
     if (!(e_a > e_b)) return j0;
-    Scalar to_zero_us = static_cast<Scalar>(history.span_us(a, b)) * e_b / (e_a - e_b);
+    // How far the fall's line runs on past b: a straight line through the residual, or
+    // (samples close) through its square root.
+    Scalar to_zero_us = Scalar(0);
+    if (dt < settings_.steepest_fall_from_us) {
+      if (!(e_b >= Scalar(0))) return j0;  // no kinematics at j0
+      const Scalar root_a = std::sqrt(e_a), root_b = std::sqrt(e_b);
+      to_zero_us = static_cast<Scalar>(history.span_us(a, b)) * root_b / (root_a - root_b);
+    } else {
+      to_zero_us = static_cast<Scalar>(history.span_us(a, b)) * e_b / (e_a - e_b);
+    }
     const Scalar cap_us = static_cast<Scalar>(settings_.fade_out_at_most_us);
     if (to_zero_us > cap_us) to_zero_us = cap_us;
     // In whole µs after b (the cap keeps it far below 2^32).
