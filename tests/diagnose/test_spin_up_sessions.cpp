@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -29,19 +30,23 @@ namespace gen = aloft::generator;
 
 namespace {
 
-// The tuning set unless ALOFT_SPIN_UP_SEEDS=withheld, =fresh or =unseen.
-gen::RotorSeeds spin_up_seeds() {
-  const char* set = std::getenv("ALOFT_SPIN_UP_SEEDS");
-  const std::string name = set != nullptr ? set : "";
-  if (name == "withheld") return gen::RotorSeeds::withheld;
-  if (name == "fresh") return gen::RotorSeeds::fresh;
-  if (name == "unseen") return gen::RotorSeeds::unseen;
-  return gen::RotorSeeds::tuning;
-}
-
 int sessions_per_kind() {
   const char* count = std::getenv("ALOFT_SPIN_UP_SESSIONS");
   return count != nullptr ? std::max(1, std::atoi(count)) : 5;
+}
+
+// The tuning set unless ALOFT_SPIN_UP_SEEDS=withheld, =fresh, =unseen, or a number: the
+// first seed of a set never drawn before.
+std::vector<gen::SessionCase> spin_up_cases() {
+  const char* set = std::getenv("ALOFT_SPIN_UP_SEEDS");
+  const std::string name = set != nullptr ? set : "";
+  if (!name.empty() && std::isdigit(static_cast<unsigned char>(name.front())))
+    return gen::flight_controller_session_cases(std::stoull(name), sessions_per_kind(), 4);
+  const gen::RotorSeeds seeds = name == "withheld" ? gen::RotorSeeds::withheld
+                                : name == "fresh"  ? gen::RotorSeeds::fresh
+                                : name == "unseen" ? gen::RotorSeeds::unseen
+                                                   : gen::RotorSeeds::tuning;
+  return gen::flight_controller_session_cases(seeds, sessions_per_kind(), 4);
 }
 
 std::string effects_text(const Verdict& v) {
@@ -50,11 +55,21 @@ std::string effects_text(const Verdict& v) {
   return out.empty() ? std::string("none") : out;
 }
 
-// A rotor named, steady or spun up (both report as internal_momentum).
-bool names_rotor(const Verdict& v) {
-  return std::any_of(v.effects.begin(), v.effects.end(), [](const VerdictEffect& e) {
+// The rotor the verdict names, steady or spun up (both report as internal_momentum); null:
+// none.
+const VerdictEffect* named_rotor(const Verdict& v) {
+  const auto named = std::find_if(v.effects.begin(), v.effects.end(), [](const VerdictEffect& e) {
     return std::string(effect_name(e.effect)) == "internal_momentum";
   });
+  return named == v.effects.end() ? nullptr : &*named;
+}
+
+bool names_rotor(const Verdict& v) { return named_rotor(v) != nullptr; }
+
+// The true h at the end of a generated flight.
+Eigen::Vector3d true_h_at_end(const gen::GeneratedFlight& g) {
+  const auto& h = g.truth.params.at("h_N_m_s");
+  return Eigen::Vector3d(h[0], h[1], h[2]);
 }
 
 struct Tally {
@@ -64,16 +79,13 @@ struct Tally {
 // The named rotor's h at the end of the data (the session's longest flight) along the true
 // wheel's axis, over that flight's true h there: the held-back real wheels' bar is 0.5-2.
 double h_at_end_ratio(const Verdict& v, const std::vector<gen::GeneratedFlight>& generated, bool& spun_up) {
-  const auto named = std::find_if(v.effects.begin(), v.effects.end(), [](const VerdictEffect& e) {
-    return std::string(effect_name(e.effect)) == "internal_momentum";
-  });
-  if (named == v.effects.end()) return 0.0;
+  const VerdictEffect* named = named_rotor(v);
+  if (named == nullptr) return 0.0;
   spun_up = named->params.spin_up;
   const auto longest = std::max_element(generated.begin(), generated.end(), [](const auto& a, const auto& b) {
     return a.truth.duration_s < b.truth.duration_s;
   });
-  const auto& h = longest->truth.params.at("h_N_m_s");
-  const Eigen::Vector3d truth(h[0], h[1], h[2]);
+  const Eigen::Vector3d truth = true_h_at_end(*longest);
   const Eigen::Vector3d found =
       named->params.spin_up ? named->params.spin_up_h_at_end() : named->params.vector;
   return found.dot(truth.normalized()) / truth.norm();
@@ -84,14 +96,11 @@ double h_at_end_ratio(const Verdict& v, const std::vector<gen::GeneratedFlight>&
 // report gives no flight its own.
 std::pair<double, double> each_flight_h_ratio(const Verdict& v,
                                               const std::vector<gen::GeneratedFlight>& generated) {
-  const auto named = std::find_if(v.effects.begin(), v.effects.end(), [](const VerdictEffect& e) {
-    return std::string(effect_name(e.effect)) == "internal_momentum";
-  });
-  if (named == v.effects.end() || named->params.spin_up_flights.size() != generated.size()) return {0.0, 0.0};
+  const VerdictEffect* named = named_rotor(v);
+  if (named == nullptr || named->params.spin_up_flights.size() != generated.size()) return {0.0, 0.0};
   double low = INFINITY, high = 0.0;
   for (std::size_t j = 0; j < generated.size(); ++j) {
-    const auto& h = generated[j].truth.params.at("h_N_m_s");
-    const Eigen::Vector3d truth(h[0], h[1], h[2]);
+    const Eigen::Vector3d truth = true_h_at_end(generated[j]);
     const double ratio = named->params.spin_up_flights[j].h_at_end().dot(truth.normalized()) / truth.norm();
     low = std::min(low, ratio);
     high = std::max(high, ratio);
@@ -157,8 +166,7 @@ TEST_CASE("the spin-up model moves as the generator's independent integrator doe
 
 TEST_CASE("spin-up rotor sessions are named a rotor, their look-alikes never", "[rotor][spin_up]") {
   std::map<std::string, Tally> tallies;
-  for (const gen::SessionCase& c :
-       gen::flight_controller_session_cases(spin_up_seeds(), sessions_per_kind(), 4)) {
+  for (const gen::SessionCase& c : spin_up_cases()) {
     std::vector<gen::GeneratedFlight> generated;
     const SessionDiagnosis d = judge(c, generated, false);
     const std::string kind = c.name.substr(0, c.name.rfind('_'));
@@ -199,8 +207,7 @@ TEST_CASE("spin-up rotor sessions are named a rotor, their look-alikes never", "
 
 TEST_CASE("windows before the wheel starts make no confident claim", "[rotor][spin_up]") {
   int windows = 0, confident = 0;
-  for (const gen::SessionCase& c :
-       gen::flight_controller_session_cases(spin_up_seeds(), sessions_per_kind(), 4)) {
+  for (const gen::SessionCase& c : spin_up_cases()) {
     if (c.name.rfind("spin_up", 0) != 0) continue;
     std::vector<gen::GeneratedFlight> generated;
     const SessionDiagnosis d = judge(c, generated, true);

@@ -467,14 +467,17 @@ TEST_CASE("generated rotor throws conserve the world angular momentum in flight"
 
 // Throws of a body with a rotor whose speed is logged (generated_throws.hpp, rotor): the
 // wheel spins up from rest after the release, holds full speed and brakes, mostly in
-// flight; its torque is known from the logged speed, so it is never a landing. Seeds 8600-
-// (fast hand) and 9600- (real hand), on which nothing was chosen, 1, 2 and 4 kHz with a
-// real IMU's errors, held to the bars of the cases without a rotor: release never early
-// (real hand: never more than 10 ms early), no false flight, landings within 10 ms.
-// Hidden ([.]) until the detector takes the rotor's torque from the logged speed: today it
-// takes the spin-up for contact (docs/validation/release-detection.md, "A body with a
-// rotor": fast hand 7 false flights and landings 91-93 % within 10 ms; the same seeds
-// without the rotor meet every bar). Run them with "[rotor_throws]".
+// flight; its torque is known from the logged speed, so it is never a landing
+// (aloft/onboard/torque_test.hpp). Seeds 8600- (fast hand) and 9600- (real hand), on which
+// nothing was chosen (the torque test's design was chosen on shifts 1 and 2 of
+// ALOFT_RELEASE_SEED_SHIFT), 1, 2 and 4 kHz with a real IMU's errors, held to the bars of
+// the cases without a rotor: release never early (real hand: never more than 10 ms early),
+// no false flight, landings within 10 ms. Measured (gcc Release,
+// docs/validation/release-detection.md, "A body with a rotor"): fast hand none early, no
+// false flight, landings 98.5-100 % within 10 ms. The real hand's case stays hidden ([.]):
+// one release 10.1 ms early (r fitted), dated before the rotor started, as before the
+// rotor's torque was taken (the same seeds without the rotor: worst 9.2 ms). Run it with
+// "[rotor_throws]".
 namespace {
 struct RotorSets {
   Tally given, fitted;
@@ -484,7 +487,8 @@ RotorSets run_rotor(std::uint32_t seed0, bool real_hand, const char* set) {
   constexpr bool with_sensor_errors = true;
   constexpr double no_jitter = 0.0;
   constexpr bool no_retouch = false;
-  constexpr bool rotor = true;
+  // ALOFT_RELEASE_NO_ROTOR: the same throws without their rotor, to compare.
+  const bool rotor = std::getenv("ALOFT_RELEASE_NO_ROTOR") == nullptr;
   char name[2][64];
   std::snprintf(name[0], sizeof name[0], "rotor %s, r given", set);
   std::snprintf(name[1], sizeof name[1], "rotor %s, r fitted, I 15%% off", set);
@@ -497,7 +501,7 @@ RotorSets run_rotor(std::uint32_t seed0, bool real_hand, const char* set) {
 }
 }  // namespace
 
-TEST_CASE("release and landing of a body with a logged rotor, fast hand", "[.][release][rotor_throws]") {
+TEST_CASE("release and landing of a body with a logged rotor, fast hand", "[release][rotor_throws]") {
   const RotorSets s = run_rotor(8600, false, "fast hand");
   for (const Tally* t : {&s.given, &s.fitted}) {
     CHECK(t->early == 0);

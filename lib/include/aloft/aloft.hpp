@@ -45,6 +45,7 @@
 #include "aloft/onboard/release_detector.hpp"
 #include "aloft/onboard/release_window.hpp"
 #include "aloft/onboard/sample_history.hpp"
+#include "aloft/onboard/torque_test.hpp"
 
 #include "aloft/records/block_device.hpp"
 #include "aloft/records/crc32.hpp"

@@ -18,10 +18,16 @@ FlightSpec flight_controller_spec(const std::string& effect, const std::string& 
 }
 
 std::vector<SessionCase> flight_controller_session_cases(RotorSeeds seeds, int per_kind, int flights) {
-  std::uint64_t seed = seeds == RotorSeeds::tuning     ? 44010000ull
-                       : seeds == RotorSeeds::withheld ? 44090000ull
-                       : seeds == RotorSeeds::fresh    ? 44170000ull
-                                                       : 44250000ull;
+  return flight_controller_session_cases(seeds == RotorSeeds::tuning     ? 44010000ull
+                                         : seeds == RotorSeeds::withheld ? 44090000ull
+                                         : seeds == RotorSeeds::fresh    ? 44170000ull
+                                                                         : 44250000ull,
+                                         per_kind, flights);
+}
+
+std::vector<SessionCase> flight_controller_session_cases(std::uint64_t first_seed, int per_kind,
+                                                         int flights) {
+  std::uint64_t seed = first_seed;
   const auto next = [&] { return seed += 0x9E3779B1ull; };
   const auto& bodies = body_names();
   const double rates[] = {1000.0, 2000.0, 4000.0, 8000.0};

@@ -31,5 +31,8 @@ FlightSpec flight_controller_spec(const std::string& effect, const std::string& 
 // `per_kind` sessions of each kind, of `flights` flights each (RotorSeeds: seed sets of
 // their own, far from rotor_cases.hpp's).
 std::vector<SessionCase> flight_controller_session_cases(RotorSeeds seeds, int per_kind, int flights);
+// The same from any first seed: a set never drawn before (the named sets' first seeds are
+// 44010000, 44090000, 44170000 and 44250000).
+std::vector<SessionCase> flight_controller_session_cases(std::uint64_t first_seed, int per_kind, int flights);
 
 }  // namespace aloft::generator

@@ -192,6 +192,8 @@ class OnboardPipeline {
   static constexpr int history_samples = onboard_history_samples;
   static constexpr bool takes_rotor = R == RotorSupport::speed_with_samples;
   static constexpr bool estimates_tensor = T == TensorEstimation::on;
+  using TorqueTest = std::conditional_t<takes_rotor, GyrostatTorqueTest<Scalar, onboard_history_samples>,
+                                        BodyTorqueTest<Scalar>>;
 
   OnboardPipeline(const InertiaTensor<Scalar>& inertia, const OnboardPipelineSettings<Scalar>& settings)
       : inertia_(inertia),
@@ -199,7 +201,7 @@ class OnboardPipeline {
         sensor_to_body_(settings.check.sensor_to_body.normalized().toRotationMatrix()),
         sensor_is_body_(sensor_to_body_ == Mat3<Scalar>::Identity()),
         clock_(settings_.clock),
-        detector_(settings_.release, inertia_.tensor()),
+        detector_(settings_.release, torque_test()),
         window_(settings_.release_window),
         lever_arm_(settings_.lever_arm, {settings.release.ridge_rad_s2, settings.release.max_lever_arm_m,
                                          settings.release.free_flight.accel_floor_m_s2}) {}
@@ -268,6 +270,17 @@ class OnboardPipeline {
   const Vec3<Scalar>& imu_position_estimate() const { return lever_arm_.estimate(); }
 
  private:
+  // The detector's torque test: with rotor support, the rotor's known torque is part of the
+  // model wherever the settings give a rotor (aloft/onboard/torque_test.hpp). Called while
+  // constructing: it only takes the addresses of settings_, inertia_ and speeds_.
+  TorqueTest torque_test() const {
+    if constexpr (takes_rotor) {
+      return TorqueTest(settings_.release.free_flight, inertia_, settings_.rotor, speeds_);
+    } else {
+      return TorqueTest(settings_.release.free_flight, inertia_.tensor());
+    }
+  }
+
   // The lever arm to look for a release with: given, else the recording's estimate, else none.
   const Vec3<Scalar>* known_r() const {
     return settings_.imu_position_known ? &settings_.imu_position_m
@@ -426,7 +439,7 @@ class OnboardPipeline {
   void fit_sample(std::uint32_t i) {
     const std::uint32_t h = clock_.half_span();
     BodyKinematics<Scalar> k{typename BodyKinematics<Scalar>::Unset{}};
-    if (!history_.kinematics(i, h, k) || !detector_.torque_free_remembered(i, h, k)) return;
+    if (!history_.kinematics(i, h, k) || !detector_.torque_free_remembered(history_, i, h, k)) return;
     const bool due = lever_arm_.add(LeverArmTerms<Scalar>(k));
     if (due || (on_probation_ && lever_arm_.taken_over())) r_flight_ = lever_arm_.flight_r();
   }
@@ -489,7 +502,7 @@ class OnboardPipeline {
   bool sensor_is_body_;
   StreamClock<Scalar> clock_;
   SampleHistory<Scalar, history_samples> history_;
-  ReleaseDetector<Scalar, history_samples> detector_;
+  ReleaseDetector<Scalar, history_samples, TorqueTest> detector_;
   ReleaseWindow<Scalar> window_;
   LeverArmEstimator<Scalar> lever_arm_;
   std::optional<OnboardCheck<Scalar, K>> check_;

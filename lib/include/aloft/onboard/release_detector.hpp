@@ -27,6 +27,7 @@
 #include "aloft/cold_path.hpp"
 #include "aloft/onboard/lever_arm_estimate.hpp"
 #include "aloft/onboard/sample_history.hpp"
+#include "aloft/onboard/torque_test.hpp"
 #include "aloft/settings.hpp"
 #include "aloft/sensor/whole_microseconds.hpp"
 
@@ -195,19 +196,18 @@ struct FoundLanding {
   std::uint64_t landing_us = 0;
 };
 
-template <typename Scalar, int N>
+// TorqueTest: the gyro's torque test, of the body alone or of a body with a rotor
+// (aloft/onboard/torque_test.hpp).
+template <typename Scalar, int N, typename TorqueTest = BodyTorqueTest<Scalar>>
 class ReleaseDetector {
  public:
   using History = SampleHistory<Scalar, N>;
 
-  // The settings and the tensor are held, not copied (a pipeline's parts share its one
-  // copy): they must outlive the detector.
-  ReleaseDetector(const ReleaseDetectorSettings<Scalar>& settings, const Mat3<Scalar>& inertia)
-      : settings_(settings),
-        inertia_(inertia),
-        torque_scale_floor_(torque_scale_floor(settings.free_flight, inertia)) {}
-  ReleaseDetector(ReleaseDetectorSettings<Scalar>&&, const Mat3<Scalar>&) = delete;
-  ReleaseDetector(const ReleaseDetectorSettings<Scalar>&, Mat3<Scalar>&&) = delete;
+  // The settings are held, not copied (a pipeline's parts share its one copy): they must
+  // outlive the detector, as must what the torque test holds.
+  ReleaseDetector(const ReleaseDetectorSettings<Scalar>& settings, const TorqueTest& torque)
+      : settings_(settings), torque_(torque) {}
+  ReleaseDetector(ReleaseDetectorSettings<Scalar>&&, const TorqueTest&) = delete;
 
   void reset() {
     in_run_ = false;
@@ -218,7 +218,7 @@ class ReleaseDetector {
   bool free_at(const History& history, std::uint32_t i, std::uint32_t h, const Vec3<Scalar>& r) const {
     BodyKinematics<Scalar> k;
     if (!history.kinematics(i, h, k)) return false;
-    return torque_free(k) && centre_specific_force(k, r) <= limit(k, r);
+    return torque_free(history, i, h, k) && centre_specific_force(k, r) <= limit(k, r);
   }
 
   // Evaluates sample c while waiting for release; r is the known lever arm or null (then
@@ -322,14 +322,23 @@ class ReleaseDetector {
   // Samples from this index on may still turn out to be the landing (not to be fed yet).
   std::uint32_t pending_from(std::uint32_t c) const { return landing_run_ > 0 ? landing_start_ : c + 1; }
 
-  bool torque_free(const BodyKinematics<Scalar>& k) const {
-    return relative_torque(inertia_, torque_scale_floor_, k) <= settings_.free_flight.torque_relative;
+  bool torque_free(const History& history, std::uint32_t i, std::uint32_t h,
+                   const BodyKinematics<Scalar>& k) const {
+    if constexpr (TorqueTest::knows_rotor) {
+      return torque_.relative(history, i, h, k) <= settings_.free_flight.torque_relative;
+    } else {
+      // The body's test called here, not through the test's own relative(): the compiler
+      // then lays the image out as before the rotor's test (8 B of alignment padding else).
+      return relative_torque(torque_.inertia(), torque_.scale_floor(), k) <=
+             settings_.free_flight.torque_relative;
+    }
   }
   // The torque test of sample i (kinematics k over +-h), remembered for the 32 newest
   // samples tested: the pipeline's lever-arm fit takes the same samples a few steps later
   // (torque_free_remembered) and need not repeat it.
-  bool torque_free_at(std::uint32_t i, std::uint32_t h, const BodyKinematics<Scalar>& k) {
-    const bool free = torque_free(k);
+  bool torque_free_at(const History& history, std::uint32_t i, std::uint32_t h,
+                      const BodyKinematics<Scalar>& k) {
+    const bool free = torque_free(history, i, h, k);
     if (h != memo_h_ || i != memo_newest_ + 1u) memo_known_ = 0;  // only a gapless run is kept
     const std::uint32_t bit = 1u << (i % 32u);
     memo_h_ = h;
@@ -338,12 +347,13 @@ class ReleaseDetector {
     memo_free_ = free ? (memo_free_ | bit) : (memo_free_ & ~bit);
     return free;
   }
-  bool torque_free_remembered(std::uint32_t i, std::uint32_t h, const BodyKinematics<Scalar>& k) const {
+  bool torque_free_remembered(const History& history, std::uint32_t i, std::uint32_t h,
+                              const BodyKinematics<Scalar>& k) const {
     const std::uint32_t bit = 1u << (i % 32u);
     if (h == memo_h_ && i <= memo_newest_ && memo_newest_ - i < 32u && (memo_known_ & bit) != 0) {
       return (memo_free_ & bit) != 0;
     }
-    return torque_free(k);
+    return torque_free(history, i, h, k);
   }
   Scalar limit(const BodyKinematics<Scalar>& k, const Vec3<Scalar>& r) const {
     return free_flight_accel_limit(settings_.free_flight, k, r);
@@ -384,7 +394,7 @@ class ReleaseDetector {
   // Formed in newest_ itself, not copied there: every sample pays for the copy.
   bool tested(const History& history, std::uint32_t c, std::uint32_t h) {
     newest_.valid = history.kinematics(c, h, newest_.k);
-    newest_.torque_free = newest_.valid && torque_free_at(c, h, newest_.k);
+    newest_.torque_free = newest_.valid && torque_free_at(history, c, h, newest_.k);
     return newest_.valid;
   }
 
@@ -537,8 +547,7 @@ class ReleaseDetector {
   }
 
   const ReleaseDetectorSettings<Scalar>& settings_;
-  const Mat3<Scalar>& inertia_;
-  Scalar torque_scale_floor_;  // of the tensor and the settings (free_flight_residual.hpp)
+  TorqueTest torque_;
   TestedSample newest_;
   std::uint32_t run_start_ = 0;
   std::uint32_t landing_start_ = 0;

@@ -12,6 +12,7 @@
 
 #include "aloft/cold_path.hpp"
 #include "aloft/dynamics/free_flight_residual.hpp"
+#include "aloft/dynamics/rotor.hpp"
 #include "aloft/sensor/imu_sample.hpp"
 
 namespace aloft {
@@ -79,6 +80,13 @@ class SampleHistory {
   std::uint32_t count_ = 0;
 };
 
+// A rotor's angular momentum relative to the body at one sample, and its rate (body axes).
+template <typename Scalar>
+struct RotorMomentum {
+  Vec3<Scalar> h;      // kg·m²/s
+  Vec3<Scalar> h_dot;  // N·m
+};
+
 // The rotor's speed (ImuSample::rotor_rad_s) of the same N samples, by the same index, kept
 // only by a pipeline that takes a rotor (RotorSupport): the others hold nothing and read 0.
 template <typename Scalar, int N, bool Keep>
@@ -86,6 +94,20 @@ class RotorSpeedHistory {
  public:
   void set(std::uint32_t i, Scalar speed) { speeds_[i % N] = speed; }
   Scalar get(std::uint32_t i) const { return speeds_[i % N]; }
+
+  // The rotor's h at sample i and its rate: a central difference of the speed over the same
+  // +-half samples as the gyro's w_dot (SampleHistory::kinematics), so that both sides of
+  // Euler's equations are filtered alike. Only where that w_dot was formed (its span held,
+  // no gap); false when sample i - half, i or i + half carries no speed (imu_rotor_speed).
+  bool momentum(const SampleHistory<Scalar, N>& history, std::uint32_t i, std::uint32_t half,
+                const Rotor<Scalar>& rotor, RotorMomentum<Scalar>& out) const {
+    const unsigned read = history.flags(i - half) & history.flags(i) & history.flags(i + half);
+    if ((read & imu_rotor_speed) == 0) return false;
+    const Scalar span_s = static_cast<Scalar>(history.span_us(i - half, i + half)) * Scalar(1e-6);
+    out.h = rotor.momentum(get(i));
+    out.h_dot = rotor.momentum((get(i + half) - get(i - half)) / span_s);
+    return true;
+  }
 
  private:
   Scalar speeds_[N] = {};
@@ -96,6 +118,10 @@ class RotorSpeedHistory<Scalar, N, false> {
  public:
   void set(std::uint32_t, Scalar) {}
   Scalar get(std::uint32_t) const { return Scalar(0); }
+  bool momentum(const SampleHistory<Scalar, N>&, std::uint32_t, std::uint32_t, const Rotor<Scalar>&,
+                RotorMomentum<Scalar>&) const {
+    return false;
+  }
 };
 
 }  // namespace aloft
