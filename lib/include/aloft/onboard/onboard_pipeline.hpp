@@ -506,7 +506,9 @@ class OnboardPipeline {
   ReleaseWindow<Scalar> window_;
   LeverArmEstimator<Scalar> lever_arm_;
   std::optional<OnboardCheck<Scalar, K>> check_;
-  std::conditional_t<estimates_tensor, TensorEstimator<Scalar>, NoTensorEstimator<Scalar>> tensor_;
+  std::conditional_t<estimates_tensor, TensorEstimator<Scalar, takes_rotor>,
+                     NoTensorEstimator<Scalar, takes_rotor>>
+      tensor_;
   FlightResult<Scalar> current_;
   Vec3<Scalar> r_flight_ = Vec3<Scalar>::Zero();  // the lever arm the open flight is judged with
   std::uint64_t rearmed_at_us_ = 0;

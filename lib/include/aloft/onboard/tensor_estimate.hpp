@@ -78,8 +78,8 @@ struct TensorLeastSquares {
   Scalar rss = Scalar(0);             // residual sum of squares of b's part
   Scalar rate_squared_s = Scalar(0);  // sum over the pieces of ∫ |w|² dt, rad²/s
 
-  // One row a theta = b, rotated into R.
-  void add_row(Scalar (&a)[6], Scalar b) {
+  // One row a theta = b, rotated into R. Out of line: three rows a piece share its code.
+  ALOFT_OUT_OF_LINE void add_row(Scalar (&a)[6], Scalar b) {
     int k = 0;  // r's index of R(i, i)
     for (int i = 0; i < 6; k += 6 - i, ++i) {
       if (!(std::abs(a[i]) > Scalar(0))) continue;
@@ -186,6 +186,17 @@ ALOFT_COLD inline void propagate(const Vec3<Scalar>& m, const Mat3<Scalar>& axes
   out.axes_95_rad(0) = axis_angle_95(tilt(1, 1), tilt(1, 2), tilt(2, 2), t_over_z);
   out.axes_95_rad(1) = axis_angle_95(tilt(0, 0), tilt(0, 2), tilt(2, 2), t_over_z);
   out.axes_95_rad(2) = axis_angle_95(tilt(0, 0), tilt(0, 1), tilt(1, 1), t_over_z);
+}
+
+// theta's tensor decomposed and its figures with their intervals. Its own frame: the
+// decomposition's locals are not on the stack while theta is solved for.
+template <typename Scalar>
+ALOFT_COLD inline void describe(const Vec6<Scalar>& theta, const Eigen::Matrix<Scalar, 6, 6>& vectors,
+                                const Vec6<Scalar>& weight, Scalar t, TensorEstimate<Scalar>& out) {
+  Vec3<Scalar> m;
+  Mat3<Scalar> axes;
+  symmetric_eigen_decomposition(tensor_of(theta), m, axes);
+  propagate(m, axes, vectors, weight, t, out);
   out.axes = Quat<Scalar>(axes).normalized();
   out.principal = m;
 }
@@ -247,8 +258,9 @@ inline bool solve_scaled(const TensorLeastSquares<Scalar>& ls, Scalar rows, cons
 
 // N's eigen-decomposition from R, theta and its covariance's weights; false when the flight
 // does not fix theta. Its own frame: R's working copy is gone before the intervals are
-// carried to the figures (the stack of a firmware's flight end).
-template <typename Scalar>
+// carried to the figures (the stack of a firmware's flight end). MayBeScaled: whether a
+// rotor may have given the scale (without, the scaled solve is not compiled in).
+template <typename Scalar, bool MayBeScaled>
 ALOFT_COLD inline bool solve_tensor(const TensorLeastSquares<Scalar>& ls, TensorPieces pieces,
                                     Scalar max_relative_sd, Eigen::Matrix<Scalar, 6, 6>& vectors,
                                     Vec6<Scalar>& theta, Vec6<Scalar>& weight, Scalar& dof) {
@@ -256,14 +268,15 @@ ALOFT_COLD inline bool solve_tensor(const TensorLeastSquares<Scalar>& ls, Tensor
   Vec6<Scalar> values;
   gram_eigen_decomposition(x, values, vectors);
   const Scalar rows = Scalar(3) * static_cast<Scalar>(pieces.count);
-  return pieces.scaled ? solve_scaled(ls, rows, values, vectors, x, max_relative_sd, theta, weight, dof)
-                       : solve_scale_free(values, vectors, rows, max_relative_sd, theta, weight, dof);
+  if (MayBeScaled && pieces.scaled)
+    return solve_scaled(ls, rows, values, vectors, x, max_relative_sd, theta, weight, dof);
+  return solve_scale_free(values, vectors, rows, max_relative_sd, theta, weight, dof);
 }
 
 }  // namespace detail
 
 // The estimate from a flight's least-squares problem; `scale` is theta's unit in kg·m².
-template <typename Scalar>
+template <typename Scalar, bool MayBeScaled = true>
 ALOFT_COLD inline void estimate_tensor(const TensorLeastSquares<Scalar>& ls, TensorPieces pieces,
                                        Scalar scale, const TensorDetermination<Scalar>& d,
                                        TensorEstimate<Scalar>& out) {
@@ -277,14 +290,12 @@ ALOFT_COLD inline void estimate_tensor(const TensorLeastSquares<Scalar>& ls, Ten
   Eigen::Matrix<Scalar, 6, 6> vectors;
   detail::Vec6<Scalar> theta, weight;
   Scalar dof = Scalar(0);
-  if (!detail::solve_tensor(ls, pieces, d.max_relative_sd, vectors, theta, weight, dof)) {
+  if (!detail::solve_tensor<Scalar, MayBeScaled>(ls, pieces, d.max_relative_sd, vectors, theta, weight,
+                                                 dof)) {
     out.note = TensorEstimateNote::one_axis_spin;
     return;
   }
-  Vec3<Scalar> m;
-  Mat3<Scalar> axes;
-  symmetric_eigen_decomposition(detail::tensor_of(theta), m, axes);
-  detail::propagate(m, axes, vectors, weight, detail::t_quantile_975(dof), out);
+  detail::describe(theta, vectors, weight, detail::t_quantile_975(dof), out);
   if (!(out.principal(0) > Scalar(0))) {
     out.note = TensorEstimateNote::not_a_tensor;
     return;

@@ -95,7 +95,9 @@ struct TensorEstimatorInputs {
   const Rotor<Scalar>& rotor;
 };
 
-template <typename Scalar>
+// Rotor: whether a rotor's speed may come with the samples (a pipeline's RotorSupport);
+// without, the rotor's terms are not compiled in.
+template <typename Scalar, bool Rotor = true>
 class TensorEstimator {
  public:
   using Inputs = TensorEstimatorInputs<Scalar>;
@@ -125,7 +127,7 @@ class TensorEstimator {
     const Scalar tau = static_cast<Scalar>(in.settings.gyro_filter_us) * Scalar(1e-6);
     // The rotor's speed through a filter like the gyro's, so that both lag alike (without a
     // rotor it stays 0, and the sample's work has no rotor terms).
-    const bool rotor = in.rotor.present();
+    const bool rotor = Rotor && in.rotor.present();
     const Scalar speed_before = speed_f_;
     if (rotor) speed_f_ += (dt / (tau + dt)) * (rotor_speed - speed_f_);
     const bool first_step = elapsed_us_ == 0;
@@ -162,7 +164,7 @@ class TensorEstimator {
     const TensorDetermination<Scalar> d{in.settings.min_pieces, in.settings.min_rms_rate_rad_s,
                                         in.settings.max_relative_sd,
                                         static_cast<std::uint32_t>(in.settings.piece_us)};
-    estimate_tensor(ls_, pieces(), nominal_scale(in.nominal), d, out);
+    estimate_tensor<Scalar, Rotor>(ls_, pieces(), nominal_scale(in.nominal), d, out);
   }
 
   const TensorLeastSquares<Scalar>& least_squares() const { return ls_; }
@@ -198,7 +200,7 @@ class TensorEstimator {
     products_[3] += ww.x() * w.y();
     products_[4] += ww.x() * w.z();
     products_[5] += ww.y() * w.z();
-    speed_omega_ += rotor_speed * ww;
+    if (Rotor) speed_omega_ += rotor_speed * ww;
   }
 
   // One sample's share, in one pass over the integrals: dt w w^T and the filter's term
@@ -212,7 +214,7 @@ class TensorEstimator {
     products_[3] += a.x() * w.y() + b.x() * dw.y();
     products_[4] += a.x() * w.z() + b.x() * dw.z();
     products_[5] += a.y() * w.z() + b.y() * dw.z();
-    if (rotor) speed_omega_ += speed_f_ * a + ds * b;
+    if (Rotor && rotor) speed_omega_ += speed_f_ * a + ds * b;
   }
 
   // A piece's end (dt > 0 its first, dt < 0 its last): half the sample's weight, and the
@@ -234,7 +236,7 @@ class TensorEstimator {
     products_[3] += a.x() * dw.y() + b.x() * w.y();
     products_[4] += a.x() * dw.z() + b.x() * w.z();
     products_[5] += a.y() * dw.z() + b.y() * w.z();
-    speed_omega_ += ds * a + rotor_speed * b;
+    if (Rotor) speed_omega_ += ds * a + rotor_speed * b;
   }
 
   // The piece's three rows: column m is the body's side of the integrated equations for
@@ -249,7 +251,7 @@ class TensorEstimator {
     const Eigen::Matrix<Scalar, 3, 6> a =
         (scale * to_rates) * integrated_body_torque_per_entry(delta_omega, p);
     Vec3<Scalar> b = Vec3<Scalar>::Zero();
-    if (in.rotor.present()) {
+    if (Rotor && in.rotor.present()) {
       b = -(to_rates * integrated_rotor_torque(in.rotor, speed_b - speed_a_, speed_omega_));
       if (b.squaredNorm() > Scalar(0)) scaled_ = true;
     }
@@ -280,7 +282,7 @@ class TensorEstimator {
 
 // What a pipeline built without the estimate (TensorEstimation::off) holds in its place:
 // nothing, so that the estimate's cost can be measured against it.
-template <typename Scalar>
+template <typename Scalar, bool Rotor = true>
 class NoTensorEstimator {
  public:
   void start() {}
