@@ -1,6 +1,7 @@
 #include "common/tensor_estimate_json.hpp"
 
-#include <charconv>
+#include "common/shortest_decimal.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -11,14 +12,6 @@ namespace {
 using nlohmann::json;
 
 constexpr double kRadToDeg = 57.29577951308232;
-
-// A float as the shortest decimal that reads back as the same float: what the firmware holds.
-double shortest(float value) {
-  char text[32];
-  const auto [end, error] = std::to_chars(text, text + sizeof(text), value);
-  return error == std::errc() ? std::strtod(std::string(text, end).c_str(), nullptr)
-                              : static_cast<double>(value);
-}
 
 json interval(double value, double half_width) {
   return json::array({value - half_width, value + half_width});
@@ -37,13 +30,15 @@ json tensor_estimate_json(const TensorEstimate<float>& e) {
     return j;
   }
   const double r[2] = {double(e.ratio(0)), double(e.ratio(1))};
-  j["principal_ratios"] = {shortest(e.ratio(0)), shortest(e.ratio(1))};
+  j["principal_ratios"] = {shortest_decimal(e.ratio(0)), shortest_decimal(e.ratio(1))};
   j["principal_ratios_95"] = {interval(r[0], e.ratios_95[0]), interval(r[1], e.ratios_95[1])};
-  j["axes"] = {shortest(e.axes.w()), shortest(e.axes.x()), shortest(e.axes.y()), shortest(e.axes.z())};
+  j["axes"] = {shortest_decimal(e.axes.w()), shortest_decimal(e.axes.x()), shortest_decimal(e.axes.y()),
+               shortest_decimal(e.axes.z())};
   j["axes_95_deg"] = {e.axes_95_rad(0) * kRadToDeg, e.axes_95_rad(1) * kRadToDeg,
                       e.axes_95_rad(2) * kRadToDeg};
   if (e.absolute) {
-    j["principal_kg_m2"] = {shortest(e.principal(0)), shortest(e.principal(1)), shortest(e.principal(2))};
+    j["principal_kg_m2"] = {shortest_decimal(e.principal(0)), shortest_decimal(e.principal(1)),
+                            shortest_decimal(e.principal(2))};
     j["principal_kg_m2_95"] = {interval(e.principal(0), e.principal_95(0)),
                                interval(e.principal(1), e.principal_95(1)),
                                interval(e.principal(2), e.principal_95(2))};

@@ -1,8 +1,8 @@
 #include "replay/replay_report_json.hpp"
 
+#include "common/shortest_decimal.hpp"
 #include "common/tensor_estimate_json.hpp"
 
-#include <charconv>
 #include <cstdlib>
 #include <string>
 
@@ -12,15 +12,6 @@ namespace {
 using nlohmann::json;
 
 constexpr double kRadToDeg = 57.29577951308232;
-
-// A float result as the shortest decimal that reads back as the same float (0.031, not
-// 0.03099999949336052): what the firmware holds, without double's extra digits.
-double shortest(float value) {
-  char text[32];
-  const auto [end, error] = std::to_chars(text, text + sizeof(text), value);
-  return error == std::errc() ? std::strtod(std::string(text, end).c_str(), nullptr)
-                              : static_cast<double>(value);
-}
 
 // Why a flight carries no verdict on the tensor, or empty when it does.
 std::string why_no_verdict(const FlightResult<float>& f) {
@@ -37,15 +28,15 @@ json flight_json(const ReplayResult& result, const FlightResult<float>& f) {
   j["samples"] = f.samples;
   j["gaps"] = f.gaps;
   j["clipped_samples"] = f.clipped_samples;
-  j["imu_position_m"] = {shortest(f.imu_position_m.x()), shortest(f.imu_position_m.y()),
-                         shortest(f.imu_position_m.z())};
+  j["imu_position_m"] = {shortest_decimal(f.imu_position_m.x()), shortest_decimal(f.imu_position_m.y()),
+                         shortest_decimal(f.imu_position_m.z())};
   j["imu_position_from"] = f.imu_position_estimated ? "estimated" : "body";
   j["comparisons"] = f.overall.count();
   const std::string note = why_no_verdict(f);
   if (note.empty()) {
     j["rms_da_deg"] = static_cast<double>(f.overall.rms_da()) * kRadToDeg;
     j["max_da_deg"] = static_cast<double>(f.overall.max_da()) * kRadToDeg;
-    j["rms_rel_err"] = shortest(f.overall.rms_relative_error());
+    j["rms_rel_err"] = shortest_decimal(f.overall.rms_relative_error());
   } else {
     j["rms_da_deg"] = nullptr;
     j["max_da_deg"] = nullptr;
