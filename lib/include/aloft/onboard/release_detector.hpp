@@ -433,7 +433,8 @@ class ReleaseDetector {
   // sample from then on is the release. Which fall depends on how far apart the samples
   // are:
   //  - under `steepest_fall_from_us`: from the newest earlier sample still above
-  //    `fall_from_over_level` times the level to
+  //    `fall_from_over_level` times the level (none: from the last sample above the
+  //    level, j0 - 1, for a weak force such as a finger's) to
   //    j0, the first at flight level. The last of a force that fades hides in the noise
   //    there, so the fall runs on past j0 (noise at j0 can only move the release later).
   //    It is extended as the square root of the residual, a straight line: a force that
@@ -463,7 +464,13 @@ class ReleaseDetector {
         e_a = residual(history, a, h, r);
         if (e_a < Scalar(0) || e_a > fall_from) break;
       }
-      if (!(e_a > fall_from)) return j0;
+      if (!(e_a > fall_from)) {
+        // A weak push (a finger that touched again, 3-4 m/s²) that never rose over
+        // fall_from: its fall is extended from the last sample above the level.
+        if (j0 <= h + 1u || !history.holds(j0 - 2u - h)) return j0;
+        a = j0 - 1u;
+        e_a = residual(history, a, h, r);
+      }
     } else {
       const std::uint32_t step =
           (settings_.fall_chord_us + dt - 1u) / dt;  // samples per fall, at least the chord
