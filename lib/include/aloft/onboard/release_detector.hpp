@@ -429,31 +429,32 @@ class ReleaseDetector {
     return after_fade_out(history, j0, c, h, r, level);
   }
 
-  // Where the hand's force ended: a fall of the residual, extended to zero; the first
-  // sample from then on is the release. Which fall depends on how far apart the samples
-  // are:
+  // Where the hand's force ended: a fall of the residual, extended as a straight line to
+  // zero; the first sample from then on is the release. Which fall depends on how far
+  // apart the samples are:
   //  - under `steepest_fall_from_us`: from the newest earlier sample still above
-  //    `fall_from_over_level` times the level (none: from the last sample above the
-  //    level, j0 - 1, for a weak force such as a finger's) to
+  //    `fall_from_over_level` times the level to
   //    j0, the first at flight level. The last of a force that fades hides in the noise
-  //    there, so the fall runs on past j0 (noise at j0 can only move the release later).
-  //    It is extended as the square root of the residual, a straight line: a force that
-  //    ends at zero slope (a finger that lifts off, a raised-cosine fall) is quadratic
-  //    near its end, where a straight line through the residual itself reaches zero up to
-  //    a quarter of the fall too early; the root's line reaches zero no earlier than any
-  //    force whose tail is quadratic or steeper (a linear one: later).
+  //    there, so the line runs on past j0 (noise at j0 can only move the release later).
+  //    A weak push that never rose that high (a finger that touched again, 3-4 m/s²):
+  //    from j0 - 1, the last sample above the level, along the line through the
+  //    residual's square root. A finger lifts off at zero slope (a raised-cosine fall), so
+  //    its force is quadratic near its end, where a straight line through the residual
+  //    reaches zero too early; the root's line reaches zero no earlier than any force whose
+  //    tail is quadratic or steeper. (Taken for every fall, the root's line dated one
+  //    generated rotor throw's release so that its flight ended at the rotor's brake.)
   //  - from `steepest_fall_from_us` up to `fade_out_at_most_us` (about 285 Hz to 1.1 kHz): the
   //    sensor's anti-alias filter, set in proportion to its rate, draws the end of the
   //    force out into a tail of a few samples, and a few samples are 5-10 ms here (j0 came
   //    5-9 ms after the release at 400 Hz behind a 100 Hz filter). So the steepest fall in
   //    the `fall_search_samples` up to j0, each measured over at least `fall_chord_us`: its line reaches
   //    zero no earlier than a force that falls with a slope (or ever more steeply) has
-  //    ended, and later by the filter's delay rather than by its settling. A straight
-  //    line through the residual.
+  //    ended, and later by the filter's delay rather than by its settling.
   // The line is extended `fade_out_at_most_us` at most.
   ALOFT_COLD std::uint32_t after_fade_out(const History& history, std::uint32_t j0, std::uint32_t c,
                                           std::uint32_t h, const Vec3<Scalar>& r, Scalar level) const {
     std::uint32_t a = j0, b = j0;
+    bool weak = false;
     Scalar e_a = residual(history, j0, h, r), e_b = e_a;
     const std::uint32_t dt = history.dt_us(j0);
     const std::uint32_t searched = settings_.fall_search_samples;
@@ -464,12 +465,11 @@ class ReleaseDetector {
         e_a = residual(history, a, h, r);
         if (e_a < Scalar(0) || e_a > fall_from) break;
       }
-      if (!(e_a > fall_from)) {
-        // A weak push (a finger that touched again, 3-4 m/s²) that never rose over
-        // fall_from: its fall is extended from the last sample above the level.
+      if (!(e_a > fall_from)) {  // a weak push (see above)
         if (j0 <= h + 1u || !history.holds(j0 - 2u - h)) return j0;
         a = j0 - 1u;
         e_a = residual(history, a, h, r);
+        weak = true;
       }
     } else {
       const std::uint32_t step =
@@ -489,15 +489,11 @@ class ReleaseDetector {
       }
     }
     if (!(e_a > e_b)) return j0;
-    // How far the fall's line runs on past b: a straight line through the residual, or
-    // (samples close) through its square root.
-    Scalar to_zero_us = Scalar(0);
-    if (dt < settings_.steepest_fall_from_us) {
+    Scalar to_zero_us = static_cast<Scalar>(history.span_us(a, b)) * e_b / (e_a - e_b);
+    if (weak) {
       if (!(e_b >= Scalar(0))) return j0;  // no kinematics at j0
       const Scalar root_a = std::sqrt(e_a), root_b = std::sqrt(e_b);
       to_zero_us = static_cast<Scalar>(history.span_us(a, b)) * root_b / (root_a - root_b);
-    } else {
-      to_zero_us = static_cast<Scalar>(history.span_us(a, b)) * e_b / (e_a - e_b);
     }
     const Scalar cap_us = static_cast<Scalar>(settings_.fade_out_at_most_us);
     if (to_zero_us > cap_us) to_zero_us = cap_us;

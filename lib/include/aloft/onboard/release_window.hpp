@@ -24,7 +24,6 @@
 // and at rates where a block holds fewer than `min_block_samples` samples.
 #pragma once
 
-#include <cmath>
 #include <cstdint>
 
 #include "aloft/cold_path.hpp"
@@ -213,10 +212,10 @@ class ReleaseWindow {
   // whose force averages half its start (a raised cosine, a straight line) lasts twice the
   // first block's mean excess over its samples. Measured (tests/host/test_release_detection.cpp,
   // re-touch, tuning seeds): without it the first free block's start came up to 5 ms
-  // before the finger's end; half of it left 29 of 324 fast-hand releases early, against
-  // 12 (docs/validation/release-detection.md, "A finger's re-touch").
-  std::uint32_t tail_samples(const Block& pushed, std::uint32_t first_n, const Vec3<Scalar>& r,
-                             const Vec3<Scalar>& level) const {
+  // before the finger's end; with half of it 31 of 324 fast-hand releases were early,
+  // against 16 (docs/validation/release-detection.md, "A finger's re-touch").
+  ALOFT_COLD std::uint32_t tail_samples(const Block& pushed, std::uint32_t first_n, const Vec3<Scalar>& r,
+                                        const Vec3<Scalar>& level) const {
     constexpr Scalar fall_over_mean = Scalar(2);
     const Block& first = closed(first_n);
     const Scalar push = (mean_residual(pushed, r) - level).norm();
@@ -224,7 +223,8 @@ class ReleaseWindow {
     const Scalar most = static_cast<Scalar>(first.samples - 1u);
     Scalar samples = fall_over_mean * static_cast<Scalar>(first.samples) * excess / push;
     if (!(samples <= most)) samples = most;  // and a push of zero (never: the block is not free)
-    return static_cast<std::uint32_t>(std::ceil(samples));
+    const auto whole = static_cast<std::uint32_t>(samples);
+    return static_cast<Scalar>(whole) < samples ? whole + 1u : whole;  // rounded up
   }
 
   // The n-th newest closed block (0: the newest; the open block is not yet closed).
