@@ -21,7 +21,9 @@
 // The proposed release is kept (it is dated more finely than a block's grid) unless the
 // window's lies more than one block after it, or more than two blocks before it (a proposal
 // held back by ringing; closer than that, the block grid is no better than the proposal),
-// and at rates where a block holds fewer than `min_block_samples` samples.
+// or the block before the run is not free and starts at or after the proposal (a finger
+// that touched again: the release is then dated past the push's tail, tail_samples), and
+// at rates where a block holds fewer than `min_block_samples` samples.
 #pragma once
 
 #include <cstdint>
