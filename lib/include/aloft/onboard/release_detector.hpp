@@ -21,6 +21,7 @@
 // used for later flights, keep that from going further than one flight.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "aloft/cold_path.hpp"
@@ -435,6 +436,13 @@ class ReleaseDetector {
   //    `fall_from_over_level` times the level to
   //    j0, the first at flight level. The last of a force that fades hides in the noise
   //    there, so the line runs on past j0 (noise at j0 can only move the release later).
+  //    A weak push that never rose that high (a finger that touched again, 3-4 m/s²):
+  //    from j0 - 1, the last sample above the level, along the line through the
+  //    residual's square root. A finger lifts off at zero slope (a raised-cosine fall), so
+  //    its force is quadratic near its end, where a straight line through the residual
+  //    reaches zero too early; the root's line reaches zero no earlier than any force whose
+  //    tail is quadratic or steeper. (Taken for every fall, the root's line dated one
+  //    generated rotor throw's release so that its flight ended at the rotor's brake.)
   //  - from `steepest_fall_from_us` up to `fade_out_at_most_us` (about 285 Hz to 1.1 kHz): the
   //    sensor's anti-alias filter, set in proportion to its rate, draws the end of the
   //    force out into a tail of a few samples, and a few samples are 5-10 ms here (j0 came
@@ -446,6 +454,7 @@ class ReleaseDetector {
   ALOFT_COLD std::uint32_t after_fade_out(const History& history, std::uint32_t j0, std::uint32_t c,
                                           std::uint32_t h, const Vec3<Scalar>& r, Scalar level) const {
     std::uint32_t a = j0, b = j0;
+    bool weak = false;
     Scalar e_a = residual(history, j0, h, r), e_b = e_a;
     const std::uint32_t dt = history.dt_us(j0);
     const std::uint32_t searched = settings_.fall_search_samples;
@@ -456,7 +465,12 @@ class ReleaseDetector {
         e_a = residual(history, a, h, r);
         if (e_a < Scalar(0) || e_a > fall_from) break;
       }
-      if (!(e_a > fall_from)) return j0;
+      if (!(e_a > fall_from)) {  // a weak push (see above)
+        if (j0 <= h + 1u || !history.holds(j0 - 2u - h)) return j0;
+        a = j0 - 1u;
+        e_a = residual(history, a, h, r);
+        weak = true;
+      }
     } else {
       const std::uint32_t step =
           (settings_.fall_chord_us + dt - 1u) / dt;  // samples per fall, at least the chord
@@ -476,6 +490,11 @@ class ReleaseDetector {
     }
     if (!(e_a > e_b)) return j0;
     Scalar to_zero_us = static_cast<Scalar>(history.span_us(a, b)) * e_b / (e_a - e_b);
+    if (weak) {
+      if (!(e_b >= Scalar(0))) return j0;  // no kinematics at j0
+      const Scalar root_a = std::sqrt(e_a), root_b = std::sqrt(e_b);
+      to_zero_us = static_cast<Scalar>(history.span_us(a, b)) * root_b / (root_a - root_b);
+    }
     const Scalar cap_us = static_cast<Scalar>(settings_.fade_out_at_most_us);
     if (to_zero_us > cap_us) to_zero_us = cap_us;
     // In whole µs after b (the cap keeps it far below 2^32).

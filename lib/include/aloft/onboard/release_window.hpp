@@ -21,7 +21,9 @@
 // The proposed release is kept (it is dated more finely than a block's grid) unless the
 // window's lies more than one block after it, or more than two blocks before it (a proposal
 // held back by ringing; closer than that, the block grid is no better than the proposal),
-// and at rates where a block holds fewer than `min_block_samples` samples.
+// or the block before the run is not free and starts at or after the proposal (a finger
+// that touched again: the release is then dated past the push's tail, tail_samples), and
+// at rates where a block holds fewer than `min_block_samples` samples.
 #pragma once
 
 #include <cstdint>
@@ -168,11 +170,22 @@ class ReleaseWindow {
     // Blocks of few samples date no better than the sample-by-sample rules (file comment).
     const auto after_us = static_cast<std::int32_t>(first.start_low_us - proposed_low);
     const auto block_us = static_cast<std::int32_t>(settings_.block_us);
-    const bool moved =
-        (after_us > block_us || after_us < -2 * block_us) && first.samples >= settings_.min_block_samples;
-    out.index = moved ? first.first_index : proposed_index;
-    out.release_us =
-        moved ? static_cast<std::uint64_t>(static_cast<std::int64_t>(proposed_us) + after_us) : proposed_us;
+    // A block that is not free and starts at or after the proposal: a push after the
+    // proposed release (a finger that touched again), whose tail may reach into the run.
+    const bool pushed_after =
+        run + 1u < count_ && static_cast<std::int32_t>(closed(run).start_low_us - proposed_low) >= 0;
+    const bool moved = (after_us > block_us || after_us < -2 * block_us || pushed_after) &&
+                       first.samples >= settings_.min_block_samples;
+    if (!moved) {
+      out.index = proposed_index;
+      out.release_us = proposed_us;
+      return out;
+    }
+    const std::uint32_t tail = pushed_after ? tail_samples(closed(run), run - 1u, r, level) : 0u;
+    const std::uint32_t next_low = run >= 2u ? closed(run - 2u).start_low_us : end_low;
+    out.index = first.first_index + tail;
+    out.release_us = static_cast<std::uint64_t>(static_cast<std::int64_t>(proposed_us) + after_us) +
+                     tail * (next_low - first.start_low_us) / first.samples;
     return out;
   }
 
@@ -194,6 +207,27 @@ class ReleaseWindow {
     std::uint16_t samples;
     std::uint16_t torque_samples;
   };
+
+  // How many of the first free block's samples the push before it may still reach into.
+  // The push's level is the mean of the block before (at most its peak, when it covered
+  // only part of that block: the tail comes out longer); a fall from that level to zero
+  // whose force averages half its start (a raised cosine, a straight line) lasts twice the
+  // first block's mean excess over its samples. Measured (tests/host/test_release_detection.cpp,
+  // re-touch, tuning seeds): without it the first free block's start came up to 5 ms
+  // before the finger's end; with half of it 31 of 324 fast-hand releases were early,
+  // against 16 (docs/validation/release-detection.md, "A finger's re-touch").
+  ALOFT_COLD std::uint32_t tail_samples(const Block& pushed, std::uint32_t first_n, const Vec3<Scalar>& r,
+                                        const Vec3<Scalar>& level) const {
+    constexpr Scalar fall_over_mean = Scalar(2);
+    const Block& first = closed(first_n);
+    const Scalar push = (mean_residual(pushed, r) - level).norm();
+    const Scalar excess = (mean_residual(first, r) - level).norm();
+    const Scalar most = static_cast<Scalar>(first.samples - 1u);
+    Scalar samples = fall_over_mean * static_cast<Scalar>(first.samples) * excess / push;
+    if (!(samples <= most)) samples = most;  // and a push of zero (never: the block is not free)
+    const auto whole = static_cast<std::uint32_t>(samples);
+    return static_cast<Scalar>(whole) < samples ? whole + 1u : whole;  // rounded up
+  }
 
   // The n-th newest closed block (0: the newest; the open block is not yet closed).
   const Block& closed(std::uint32_t n) const { return blocks_[(newest_ - 1u - n) % ring_blocks]; }
