@@ -6,11 +6,9 @@
 
 #include <cmath>
 #include <complex>
-#include <utility>
 
 #include "diagnose/2_model/flight_model.hpp"
 #include "diagnose/2_model/reading_derivatives.hpp"
-#include "diagnose/4_judge/low_pass_shape.hpp"
 
 using namespace aloft::host::diagnose;
 
@@ -296,44 +294,5 @@ TEST_CASE("two predictions of different theta side by side read bit for bit as e
     predict_readings(c.model, flight, c.ref, w_b, c.theta_b, alone_b);
     predict_readings_two(c.model, flight, c.ref, w_a, c.theta_a, w_b, c.theta_b, side_a, side_b);
     check_side_by_side_as_alone(alone_a, alone_b, side_a, side_b);
-  }
-}
-
-// A gyro behind a low-pass (Flight::low_pass): the model's readings pass the same filter.
-// The axisymmetric body's across-axis rate is a pure tone at lambda, so once the filter's
-// start has faded each reading is the exact rate with the tone's amplitude scaled by the
-// filter's gain (its power gain from low_pass_shape.hpp, written independently of the
-// filter), and the axial rate, a constant, passes unchanged.
-TEST_CASE("behind a gyro low-pass the readings are the exact rate at the filter's gain", "[flight_model]") {
-  const double a = 0.002, c = 0.0035;
-  const NominalInertia body = NominalInertia::of_tensor(Eigen::Vector3d(a, a, c).asDiagonal());
-  const Eigen::Vector3d w0(4.0, -2.0, 12.0);
-  const double lambda = (c - a) / a * w0(2), tone_hz = lambda / (2.0 * 3.141592653589793);
-  for (const auto& [order, cutoff_hz] : {std::pair<int, double>{1, 5.0}, std::pair<int, double>{2, 3.0}}) {
-    Flight flight = kilohertz_flight();
-    flight.low_pass = {order, cutoff_hz, 1000.0};
-    const std::size_t ref = 0;
-    std::vector<Eigen::Vector3d> readings;
-    predict_readings(EffectModel(Effect::none, body), flight, ref, w0, Eigen::VectorXd(), readings);
-    const double gain = std::sqrt(LowPassShape(order, cutoff_hz, 1000.0).gain(tone_hz));
-    double amplitude_error = 0.0, axial_error = 0.0;
-    for (std::size_t k = 1000; k < flight.size(); ++k) {  // the start faded (1 s)
-      amplitude_error =
-          std::max(amplitude_error, std::abs(readings[k].head<2>().norm() - gain * w0.head<2>().norm()));
-      axial_error = std::max(axial_error, std::abs(readings[k](2) - w0(2)));
-    }
-    INFO("order " << order << ": gain " << gain << ", amplitude off by " << amplitude_error << " rad/s");
-    CHECK(gain < 0.98);  // the filter does show
-    // Measured 7e-8 rad/s (PT1) and 3.5e-6 (Butterworth: its start fades at 13 /s).
-    CHECK(amplitude_error < 1e-5);
-    CHECK(axial_error < 1e-9);
-    // A fit that compares some samples only (ReadSamples) still gets every one it reads
-    // through the filter, which needs the samples before it.
-    std::vector<char> mask(flight.size(), 0);
-    for (std::size_t k = 0; k < mask.size(); k += 3) mask[k] = 1;
-    std::vector<Eigen::Vector3d> some;
-    predict_readings(EffectModel(Effect::none, body), flight, ref, w0, Eigen::VectorXd(), some,
-                     SampleStepping::shared_steps, nullptr, ReadSamples{mask.data(), flight.usable.data()});
-    for (std::size_t k = 0; k < mask.size(); k += 3) REQUIRE(some[k] == readings[k]);
   }
 }

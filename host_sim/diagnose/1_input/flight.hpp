@@ -25,16 +25,6 @@ struct Contact {
   double at_s = 0.0;  // where that largest force was
 };
 
-// A gyro's digital low-pass (order 1: a flight controller's PT1, y += k (x - y) with
-// k = dt / (RC + dt); order 2: a Butterworth, bilinear; order 0: none), as the noise floor
-// fitted it to the readings' spectrum (noise_floor.hpp). The model's readings pass through
-// the same filter (2_model/gyro_low_pass.hpp).
-struct GyroLowPass {
-  int order = 0;
-  double cutoff_hz = 0.0;
-  double sample_hz = 0.0;  // the rate the filter steps at
-};
-
 struct Flight {
   std::string name;        // segment name, or the file name for a single flight
   std::string comment;     // the segment's comment, if any
@@ -59,9 +49,6 @@ struct Flight {
   double settling_until_s = -std::numeric_limits<double>::infinity();
   // What of the given segment was contact, not flight (empty when nothing was cut).
   std::vector<Contact> contacts;
-  // The gyro's low-pass where the noise floor found one (none: the readings are compared
-  // to the model's rates as they are).
-  GyroLowPass low_pass;
 
   std::size_t size() const { return time_s.size(); }
   double start_s() const { return time_s.empty() ? 0.0 : time_s.front(); }

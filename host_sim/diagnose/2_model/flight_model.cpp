@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "diagnose/2_model/flight_dynamics.hpp"
-#include "diagnose/2_model/gyro_low_pass.hpp"
 #include "diagnose/2_model/reading_walks.hpp"
 #include "diagnose/2_model/spin_up_walk.hpp"
 #include "diagnose/2_model/walk_layout.hpp"
@@ -51,7 +50,6 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
                       const Eigen::Vector3d& omega_ref, const Eigen::VectorXd& theta,
                       std::vector<Eigen::Vector3d>& readings, SampleStepping stepping,
                       Eigen::Vector3d* rate_at_impulse, ReadSamples read) {
-  read = samples_made(flight, read);
   const std::size_t n = flight.size();
   readings.resize(n);
   if (n == 0) return;
@@ -61,7 +59,6 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   const WalkLayoutKey key = layout_key(model, flight, ref, stepping, dynamics);
   if (has_spin_up(terms)) {
     predict_spin_up_readings(dynamics, terms, flight, ref, omega_ref, key.jump_time, readings, read);
-    pass_through_low_pass(flight, readings);
     return;
   }
   const WalkLayout& layout = walk_layout(flight.time_s, key);
@@ -71,7 +68,6 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   // Forwards from the reference and backwards from it, independent of each other.
   ReadingWalks::Walk up{start, ref}, down{start, ref};
   walk_together(paired_steps(dynamics), walks, up, layout.up, walks, down, layout.down);
-  pass_through_low_pass(flight, readings);
 }
 
 namespace {
@@ -116,7 +112,6 @@ void predict_readings_pair(const EffectModel& model, const Flight& flight, std::
                            const Eigen::Vector3d& omega_a, const Eigen::Vector3d& omega_b,
                            const Eigen::VectorXd& theta, std::vector<Eigen::Vector3d>& readings_a,
                            std::vector<Eigen::Vector3d>& readings_b, ReadSamples read) {
-  read = samples_made(flight, read);
   const std::size_t n = flight.size();
   const ModelTerms terms = model_terms(model, theta);
   if (n == 0 || (ref != 0 && ref + 1 != n) || has_spin_up(terms)) {
@@ -129,8 +124,6 @@ void predict_readings_pair(const EffectModel& model, const Flight& flight, std::
   const WalkLayoutKey key = layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics);
   one_walks_side_by_side(paired_steps(dynamics), dynamics, dynamics, walk_layout(flight.time_s, key),
                          key.jump_time, ref, omega_a, omega_b, readings_a, readings_b, n, read);
-  pass_through_low_pass(flight, readings_a);
-  pass_through_low_pass(flight, readings_b);
 }
 
 void predict_readings_two(const EffectModel& model, const Flight& flight, std::size_t ref,
@@ -138,7 +131,6 @@ void predict_readings_two(const EffectModel& model, const Flight& flight, std::s
                           const Eigen::Vector3d& omega_b, const Eigen::VectorXd& theta_b,
                           std::vector<Eigen::Vector3d>& readings_a, std::vector<Eigen::Vector3d>& readings_b,
                           ReadSamples read) {
-  read = samples_made(flight, read);
   if (theta_a.size() == theta_b.size() && (theta_a.array() == theta_b.array()).all()) {
     predict_readings_pair(model, flight, ref, omega_a, omega_b, theta_a, readings_a, readings_b, read);
     return;
@@ -167,8 +159,6 @@ void predict_readings_two(const EffectModel& model, const Flight& flight, std::s
   };
   one_walks_side_by_side(advance_two, dynamics_a, dynamics_b, walk_layout(flight.time_s, key), key.jump_time,
                          ref, omega_a, omega_b, readings_a, readings_b, n, read);
-  pass_through_low_pass(flight, readings_a);
-  pass_through_low_pass(flight, readings_b);
 }
 
 }  // namespace aloft::host::diagnose

@@ -83,7 +83,6 @@ struct SpectralFloor {
   double correlation = 1.0;
   double cutoff_hz = 0.0;  // the low-pass fitted (0: none)
   int order = 0;           // its shape (low_pass_shape.hpp; 0: none)
-  double sample_hz = 0.0;  // the readings' rate
 };
 
 // The longest run of usable samples with no time gap inside.
@@ -274,7 +273,6 @@ std::optional<SpectralFloor> floor_from_spectrum(const Flight& flight, const std
   out.correlation = std::max(1.0, (level.sum() + 3.0 * rounding) * 0.5 * s.sample_hz / variance.sum());
   out.cutoff_hz = filter.cutoff_hz();
   out.order = filter.cutoff_hz() > 0.0 ? filter.order() : 0;
-  out.sample_hz = s.sample_hz;
   return out;
 }
 
@@ -327,7 +325,6 @@ NoiseFloor estimate_noise_floor(const Flight& flight) {
       best.method = "spectrum";
       best.low_pass_hz = spectral->cutoff_hz;
       best.low_pass_order = spectral->order;
-      best.low_pass_sample_hz = spectral->sample_hz;
     }
   }
   hold_at_resolution(best, flight);

@@ -43,7 +43,6 @@ struct NoiseFloor {
   double low_pass_hz = 0.0;  // method "spectrum": the gyro's low-pass as fitted (0: none)
   // Its shape (low_pass_shape.hpp): 2, a Butterworth; 1, a first-order PT1; 0, none.
   int low_pass_order = 0;
-  double low_pass_sample_hz = 0.0;  // the rate of the readings it was fitted on
   // What fits weigh the readings by: sigma * sqrt(correlation), the white noise whose
   // chi-square over the readings is that of the correlated noise over its independent
   // samples (the same low-frequency density).

@@ -65,18 +65,10 @@ void find_onset(Analysis& analysis, const Flight& flight, const NominalInertia& 
 
 }  // namespace
 
-std::optional<Flight> behind_its_low_pass(const Flight& flight, const NoiseFloor& noise) {
-  if (!(noise.low_pass_order > 0 && noise.low_pass_hz > 0.0 && noise.low_pass_sample_hz > 0.0))
-    return std::nullopt;
-  std::optional<Flight> out = flight;
-  out->low_pass = {noise.low_pass_order, noise.low_pass_hz, noise.low_pass_sample_hz};
-  return out;
-}
-
-FlightDiagnosis diagnose_flight(const Flight& logged, const NominalInertia& nominal) {
-  FlightDiagnosis d = describe_flight(logged);
+FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nominal) {
+  FlightDiagnosis d = describe_flight(flight);
   Analysis& analysis = d.analysis;
-  const std::size_t usable = logged.size() - d.unusable_samples;
+  const std::size_t usable = flight.size() - d.unusable_samples;
   if (usable < kMinimumSamples) {
     analysis.verdict.confident = false;
     analysis.verdict.could_not_judge.push_back(
@@ -85,9 +77,7 @@ FlightDiagnosis diagnose_flight(const Flight& logged, const NominalInertia& nomi
     analysis.where.dominant_axis = "x";
     return d;
   }
-  d.noise = estimate_noise_floor(logged);
-  const std::optional<Flight> filtered = behind_its_low_pass(logged, d.noise);
-  const Flight& flight = filtered ? *filtered : logged;
+  d.noise = estimate_noise_floor(flight);
   analysis.where.noise_floor = d.noise.sigma;
   analysis.where.noise_correlation = d.noise.correlation;
   const Vec3 inverse_sigma = d.noise.weighting_sigma().cwiseInverse();

@@ -49,10 +49,6 @@ struct SessionDiagnosis {
 // One flight. Never throws for data it cannot judge: the verdict says so instead.
 FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nominal);
 
-// `flight` with the gyro low-pass its noise floor found (Flight::low_pass), what every fit
-// of it then compares its readings through; none where the noise floor found no filter.
-std::optional<Flight> behind_its_low_pass(const Flight& flight, const NoiseFloor& noise);
-
 // A session: every flight on its own, and the pooled analysis with effects shared by all
 // flights, judged by leaving one flight out. `threads` >= 1. `flights_done`, when set, is
 // told about every 100 ms how many flights have been diagnosed on their own.

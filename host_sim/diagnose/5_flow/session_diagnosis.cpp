@@ -125,21 +125,14 @@ void describe_pooled_baseline(Analysis& analysis, const PooledData& pool, const 
 
 }  // namespace
 
-SessionDiagnosis diagnose_session(const std::vector<Flight>& logged, const NominalInertia& nominal,
+SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const NominalInertia& nominal,
                                   int threads, const ParallelProgress& flights_done) {
   SessionDiagnosis session;
-  session.flights.resize(logged.size());
+  session.flights.resize(flights.size());
   const unsigned workers = static_cast<unsigned>(std::max(threads, 1));
   parallel_for(
-      logged.size(), workers,
-      [&](std::size_t i) { session.flights[i] = diagnose_flight(logged[i], nominal); }, flights_done);
-  // Each flight as the pooled fits see it: behind the gyro low-pass its noise floor found.
-  std::vector<Flight> flights;
-  flights.reserve(logged.size());
-  for (std::size_t i = 0; i < logged.size(); ++i) {
-    std::optional<Flight> filtered = behind_its_low_pass(logged[i], session.flights[i].noise);
-    flights.push_back(filtered ? std::move(*filtered) : logged[i]);
-  }
+      flights.size(), workers,
+      [&](std::size_t i) { session.flights[i] = diagnose_flight(flights[i], nominal); }, flights_done);
 
   PooledData pool = pool_judged_flights(session, flights);
   Analysis& analysis = session.pooled;
