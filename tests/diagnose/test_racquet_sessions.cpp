@@ -15,6 +15,7 @@
 
 #include "common/body_file.hpp"
 #include "diagnose/4_judge/between_flight_scatter.hpp"
+#include "diagnose/4_judge/tensor_intervals.hpp"
 #include "diagnose/5_flow/diagnosis.hpp"
 #include "diagnose/1_input/flight_input.hpp"
 #include "diagnose/6_report/report_text.hpp"
@@ -76,8 +77,8 @@ SessionDiagnosis diagnose_named(const fs::path& root, const char* session, const
 
 // The flights' own fits of `effect` compared as the session's note compares them
 // (between_flight_scatter), and again with each flight's covariance widened by the AR(1)
-// factor (1 + rho) / (1 - rho) of its own held-out residuals' lag-1 correlation (rho
-// clamped to [0, 0.95], as the tensor report widens its intervals): where the model misses
+// factor of its own held-out residuals' lag-1 correlation (serial_inflation, the tensor
+// report's own widening of its intervals): where the model misses
 // by a slow motion of its own, the residuals are not independent and the plain comparison
 // counts their evidence many times over. {plain, widened}; -1 where not measured.
 std::pair<double, double> own_fits_scatter(const SessionDiagnosis& d, const std::vector<Flight>& flights,
@@ -91,19 +92,9 @@ std::pair<double, double> own_fits_scatter(const SessionDiagnosis& d, const std:
       if (k.effect == effect && k.base.empty() && k.evaluated && !k.heldout_readings.empty()) c = &k;
     }
     if (c == nullptr) continue;
-    double product = 0.0, square = 0.0;
-    const Flight& f = flights[j];
-    const std::vector<Eigen::Vector3d>& p = c->heldout_readings.front();
-    for (std::size_t k = 0; k + 1 < f.size() && k + 1 < p.size(); ++k) {
-      if (!f.usable[k] || !f.usable[k + 1]) continue;
-      const Eigen::Vector3d a = p[k] - f.omega[k], b = p[k + 1] - f.omega[k + 1];
-      product += a.dot(b);
-      square += a.squaredNorm();
-    }
-    const double rho = square > 0.0 ? std::clamp(product / square, 0.0, 0.95) : 0.0;
     plain.push_back(&own);
     widened.push_back(own);
-    widened.back().where.noise_correlation *= (1.0 + rho) / (1.0 - rho);
+    widened.back().where.noise_correlation *= serial_inflation(*c, {&flights[j]});
   }
   std::vector<const Analysis*> widened_of;
   for (const Analysis& a : widened) widened_of.push_back(&a);

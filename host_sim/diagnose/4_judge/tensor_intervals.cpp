@@ -108,24 +108,6 @@ Eigen::Vector2d ratios_of(const Eigen::Vector3d& moments, const Eigen::Vector3i&
   return Eigen::Vector2d(moments(order(1)) / moments(order(0)), moments(order(2)) / moments(order(0)));
 }
 
-// How much serial correlation of the held-out residuals inflates a variance: the AR(1)
-// factor (1 + rho) / (1 - rho), rho the lag-1 autocorrelation (clamped to [0, 0.95]).
-double serial_inflation(const Candidate& c, const std::vector<const Flight*>& flights) {
-  double product = 0.0, square = 0.0;
-  for (std::size_t f = 0; f < flights.size() && f < c.heldout_readings.size(); ++f) {
-    const Flight& flight = *flights[f];
-    const auto& p = c.heldout_readings[f];
-    for (std::size_t k = 0; k + 1 < flight.size() && k + 1 < p.size(); ++k) {
-      if (!flight.usable[k] || !flight.usable[k + 1]) continue;
-      const Eigen::Vector3d a = p[k] - flight.omega[k], b = p[k + 1] - flight.omega[k + 1];
-      product += a.dot(b);
-      square += a.squaredNorm();
-    }
-  }
-  const double rho = square > 0.0 ? std::clamp(product / square, 0.0, 0.95) : 0.0;
-  return (1.0 + rho) / (1.0 - rho);
-}
-
 TensorReport base_report(const MomentsFit& moments, const NominalInertia& nominal) {
   TensorReport r;
   r.axis_order = principal_axis_order(nominal);
@@ -182,6 +164,22 @@ Eigen::Matrix3d model_covariance_3(const Candidate& c, double inflation) {
 }
 
 }  // namespace
+
+double serial_inflation(const Candidate& c, const std::vector<const Flight*>& flights) {
+  double product = 0.0, square = 0.0;
+  for (std::size_t f = 0; f < flights.size() && f < c.heldout_readings.size(); ++f) {
+    const Flight& flight = *flights[f];
+    const auto& p = c.heldout_readings[f];
+    for (std::size_t k = 0; k + 1 < flight.size() && k + 1 < p.size(); ++k) {
+      if (!flight.usable[k] || !flight.usable[k + 1]) continue;
+      const Eigen::Vector3d a = p[k] - flight.omega[k], b = p[k + 1] - flight.omega[k + 1];
+      product += a.dot(b);
+      square += a.squaredNorm();
+    }
+  }
+  const double rho = square > 0.0 ? std::clamp(product / square, 0.0, 0.95) : 0.0;
+  return (1.0 + rho) / (1.0 - rho);
+}
 
 bool flight_tensor_report(const Analysis& analysis, const std::vector<const Flight*>& flights,
                           const NominalInertia& nominal, TensorReport& report) {

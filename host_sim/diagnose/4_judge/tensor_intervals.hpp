@@ -24,6 +24,11 @@
 
 namespace aloft::host::diagnose {
 
+// How much serial correlation of the held-out residuals of candidate `c` (fitted on
+// `flights`) inflates a variance: the AR(1) factor (1 + rho) / (1 - rho), rho the lag-1
+// autocorrelation over the flights' usable samples, clamped to [0, 0.95].
+double serial_inflation(const Candidate& c, const std::vector<const Flight*>& flights);
+
 // One flight's report from its analysis (its inertia_moments and inertia_axes candidates).
 // None when the analysis has no inertia_moments fit.
 bool flight_tensor_report(const Analysis& analysis, const std::vector<const Flight*>& flights,
