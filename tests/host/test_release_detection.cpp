@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "aloft/onboard/onboard_pipeline.hpp"
-#include "generated_throws.hpp"
+#include "pipeline_flights.hpp"
 
 namespace {
 
@@ -113,20 +113,7 @@ std::vector<aloft::FlightResult<float>> replay(const Recording& rec, bool give_r
     settings.rotor.inertia_kg_m2 = static_cast<float>(rec.rotor_inertia_kg_m2);
   }
   aloft::OnboardPipeline<float, 8> pipeline(nominal_tensor(rec), settings);
-  std::vector<aloft::FlightResult<float>> flights;
-  aloft::FlightResult<float> flight;
-  for (const auto& s : rec.samples) {
-    aloft::ImuSample<float> f;
-    f.t_us = s.t_us;
-    f.gyro_rad_s = s.gyro_rad_s.cast<float>();
-    f.accel_m_s2 = s.accel_m_s2.cast<float>();
-    f.flags = s.flags;
-    f.rotor_rad_s = static_cast<float>(s.rotor_rad_s);
-    if (pipeline.push(f) != aloft::Status::ok) FAIL("sample refused at t_us " << f.t_us);
-    while (pipeline.take_finished_flight(flight)) flights.push_back(flight);
-  }
-  pipeline.finish();
-  while (pipeline.take_finished_flight(flight)) flights.push_back(flight);
+  std::vector<aloft::FlightResult<float>> flights = aloft_test::pipeline_flights(pipeline, rec);
   if (estimate != nullptr) {
     *estimate = pipeline.has_imu_position_estimate() ? pipeline.imu_position_estimate()
                                                      : aloft::Vec3<float>::Constant(1e3f);

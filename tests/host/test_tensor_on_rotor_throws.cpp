@@ -15,7 +15,7 @@
 #include <catch2/catch.hpp>
 
 #include "aloft/onboard/onboard_pipeline.hpp"
-#include "generated_throws.hpp"
+#include "pipeline_flights.hpp"
 
 namespace {
 
@@ -43,21 +43,7 @@ std::vector<aloft::FlightResult<float>> replay(const Recording& rec) {
   REQUIRE(aloft::InertiaTensor<float>::make_from_tensor(rec.nominal_tensor.cast<float>(), inertia) ==
           aloft::Status::ok);
   aloft::OnboardPipeline<float, 8> pipeline(inertia, settings);
-  std::vector<aloft::FlightResult<float>> flights;
-  aloft::FlightResult<float> flight;
-  for (const auto& s : rec.samples) {
-    aloft::ImuSample<float> f;
-    f.t_us = s.t_us;
-    f.gyro_rad_s = s.gyro_rad_s.cast<float>();
-    f.accel_m_s2 = s.accel_m_s2.cast<float>();
-    f.flags = s.flags;
-    f.rotor_rad_s = static_cast<float>(s.rotor_rad_s);
-    REQUIRE(pipeline.push(f) == aloft::Status::ok);
-    while (pipeline.take_finished_flight(flight)) flights.push_back(flight);
-  }
-  pipeline.finish();
-  while (pipeline.take_finished_flight(flight)) flights.push_back(flight);
-  return flights;
+  return aloft_test::pipeline_flights(pipeline, rec);
 }
 
 void score(const Recording& rec, Scores& s) {
