@@ -31,6 +31,7 @@ struct TensorFlightSpec {
   double noise_rad_s = 0.0;   // white noise per sample, before the filter
   double filter_tau_s = 0.0;  // 0: no filter
   double quantum_rad_s = 0.0;
+  Eigen::Vector3d gyro_scale = Eigen::Vector3d::Ones();  // each axis reads its rate times this
   unsigned seed = 1;
 };
 
@@ -82,7 +83,7 @@ class TensorFlight {
     if (sample_ >= samples_) return false;
     const double dt = dt_us_ * 1e-6;
     if (sample_ > 0) advance(dt);
-    Eigen::Vector3d x = omega_;
+    Eigen::Vector3d x = spec_.gyro_scale.cwiseProduct(omega_);
     if (spec_.noise_rad_s > 0)
       x += spec_.noise_rad_s * Eigen::Vector3d(normal_.next(), normal_.next(), normal_.next());
     if (sample_ == 0 || spec_.filter_tau_s <= 0) {

@@ -180,6 +180,37 @@ ALOFT_TEST_CASE("the integrated equations per tensor entry are the body's side f
   }
 }
 
+ALOFT_TEST_CASE("the residual's sensitivity to the gyro's scale is its derivative in each axis's scale",
+                "[tensor]") {
+  aloft_test::NormalDeviates n(17);
+  const Vec3<double> delta_omega(n.next(), n.next(), n.next()), speed_omega(n.next(), n.next(), n.next());
+  Eigen::Matrix3d root, inertia;
+  for (int i = 0; i < 9; ++i) root(i / 3, i % 3) = n.next();
+  const Eigen::Matrix3d p = root * root.transpose();
+  inertia << 2.0, 0.1, -0.2, 0.1, 3.0, 0.3, -0.2, 0.3, 4.0;
+  aloft::Rotor<double> rotor;
+  rotor.axis = Vec3<double>(1.0, -2.0, 2.0) / 3.0;
+  rotor.inertia_kg_m2 = 0.05;
+  const double delta_speed = 7.0;
+  // The residual with every integral read through D = diag(1 + d): D Δw, D P D, D S.
+  const auto residual = [&](const Vec3<double>& d) {
+    const Eigen::Matrix3d scale = (Vec3<double>::Ones() + d).asDiagonal();
+    const Vec3<double> scaled_delta = scale * delta_omega, scaled_speed_omega = scale * speed_omega;
+    const Eigen::Matrix3d scaled_p = scale * p * scale;
+    return Vec3<double>(aloft::integrated_body_torque(inertia, scaled_delta, scaled_p) +
+                        aloft::integrated_rotor_torque(rotor, delta_speed, scaled_speed_omega));
+  };
+  const Eigen::Matrix3d g =
+      aloft::integrated_torque_gyro_scale_sensitivity(inertia, delta_omega, p, rotor, speed_omega);
+  const double h = 1e-3;  // the residual is quadratic in d: the central difference is exact
+  for (int k = 0; k < 3; ++k) {
+    const Vec3<double> step = h * Vec3<double>::Unit(k);
+    const Vec3<double> difference = (residual(step) - residual(-step)) / (2 * h);
+    ALOFT_CHECK((g.col(k) - difference).norm() < 1e-9 * (1.0 + difference.norm()));
+    ALOFT_CHECK(difference.norm() > 0.1);  // each axis's scale moves the residual
+  }
+}
+
 ALOFT_TEST_CASE("tensor least squares: R's rotations keep the normal equations and the residual",
                 "[tensor]") {
   aloft::TensorLeastSquares<double> ls;

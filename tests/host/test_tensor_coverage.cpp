@@ -26,7 +26,8 @@ constexpr double kPi = 3.14159265358979;
 
 // One random flight: moments with I3 from 2e-3 to 1e-2 kg·m² and ratios 0.3-0.95 (a
 // physical body), random axes and rate direction, |w| 5-30 rad/s, 0.3-1 s; with a rotor of
-// 1-3 % of I3 spinning up to 300-1000 rad/s about a random axis from 50 ms on.
+// 1-3 % of I3 spinning up to 300-1000 rad/s about a random axis from 50 ms on, and the
+// gyro's scale off on each axis as its tolerance says (aloft/onboard/tensor_estimate.hpp).
 TensorFlightSpec random_flight(unsigned seed, bool rotor) {
   aloft_test::NormalDeviates r(seed * 7919u + 17u);
   const auto u = [&r] { return r.uniform(); };
@@ -52,6 +53,9 @@ TensorFlightSpec random_flight(unsigned seed, bool rotor) {
     s.rotor_axis = Eigen::Vector3d(u() - 0.5, u() - 0.5, u() - 0.5).normalized();
     s.rotor_full_rad_s = 300 + 700 * u();
     s.rotor_start_s = 0.05;
+    // The gyro's scale off on each axis as the estimate's intervals assume with a rotor:
+    // normal, within the tolerance in 95 % of parts.
+    for (int i = 0; i < 3; ++i) s.gyro_scale(i) = 1.0 + aloft::gyro_scale_tolerance / 1.959964 * r.next();
   }
   return s;
 }

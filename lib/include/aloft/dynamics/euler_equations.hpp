@@ -70,6 +70,28 @@ inline Vec3<Scalar> integrated_rotor_torque(const Rotor<Scalar>& rotor, Scalar d
   return rotor.inertia_kg_m2 * (delta_speed * rotor.axis + speed_omega_integral.cross(rotor.axis));
 }
 
+// How the integrated equations' residual, body + rotor side, moves when the gyro reads each
+// axis k a fraction d_k too high (w -> D w, D = diag(1 + d)): column k is its derivative
+// in d_k at d = 0. Under D the rate's change goes to D Δw, P to D P D and S = ∫ s w dt to
+// D S, so with P_k = P e_k
+//   I e_k Δw_k + e_k x (I P_k) + P_k x (I e_k) + J S_k (e_k x axis),
+// linear in the tensor and needing nothing but the piece's integrals
+// (tests/core/test_tensor_estimator.cpp checks it against a central difference).
+template <typename Scalar>
+inline Mat3<Scalar> integrated_torque_gyro_scale_sensitivity(const Mat3<Scalar>& inertia,
+                                                             const Vec3<Scalar>& delta_omega,
+                                                             const Mat3<Scalar>& p,
+                                                             const Rotor<Scalar>& rotor,
+                                                             const Vec3<Scalar>& speed_omega_integral) {
+  Mat3<Scalar> g;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3<Scalar> e = Vec3<Scalar>::Unit(k), pk = p.col(k), ie = inertia.col(k);
+    g.col(k) = ie * delta_omega(k) + e.cross(inertia * pk) + pk.cross(ie) +
+               (rotor.inertia_kg_m2 * speed_omega_integral(k)) * e.cross(rotor.axis);
+  }
+  return g;
+}
+
 // One classical RK4 step of the body rate alone (h may be negative), in body axes.
 // Torque-free body rates evolve independently of orientation, so a gyro check that
 // compares rates in body axes needs nothing more. Steps in the principal frame and

@@ -277,17 +277,24 @@ class TensorEstimator : detail::RotorPieceIntegrals<Scalar, Rotor> {
     const Scalar scale = nominal_scale(in.nominal);
     const Eigen::Matrix<Scalar, 3, 6> torque = integrated_body_torque_per_entry(delta_omega, p);
     Vec3<Scalar> b = Vec3<Scalar>::Zero();
+    Mat3<Scalar> gyro_scale = Mat3<Scalar>::Zero();  // the rows' sensitivities to the gyro's scale
     if constexpr (Rotor) {
       if (in.rotor.present()) {
         b = -(to_rates * integrated_rotor_torque(in.rotor, speed_b - this->speed_a, this->speed_omega));
         if (b.squaredNorm() > Scalar(0)) scaled_ = true;
       }
+      gyro_scale = to_rates * integrated_torque_gyro_scale_sensitivity(in.nominal.tensor(), delta_omega, p,
+                                                                       in.rotor, this->speed_omega);
     }
     // Row r of (scale to_rates) torque, as a plain loop: Eigen's unrolled 3 x 6 product took
     // 730 B of the flight image's flash for a path run once a piece.
     for (int r = 0; r < 3; ++r) {
       Scalar row[6];
       for (int m = 0; m < 6; ++m) row[m] = scale * to_rates.row(r).dot(torque.col(m));
+      if constexpr (Rotor) {
+        const Scalar g[3] = {gyro_scale(r, 0), gyro_scale(r, 1), gyro_scale(r, 2)};
+        ls_.add_gyro_scale_sensitivity(row, g, b(r));
+      }
       ls_.add_row(row, b(r));
     }
     ls_.rate_squared_s += products_[0] + products_[1] + products_[2];
