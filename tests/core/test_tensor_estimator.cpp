@@ -213,25 +213,30 @@ ALOFT_TEST_CASE("the residual's sensitivity to the gyro's scale is its derivativ
 
 ALOFT_TEST_CASE("tensor least squares: R's rotations keep the normal equations and the residual",
                 "[tensor]") {
-  aloft::TensorLeastSquares<double> ls;
-  Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
-  Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero(), theta;
-  theta << 1.0, 2.0, 3.0, 0.1, -0.2, 0.3;
-  aloft_test::NormalDeviates n(3);
+  aloft::TensorLeastSquares<double> ls;  // theta's six unknowns and the four nuisances
+  constexpr int n = aloft::TensorLeastSquares<double>::columns;
+  using Vec = Eigen::Matrix<double, n, 1>;
+  Eigen::Matrix<double, n, n> normal = Eigen::Matrix<double, n, n>::Zero();
+  Vec g = Vec::Zero(), x;
+  for (int i = 0; i < n; ++i) x(i) = 1.0 + 0.1 * i;
+  aloft_test::NormalDeviates deviates(3);
   double bb = 0;
   for (int row = 0; row < 30; ++row) {
-    double a[6];
-    Eigen::Matrix<double, 6, 1> av;
-    for (int i = 0; i < 6; ++i) av(i) = a[i] = n.next();
-    const double b = av.dot(theta) + 0.01 * n.next();
+    double a[n];
+    Vec av;
+    for (int i = 0; i < n; ++i) av(i) = a[i] = deviates.next();
+    const double b = av.dot(x) + 0.01 * deviates.next();
     normal += av * av.transpose();
     g += av * b;
     bb += b * b;
     ls.add_row(a, b);
   }
-  const Eigen::Matrix<double, 6, 6> r = ls.r_matrix();
+  const Eigen::Matrix<double, n, n> r = ls.r_matrix<n>();
   ALOFT_CHECK((r.transpose() * r - normal).norm() < 1e-10 * normal.norm());
-  const Eigen::Matrix<double, 6, 1> solution = normal.ldlt().solve(g);
+  // theta's own R is R's first six rows and columns.
+  const Eigen::Matrix<double, 6, 6> r6 = ls.r_matrix();
+  ALOFT_CHECK((r6.transpose() * r6 - normal.topLeftCorner<6, 6>()).norm() < 1e-10 * normal.norm());
+  const Vec solution = normal.ldlt().solve(g);
   ALOFT_CHECK(std::abs(ls.rss - (bb - g.dot(solution))) < 1e-9 * bb);
 }
 
