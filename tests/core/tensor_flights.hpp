@@ -28,8 +28,9 @@ struct TensorFlightSpec {
   double rotor_full_rad_s = 0.0;
   double rotor_start_s = 0.0;
   double spin_up_s = 0.2;
-  double noise_rad_s = 0.0;   // white noise per sample, before the filter
-  double filter_tau_s = 0.0;  // 0: no filter
+  double rotor_delay_s = 0.0;  // the speed is read this late (an ESC's telemetry)
+  double noise_rad_s = 0.0;    // white noise per sample, before the filter
+  double filter_tau_s = 0.0;   // 0: no filter
   double quantum_rad_s = 0.0;
   Eigen::Vector3d gyro_scale = Eigen::Vector3d::Ones();  // each axis reads its rate times this
   unsigned seed = 1;
@@ -94,7 +95,7 @@ class TensorFlight {
     gyro = filtered_;
     if (spec_.quantum_rad_s > 0)
       for (int i = 0; i < 3; ++i) gyro(i) = spec_.quantum_rad_s * std::round(gyro(i) / spec_.quantum_rad_s);
-    rotor_speed = speed(t_);
+    rotor_speed = speed(t_ - spec_.rotor_delay_s);
     ++sample_;
     return true;
   }

@@ -58,9 +58,11 @@ void noise_free_throws() {
   }
 }
 
-// A rotor along a tilted axis spins up from rest over 0.2 s, then holds 600 rad/s.
+// A rotor along a tilted axis spins up from rest over 0.2 s, then holds 600 rad/s; its
+// speed read `delay_s` late. Noise-free, the moments and ratios within `tolerance`, the axes
+// within `axes_deg`.
 template <typename S>
-void rotor_throws() {
+void rotor_throws(double delay_s = 0.0, double tolerance = 1e-4, double axes_deg = 0.01) {
   for (int which = 0; which < 3; ++which) {
     TensorFlightSpec spec = throw_spec(which);
     spec.duration_s = 0.6;
@@ -68,6 +70,7 @@ void rotor_throws() {
     spec.rotor_axis = Eigen::Vector3d(0.3, -0.2, 0.93).normalized();
     spec.rotor_full_rad_s = 600.0;
     spec.rotor_start_s = 0.05;
+    spec.rotor_delay_s = delay_s;
     aloft::Rotor<S> rotor;
     rotor.inertia_kg_m2 = static_cast<S>(spec.rotor_inertia_kg_m2);
     rotor.axis = spec.rotor_axis.cast<S>();
@@ -78,9 +81,10 @@ void rotor_throws() {
     const auto e = aloft_test::estimate_flight<S>(spec, settings, rotor, 1.2 * flight.inertia().tensor());
     ALOFT_REQUIRE(e.determined);
     ALOFT_CHECK(e.absolute);
-    for (int i = 0; i < 3; ++i) ALOFT_CHECK(std::abs(double(e.principal(i)) / spec.moments(i) - 1.0) < 1e-4);
-    ALOFT_CHECK(std::abs(double(e.ratio(0)) - truth_ratio(spec, 0)) < 1e-4);
-    ALOFT_CHECK(aloft_test::worst_axis_angle(e, flight.inertia().principal_axes()) < 0.01 * kDeg);
+    for (int i = 0; i < 3; ++i)
+      ALOFT_CHECK(std::abs(double(e.principal(i)) / spec.moments(i) - 1.0) < tolerance);
+    ALOFT_CHECK(std::abs(double(e.ratio(0)) - truth_ratio(spec, 0)) < tolerance);
+    ALOFT_CHECK(aloft_test::worst_axis_angle(e, flight.inertia().principal_axes()) < axes_deg * kDeg);
   }
 }
 
@@ -140,6 +144,16 @@ ALOFT_TEST_CASE("tensor estimate: noise-free throws give the ratios within 1e-4 
 ALOFT_TEST_CASE("tensor estimate: a rotor's known momentum gives the absolute moments", "[tensor]") {
   rotor_throws<double>();
   rotor_throws<float>();
+}
+
+// The delay is fitted with the tensor (aloft/onboard/tensor_estimate.hpp): not fitted, 3 ms
+// late left the moments up to 1.7 % off on these throws and an axis 0.6°; fitted, 0.40 %
+// and 0.08° at most, what is left the delay's second order and the slope's 5 ms window on
+// the spin-up's curve.
+ALOFT_TEST_CASE("tensor estimate: a rotor's speed read 3 ms late, the delay fitted: the moments within 0.5 %",
+                "[tensor]") {
+  rotor_throws<double>(0.003, 5e-3, 0.1);
+  rotor_throws<float>(0.003, 5e-3, 0.1);
 }
 
 ALOFT_TEST_CASE("tensor estimate: spins about one principal axis, drops and short flights are not determined",
