@@ -288,6 +288,17 @@ inline void add_prior_row(int j, Scalar weight, TensorLeastSquares<Scalar, true>
   fit.add_row(row, Scalar(0));
 }
 
+// x = R^-1 x for R the first n x n of a column-major upper-triangular matrix with leading
+// dimension ld, in place. By hand: Eigen's triangular solve with a matrix on the right
+// side, and its products of these sizes, take blocking space from the heap.
+template <typename Scalar, int N>
+inline void back_substitute(const Scalar* r, int ld, Scalar* x) {
+  for (int i = N - 1; i >= 0; --i) {
+    for (int j = i + 1; j < N; ++j) x[i] -= r[i + j * ld] * x[j];
+    x[i] /= r[i + i * ld];
+  }
+}
+
 // theta's covariance (theta and the delay fitted; R's first 7 rows R11 | R12): the noise's,
 // sigma² R11^-1 R11^-T, and the gyro's scale errors' from their prior alone, R11^-1 R12
 // moving theta per unit scale error. Not the fit's posterior, which learns the scale errors
@@ -297,13 +308,12 @@ inline void add_prior_row(int j, Scalar weight, TensorLeastSquares<Scalar, true>
 // wide: every moment covered (docs/tensor-estimate.md, "Intervals").
 template <typename Scalar>
 inline Eigen::Matrix<Scalar, 6, 6> scaled_covariance(const Eigen::Matrix<Scalar, 10, 10>& r, Scalar sigma) {
-  Eigen::Matrix<Scalar, 7, 10> m;
-  m.template leftCols<7>() = sigma * Eigen::Matrix<Scalar, 7, 7>::Identity();
-  m.template rightCols<3>() =
+  Eigen::Matrix<Scalar, 7, 10> f;  // R11^-1 [sigma I | sd R12]
+  f.template leftCols<7>() = sigma * Eigen::Matrix<Scalar, 7, 7>::Identity();
+  f.template rightCols<3>() =
       static_cast<Scalar>(gyro_scale_tolerance / 1.959964) * r.template topRightCorner<7, 3>();
-  const Eigen::Matrix<Scalar, 7, 10> f =
-      r.template topLeftCorner<7, 7>().template triangularView<Eigen::Upper>().solve(m);
-  return f.template topRows<6>() * f.template topRows<6>().transpose();
+  for (int c = 0; c < 10; ++c) back_substitute<Scalar, 7>(r.data(), 10, f.col(c).data());
+  return f.template topRows<6>().lazyProduct(f.template topRows<6>().transpose());
 }
 
 // With the scale: theta with the nuisances (x = R'^-1 z', the priors' rows in R'); sigma²
