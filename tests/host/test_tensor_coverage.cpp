@@ -56,7 +56,7 @@ TensorFlightSpec random_flight(unsigned seed, bool rotor) {
     s.rotor_start_s = 0.05;
     // The gyro's scale off on each axis as the estimate's intervals assume with a rotor:
     // normal, within the tolerance in 95 % of parts.
-    for (int i = 0; i < 3; ++i) s.gyro_scale(i) = 1.0 + aloft::gyro_scale_tolerance / 1.959964 * r.next();
+    for (int i = 0; i < 3; ++i) s.gyro_scale(i) = 1.0 + aloft::gyro_scale_prior_sd * r.next();
   }
   return s;
 }

@@ -68,7 +68,7 @@ struct TensorEstimate {
 
 namespace detail {
 // The right side b's part of the problem: kept only where a rotor may give b (RightSide);
-// torque-free rows have b = 0, and a firmware without rotor support keeps 28 B less.
+// torque-free rows have b = 0, and a firmware without rotor support keeps 44 B less.
 template <typename Scalar, bool RightSide>
 struct LeastSquaresRightSide {
   Scalar z[10] = {};       // the right side, rotated with R
@@ -150,6 +150,7 @@ struct TensorDetermination {
 //  - the rotor's speed arriving late (an ESC's telemetry: 1-4 ms, quantised, held), with a
 //    prior of 0 ± 10 ms that only keeps the fit solvable when the speed does not change.
 constexpr double gyro_scale_tolerance = 0.01;
+constexpr double gyro_scale_prior_sd = gyro_scale_tolerance / 1.959964;  // the 95 % bound as a normal's
 constexpr double rotor_delay_prior_ms = 10.0;
 
 namespace detail {
@@ -283,7 +284,7 @@ inline bool solve_scale_free(const Vec6<Scalar>& values, const Eigen::Matrix<Sca
 // deviation, sigma the rows' noise), 0 on the right, rotated into R.
 template <typename Scalar>
 inline void add_prior_row(int j, Scalar weight, TensorLeastSquares<Scalar, true>& fit) {
-  Scalar row[10] = {};
+  Scalar row[TensorLeastSquares<Scalar, true>::columns] = {};
   row[j] = weight;
   fit.add_row(row, Scalar(0));
 }
@@ -310,8 +311,7 @@ template <typename Scalar>
 inline Eigen::Matrix<Scalar, 6, 6> scaled_covariance(const Eigen::Matrix<Scalar, 10, 10>& r, Scalar sigma) {
   Eigen::Matrix<Scalar, 7, 10> f;  // R11^-1 [sigma I | sd R12]
   f.template leftCols<7>() = sigma * Eigen::Matrix<Scalar, 7, 7>::Identity();
-  f.template rightCols<3>() =
-      static_cast<Scalar>(gyro_scale_tolerance / 1.959964) * r.template topRightCorner<7, 3>();
+  f.template rightCols<3>() = static_cast<Scalar>(gyro_scale_prior_sd) * r.template topRightCorner<7, 3>();
   for (int c = 0; c < 10; ++c) back_substitute<Scalar, 7>(r.data(), 10, f.col(c).data());
   return f.template topRows<6>().lazyProduct(f.template topRows<6>().transpose());
 }
@@ -333,8 +333,7 @@ inline bool solve_scaled(const TensorLeastSquares<Scalar, true>& ls, Scalar rows
   add_prior_row(6, sigma / static_cast<Scalar>(rotor_delay_prior_ms), fit);
   symmetric_eigen_decomposition(scaled_covariance(fit.template r_matrix<10>(), sigma), weight, vectors);
   weight = weight.cwiseMax(Scalar(0));
-  for (int j = 7; j < 10; ++j)
-    add_prior_row(j, sigma / static_cast<Scalar>(gyro_scale_tolerance / 1.959964), fit);
+  for (int j = 7; j < 10; ++j) add_prior_row(j, sigma / static_cast<Scalar>(gyro_scale_prior_sd), fit);
   theta = fit.template r_matrix<10>()
               .template triangularView<Eigen::Upper>()
               .solve(Eigen::Map<const Eigen::Matrix<Scalar, 10, 1>>(fit.z))
