@@ -1,5 +1,5 @@
 // The release window (aloft/onboard/release_window.hpp): a proposed release, judged over blocks
-// of 5 ms once 25 ms of samples have followed it.
+// of 5 ms once 25 ms of samples have followed it (a later look: 50 ms).
 #include "aloft/onboard/release_window.hpp"
 
 #include <cmath>
@@ -26,6 +26,15 @@ aloft::BodyKinematics<float> kinematics(const V3& extra) {
   return k;
 }
 
+// r given: the window fits r within 10 mm of r_true.
+aloft::LeverArmBall<float> given_r() {
+  aloft::LeverArmBall<float> ball;
+  ball.centre = r_true;
+  ball.radius_m = 0.01f;
+  ball.otherwise = r_true;
+  return ball;
+}
+
 std::uint64_t stamp(std::uint32_t i) { return t0_us + static_cast<std::uint64_t>(i) * period_us; }
 
 // Feeds samples [from, to) with the hand's push (m/s²) fading linearly to zero at sample
@@ -33,10 +42,7 @@ std::uint64_t stamp(std::uint32_t i) { return t0_us + static_cast<std::uint64_t>
 // the first decided verdict for the release proposed at sample `proposed`.
 aloft::WindowedRelease<float> feed(Window& w, std::uint32_t to, std::uint32_t hand_ends, float push_m_s2,
                                    float ring_m_s2, std::uint32_t proposed) {
-  aloft::LeverArmBall<float> ball;
-  ball.centre = r_true;
-  ball.radius_m = 0.01f;
-  ball.otherwise = r_true;
+  const aloft::LeverArmBall<float> ball = given_r();
   aloft::WindowedRelease<float> verdict;
   for (std::uint32_t i = 0; i < to && !verdict.decided; ++i) {
     V3 extra = V3::Zero();
@@ -102,4 +108,57 @@ ALOFT_TEST_CASE("release window: a push that never ends withdraws the proposal",
   const aloft::WindowedRelease<float> v = feed(w, 400, 10000, 15.0f, 0.0f, 100);
   ALOFT_CHECK(v.decided);
   ALOFT_CHECK(!v.free);
+}
+
+namespace {
+
+// A finger that touches again after the release at sample 200: 3.5 m/s² along y from
+// sample 250 to 290 (10 ms); free flight before and after.
+V3 finger_push(std::uint32_t i) { return i >= 250 && i < 290 ? V3(0, 3.5f, 0) : V3::Zero(); }
+
+// Feeds samples to `to` (free flight from sample 200, the finger's push on it) and dates the
+// release at `release` (a later look when `later_look`) once the window has seen enough.
+aloft::WindowedRelease<float> date_with_finger(Window& w, std::uint32_t to, std::uint32_t release,
+                                               bool later_look) {
+  const aloft::LeverArmBall<float> ball = given_r();
+  aloft::WindowedRelease<float> verdict;
+  for (std::uint32_t i = 0; i < to && !verdict.decided; ++i) {
+    const float push = i < 200 ? 15.0f * static_cast<float>(200 - i) / 80.0f : 0.0f;  // the hand's fade
+    const V3 hand = V3(0, 1, 0) * push;
+    w.add(i, stamp(i), kinematics(hand + finger_push(i)), true);
+    if (i >= release) verdict = w.date(release, stamp(release), ball, later_look);
+  }
+  return verdict;
+}
+
+}  // namespace
+
+ALOFT_TEST_CASE(
+    "release window: a push inside the fit blocks leaves the fit unsettled, and a later look dates past it",
+    "[release_window]") {
+  // Proposed at 200, the first look (25 ms on: fit blocks 240-300) takes the finger into
+  // the flight's level, and dates the release at 240, into the push.
+  Window first{default_settings};
+  const aloft::WindowedRelease<float> v = date_with_finger(first, 800, 200, false);
+  ALOFT_CHECK(v.decided);
+  ALOFT_CHECK(v.free);
+  ALOFT_CHECK(!v.settled);
+  ALOFT_CHECK(v.index < 290u);
+  // A later look (50 ms past that release) fits the flight past the push: the release comes
+  // after the finger lets go (sample 290), within a block, and this fit is settled.
+  Window later{default_settings};
+  const aloft::WindowedRelease<float> l = date_with_finger(later, 800, v.index, true);
+  ALOFT_CHECK(l.decided);
+  ALOFT_CHECK(l.free);
+  ALOFT_CHECK(l.settled);
+  ALOFT_CHECK(l.index >= 290u);
+  ALOFT_CHECK(l.index <= 310u);
+  ALOFT_CHECK(l.release_us > v.release_us);
+}
+
+ALOFT_TEST_CASE("release window: free flight leaves the fit settled", "[release_window]") {
+  Window w{default_settings};
+  const aloft::WindowedRelease<float> v = feed(w, 600, 200, 15.0f, 0.0f, 205);
+  ALOFT_CHECK(v.decided);
+  ALOFT_CHECK(v.settled);
 }

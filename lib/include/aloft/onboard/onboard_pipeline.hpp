@@ -302,13 +302,14 @@ class OnboardPipeline {
   ALOFT_OUT_OF_LINE void detect_airborne(std::uint32_t c) {
     const FoundLanding landing =
         detector_.find_landing(history_, c, clock_.half_span(), r_flight_, next_feed_);
-    if (on_probation_) add_to_window(c);
+    const bool dating = on_probation_ || look_again_;
+    if (dating) add_to_window(c);
     if (landing.found) {
       feed_until(landing.index);
       end_flight(true, landing.landing_us);
       return;
     }
-    if (on_probation_ && !date_release_over_window()) return;
+    if (dating && !date_release_over_window()) return;
     // Held back a few samples, so a landing can still be dated back over them.
     const std::uint32_t lag = settings_.feed_lag_samples;
     const std::uint32_t held_back = c + 1 > lag ? c + 1 - lag : 0u;
@@ -341,8 +342,8 @@ class OnboardPipeline {
   }
 
   // The proposed release, once the window has seen enough: kept, dated anew (the check
-  // starts again from there, as far as the history still holds it), or withdrawn. False
-  // when the flight was withdrawn.
+  // starts again from there, as far as the history still holds it), or withdrawn; and where
+  // the window's fit was not settled, looked at once more. False when the flight was withdrawn.
   ALOFT_COLD bool date_release_over_window() {
     const Vec3<Scalar>* known = known_r();
     LeverArmBall<Scalar> ball;
@@ -351,8 +352,17 @@ class OnboardPipeline {
         known != nullptr ? settings_.release.given_r_tolerance_m : settings_.release.max_lever_arm_m;
     ball.otherwise = r_flight_;
     ball.ridge_rad_s2 = settings_.release.ridge_rad_s2;
-    const WindowedRelease<Scalar> w = window_.date(release_index_, current_.release_us, ball);
+    const bool later_look = look_again_;
+    const WindowedRelease<Scalar> w = window_.date(release_index_, current_.release_us, ball, later_look);
     if (!w.decided) return true;
+    if (later_look) {
+      // It only ever dates the release later, past a push the first look took for flight,
+      // and only from a settled fit of its own (an r fitted 40 ms on can drift by
+      // millimetres: on real hands without a given r, moves past no push).
+      look_again_ = false;
+      if (w.free && w.settled && w.release_us > current_.release_us) redate_release(w);
+      return true;
+    }
     on_probation_ = false;
     if (!w.free) {
       check_.reset();
@@ -360,13 +370,17 @@ class OnboardPipeline {
       rearmed_at_us_ = current_.release_us + 1u;
       return false;
     }
-    if (w.release_us != current_.release_us) {
-      const std::uint32_t fed_to = next_feed_;
-      const std::uint32_t oldest = history_.oldest();
-      start_flight(w.index > oldest ? w.index : oldest, w.release_us, release_missed_given_r_);
-      feed_until(fed_to);
-    }
+    look_again_ = !w.settled;
+    if (w.release_us != current_.release_us) redate_release(w);
     return true;
+  }
+
+  // The flight starts again at the window's release (as far as the history still holds it).
+  ALOFT_COLD void redate_release(const WindowedRelease<Scalar>& w) {
+    const std::uint32_t fed_to = next_feed_;
+    const std::uint32_t oldest = history_.oldest();
+    start_flight(w.index > oldest ? w.index : oldest, w.release_us, release_missed_given_r_);
+    feed_until(fed_to);
   }
 
   ALOFT_COLD void start_flight(std::uint32_t release, std::uint64_t release_us, bool release_missed_given_r) {
@@ -464,6 +478,7 @@ class OnboardPipeline {
     check_.reset();
     detector_.reset();
     on_probation_ = false;
+    look_again_ = false;
     if (at_us - current_.release_us < settings_.min_flight_us) {
       ++clock_.counts().short_flights_dropped;
       return;
@@ -518,6 +533,7 @@ class OnboardPipeline {
   std::uint32_t flights_ = 0;
   bool release_missed_given_r_ = false;  // the open flight's release was found with a fitted r
   bool on_probation_ = false;            // the release is still to be dated over the window
+  bool look_again_ = false;              // dated, but the window looks once more (not settled)
   bool finished_ = false;
   bool tensor_pending_ = false;  // the finished flight's tensor estimate is still to be solved
   // Last: without rotor support it holds nothing, and takes one byte beside the flags.

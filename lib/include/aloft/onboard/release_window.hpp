@@ -24,6 +24,13 @@
 // or the block before the run is not free and starts at or after the proposal (a finger
 // that touched again: the release is then dated past the push's tail, tail_samples), and
 // at rates where a block holds fewer than `min_block_samples` samples.
+// A push can hide in the fit itself: a finger that touches again while the newest blocks are
+// fitted lifts the flight's level with it, and the blocks before it then look free. Such a
+// fit leaves its own blocks apart (a block farther than the floor of a free block from the
+// level: not `settled`), and the window then looks once more, 2 window_us past the release
+// as dated, with the newest blocks past the push; that later look only ever dates the
+// release later, and only from a settled fit of its own (the pipeline's rule;
+// docs/validation/release-detection.md, "A finger's re-touch").
 #pragma once
 
 #include <cstdint>
@@ -104,6 +111,7 @@ template <typename Scalar>
 struct WindowedRelease {
   bool decided = false;     // false: the window is not yet full
   bool free = false;        // decided: free flight for at least min_free_us
+  bool settled = false;     // free: each fit block within the floor of a free block of the level
   std::uint32_t index = 0;  // the release's first sample
   std::uint64_t release_us = 0;
 };
@@ -120,6 +128,10 @@ class ReleaseWindow {
                                                     ReleaseWindowSettings<float>{}.block_us) +
                                    2,
                 "the ring holds the window's blocks either side of the proposal, its own and the open one");
+  // A later look comes 2 window_us past the release: its closed blocks still reach back to it.
+  static_assert((ring_blocks - 1) * ReleaseWindowSettings<float>{}.block_us >=
+                    2 * ReleaseWindowSettings<float>{}.window_us,
+                "a later look's closed blocks reach back to the release it dates");
 
   // The settings are held, not copied (a pipeline's parts share its one copy): they must
   // outlive the window.
@@ -147,26 +159,32 @@ class ReleaseWindow {
   }
 
   // The release proposed at proposed_us (sample proposed_index), judged once the closed
-  // blocks reach window_us past it, with r fitted within `ball`.
+  // blocks reach window_us past it (a later look: twice that), with r fitted within `ball`.
   ALOFT_COLD WindowedRelease<Scalar> date(std::uint32_t proposed_index, std::uint64_t proposed_us,
-                                          const LeverArmBall<Scalar>& ball) const {
+                                          const LeverArmBall<Scalar>& ball, bool later_look = false) const {
     WindowedRelease<Scalar> out;
     if (count_ < 2u + settings_.fit_blocks) return out;
     // Stamps as their low 32 bits (a block's), spans as differences: exact below 35 min.
     const std::uint32_t end_low = blocks_[newest_ % ring_blocks].start_low_us;  // the open block's
     const auto proposed_low = static_cast<std::uint32_t>(proposed_us);
-    if (static_cast<std::int32_t>(end_low - proposed_low) < static_cast<std::int32_t>(settings_.window_us)) {
-      return out;
-    }
+    const std::uint32_t reach_us = later_look ? 2u * settings_.window_us : settings_.window_us;
+    if (static_cast<std::int32_t>(end_low - proposed_low) < static_cast<std::int32_t>(reach_us)) return out;
     out.decided = true;
     const Vec3<Scalar> r = window_r(ball);
     const Vec3<Scalar> level = flight_level(r);
     std::uint32_t run = 0;  // closed blocks in the trailing free run
-    while (run + 1u < count_ && block_free(closed(run), r, level)) ++run;
+    bool settled = true;    // its fit blocks so far within the floor of a free block of the level
+    const Scalar floor = settings_.block_limit_floor_m_s2;
+    for (; run + 1u < count_; ++run) {
+      const Scalar excess_sq = free_excess_sq(closed(run), r, level);
+      if (excess_sq < Scalar(0)) break;
+      if (run < settings_.fit_blocks && excess_sq > floor * floor) settled = false;
+    }
     if (run == 0u) return out;
     const Block& first = closed(run - 1u);
     if (end_low - first.start_low_us < settings_.min_free_us) return out;
     out.free = true;
+    out.settled = settled && run >= settings_.fit_blocks;
     // Blocks of few samples date no better than the sample-by-sample rules (file comment).
     const auto after_us = static_cast<std::int32_t>(first.start_low_us - proposed_low);
     const auto block_us = static_cast<std::int32_t>(settings_.block_us);
@@ -259,11 +277,14 @@ class ReleaseWindow {
     return sum / samples;
   }
 
-  bool block_free(const Block& b, const Vec3<Scalar>& r, const Vec3<Scalar>& level) const {
-    if (2u * b.torque_samples > b.samples) return false;
+  // A free block's mean residual's squared distance from the level (m²/s⁴); -1 for a block
+  // that is not free.
+  Scalar free_excess_sq(const Block& b, const Vec3<Scalar>& r, const Vec3<Scalar>& level) const {
+    if (2u * b.torque_samples > b.samples) return Scalar(-1);
     const Scalar kr = (b.k_sum * r).norm() / static_cast<Scalar>(b.samples);
     const Scalar limit = settings_.block_limit_floor_m_s2 + settings_.block_limit_relative * kr;
-    return (mean_residual(b, r) - level).squaredNorm() <= limit * limit;
+    const Scalar excess_sq = (mean_residual(b, r) - level).squaredNorm();
+    return excess_sq <= limit * limit ? excess_sq : Scalar(-1);
   }
 
   const ReleaseWindowSettings<Scalar>& settings_;
