@@ -243,6 +243,7 @@ class TensorEstimator : detail::RotorPieceIntegrals<Scalar, Rotor> {
   // piece's first rotor_slope_us end and its last begin.
   void track_slopes(const Vec3<Scalar>& w, Scalar ds, std::uint32_t dt_us, std::uint32_t piece_us) {
     this->slope_omega += ds * w;
+    // From the settings each sample: a shift and a compare, cheaper than 4 B more state.
     const std::uint32_t window = piece_us / 4 < rotor_slope_us ? piece_us / 4 : rotor_slope_us;
     const std::uint32_t before = elapsed_us_ - dt_us;
     if (before < window && elapsed_us_ >= window)
@@ -316,8 +317,8 @@ class TensorEstimator : detail::RotorPieceIntegrals<Scalar, Rotor> {
     const Scalar scale = nominal_scale(in.nominal);
     const Eigen::Matrix<Scalar, 3, 6> torque = integrated_body_torque_per_entry(delta_omega, p);
     Vec3<Scalar> b = Vec3<Scalar>::Zero();
-    Eigen::Matrix<Scalar, 3, 4> nuisance = Eigen::Matrix<Scalar, 3, 4>::Zero();
     if constexpr (Rotor) {
+      Eigen::Matrix<Scalar, 3, 4> nuisance = Eigen::Matrix<Scalar, 3, 4>::Zero();
       if (in.rotor.present()) {
         b = -(to_rates * integrated_rotor_torque(in.rotor, speed_b - this->speed_a, this->speed_omega));
         if (b.squaredNorm() > Scalar(0)) scaled_ = true;
@@ -330,21 +331,29 @@ class TensorEstimator : detail::RotorPieceIntegrals<Scalar, Rotor> {
       nuisance.template rightCols<3>() =
           -(to_rates * integrated_torque_gyro_scale_sensitivity(in.nominal.tensor(), delta_omega, p, in.rotor,
                                                                 this->speed_omega));
-    }
-    // Row r of (scale to_rates) torque, as a plain loop: Eigen's unrolled 3 x 6 product took
-    // 730 B of the flight image's flash for a path run once a piece.
-    for (int r = 0; r < 3; ++r) {
-      Scalar row[TensorLeastSquares<Scalar, Rotor>::columns];
-      for (int m = 0; m < 6; ++m) row[m] = scale * to_rates.row(r).dot(torque.col(m));
-      if constexpr (Rotor) {
-        for (int m = 0; m < 4; ++m) row[6 + m] = nuisance(r, m);
-      }
-      ls_.add_row(row, b(r));
+      add_rows(to_rates, scale, torque, b, nuisance.data());
+    } else {
+      add_rows(to_rates, scale, torque, b, nullptr);
     }
     ls_.rate_squared_s += products_[0] + products_[1] + products_[2];
     ++piece_count_;
     phase_ = Phase::gap;
     elapsed_us_ = 0;
+  }
+
+  // Row r of (scale to_rates) torque, then with rotor support the nuisances' columns
+  // (`nuisance`: 3 x 4, column-major), as a plain loop: Eigen's unrolled 3 x 6 product took
+  // 730 B of the flight image's flash for a path run once a piece.
+  void add_rows(const Mat3<Scalar>& to_rates, Scalar scale, const Eigen::Matrix<Scalar, 3, 6>& torque,
+                const Vec3<Scalar>& b, [[maybe_unused]] const Scalar* nuisance) {
+    for (int r = 0; r < 3; ++r) {
+      Scalar row[TensorLeastSquares<Scalar, Rotor>::columns];
+      for (int m = 0; m < 6; ++m) row[m] = scale * to_rates.row(r).dot(torque.col(m));
+      if constexpr (Rotor) {
+        for (int m = 0; m < 4; ++m) row[6 + m] = nuisance[r + 3 * m];
+      }
+      ls_.add_row(row, b(r));
+    }
   }
 
   TensorLeastSquares<Scalar, Rotor> ls_;
