@@ -59,7 +59,9 @@ struct ReleaseWindowSettings {
     v(s.window_us, [] {
       return SettingInfo{"release_window.window_us", "µs",
                          "free flight this long after a proposed release before it is dated over blocks: "
-                         "on the held-back real throws a hand let go over its last 20-30 ms"};
+                         "on the held-back real throws a hand let go over its last 20-30 ms. The ring of "
+                         "blocks is sized for the default (ReleaseWindow::ring_blocks): above it the later "
+                         "look, at twice this, no longer sees back to the release"};
     });
     v(s.block_us, [] {
       return SettingInfo{"release_window.block_us", "µs",
