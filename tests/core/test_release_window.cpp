@@ -162,3 +162,23 @@ ALOFT_TEST_CASE("release window: free flight leaves the fit settled", "[release_
   ALOFT_CHECK(v.decided);
   ALOFT_CHECK(v.settled);
 }
+
+ALOFT_TEST_CASE("release window: a later look whose blocks do not reach back to the release keeps it",
+                "[release_window]") {
+  // window_us above the default the ring is sized for: the later look, 80 ms on, holds
+  // blocks from about 25 ms after the release only, all free; where the free flight starts
+  // is not seen, so the release stays (not moved to the oldest block held).
+  aloft::ReleaseWindowSettings<float> settings;
+  settings.window_us = 40000;
+  Window w{settings};
+  aloft::WindowedRelease<float> v;
+  for (std::uint32_t i = 0; i < 1000 && !v.decided; ++i) {
+    const float push = i < 200 ? 15.0f * static_cast<float>(200 - i) / 80.0f : 0.0f;  // the hand's fade
+    w.add(i, stamp(i), kinematics(V3(0, 1, 0) * push), true);
+    if (i >= 205) v = w.date(205, stamp(205), given_r(), true);
+  }
+  ALOFT_CHECK(v.decided);
+  ALOFT_CHECK(v.free);
+  ALOFT_CHECK(v.index == 205u);
+  ALOFT_CHECK(v.release_us == stamp(205));
+}

@@ -61,7 +61,7 @@ struct ReleaseWindowSettings {
                          "free flight this long after a proposed release before it is dated over blocks: "
                          "on the held-back real throws a hand let go over its last 20-30 ms. The ring of "
                          "blocks is sized for the default (ReleaseWindow::ring_blocks): above it the later "
-                         "look, at twice this, no longer sees back to the release"};
+                         "look, at twice this, may not see back to the release, and keeps it"};
     });
     v(s.block_us, [] {
       return SettingInfo{"release_window.block_us", "µs",
@@ -194,8 +194,12 @@ class ReleaseWindow {
     // proposed release (a finger that touched again), whose tail may reach into the run.
     const bool pushed_after =
         run + 1u < count_ && static_cast<std::int32_t>(closed(run).start_low_us - proposed_low) >= 0;
-    const bool moved = (after_us > block_us || after_us < -2 * block_us || pushed_after) &&
-                       first.samples >= settings_.min_block_samples;
+    // Later only where the ring holds a block before the run: a run from the oldest block held
+    // may start before it (a later look under a window_us above the default's, for which the
+    // ring is sized, or a recording's first 60 ms).
+    const bool later = after_us > block_us && run + 1u < count_;
+    const bool moved =
+        (later || after_us < -2 * block_us || pushed_after) && first.samples >= settings_.min_block_samples;
     if (!moved) {
       out.index = proposed_index;
       out.release_us = proposed_us;
