@@ -116,16 +116,17 @@ namespace {
 // sample 250 to 290 (10 ms); free flight before and after.
 V3 finger_push(std::uint32_t i) { return i >= 250 && i < 290 ? V3(0, 3.5f, 0) : V3::Zero(); }
 
-// Feeds samples to `to` (free flight from sample 200, the finger's push on it) and dates the
-// release at `release` (a later look when `later_look`) once the window has seen enough.
-aloft::WindowedRelease<float> date_with_finger(Window& w, std::uint32_t to, std::uint32_t release,
-                                               bool later_look) {
+// Feeds samples to `to` (free flight from sample 200, with the finger's push on it when
+// `finger`) and dates the release at `release` (a later look when `later_look`) once the
+// window has seen enough.
+aloft::WindowedRelease<float> date_release(Window& w, std::uint32_t to, std::uint32_t release,
+                                           bool later_look, bool finger) {
   const aloft::LeverArmBall<float> ball = given_r();
   aloft::WindowedRelease<float> verdict;
   for (std::uint32_t i = 0; i < to && !verdict.decided; ++i) {
     const float push = i < 200 ? 15.0f * static_cast<float>(200 - i) / 80.0f : 0.0f;  // the hand's fade
     const V3 hand = V3(0, 1, 0) * push;
-    w.add(i, stamp(i), kinematics(hand + finger_push(i)), true);
+    w.add(i, stamp(i), kinematics(finger ? hand + finger_push(i) : hand), true);
     if (i >= release) verdict = w.date(release, stamp(release), ball, later_look);
   }
   return verdict;
@@ -139,7 +140,7 @@ ALOFT_TEST_CASE(
   // Proposed at 200, the first look (25 ms on: fit blocks 240-300) takes the finger into
   // the flight's level, and dates the release at 240, into the push.
   Window first{default_settings};
-  const aloft::WindowedRelease<float> v = date_with_finger(first, 800, 200, false);
+  const aloft::WindowedRelease<float> v = date_release(first, 800, 200, false, true);
   ALOFT_CHECK(v.decided);
   ALOFT_CHECK(v.free);
   ALOFT_CHECK(!v.settled);
@@ -147,7 +148,7 @@ ALOFT_TEST_CASE(
   // A later look (50 ms past that release) fits the flight past the push: the release comes
   // after the finger lets go (sample 290), within a block, and this fit is settled.
   Window later{default_settings};
-  const aloft::WindowedRelease<float> l = date_with_finger(later, 800, v.index, true);
+  const aloft::WindowedRelease<float> l = date_release(later, 800, v.index, true, true);
   ALOFT_CHECK(l.decided);
   ALOFT_CHECK(l.free);
   ALOFT_CHECK(l.settled);
@@ -171,12 +172,7 @@ ALOFT_TEST_CASE("release window: a later look whose blocks do not reach back to 
   aloft::ReleaseWindowSettings<float> settings;
   settings.window_us = 40000;
   Window w{settings};
-  aloft::WindowedRelease<float> v;
-  for (std::uint32_t i = 0; i < 1000 && !v.decided; ++i) {
-    const float push = i < 200 ? 15.0f * static_cast<float>(200 - i) / 80.0f : 0.0f;  // the hand's fade
-    w.add(i, stamp(i), kinematics(V3(0, 1, 0) * push), true);
-    if (i >= 205) v = w.date(205, stamp(205), given_r(), true);
-  }
+  const aloft::WindowedRelease<float> v = date_release(w, 1000, 205, true, false);
   ALOFT_CHECK(v.decided);
   ALOFT_CHECK(v.free);
   ALOFT_CHECK(v.index == 205u);
