@@ -1,7 +1,8 @@
 // `aloft replay` (SPEC §5): the firmware's onboard pipeline, in float, on a recording,
 // sample by sample; it finds the flights itself. The table goes to stdout; --json writes
 // the report (replay_report_json.hpp) whole or not at all.
-//   aloft replay --body BODY.json (--imu LOG.csv | --fifo FIFO.bin --odr-hz N) [--json R]
+//   aloft replay --body BODY.json (--imu LOG.csv | --fifo FIFO.bin --odr-hz N)
+//                [--gyro-filter-us US] [--json R]
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -53,7 +54,11 @@ ReplayRun run_replay_options(const ReplayOptions& o) {
   ReplayRun run;
   run.recording = read_recording(o);
   check_rotor_matches(body, o.body_path, run.recording);
-  run.result = run_replay(replay_settings_from_body(body), o.body_path, run.recording);
+  ReplaySettings settings = replay_settings_from_body(body);
+  const bool told = o.gyro_filter_us >= 0;
+  if (told) settings.gyro_filter_us = static_cast<std::uint16_t>(o.gyro_filter_us);
+  run.result = run_replay(settings, o.body_path, run.recording);
+  run.result.gyro_filter_from_option = told;
   return run;
 }
 
@@ -73,6 +78,12 @@ void add_replay_options(CLI::App& command, ReplayOptions& options) {
       ->type_name("HZ")
       ->check(CLI::PositiveNumber.description(""));
   fifo->needs(cmd->get_option("--odr-hz"));
+  cmd->add_option("--gyro-filter-us", options.gyro_filter_us,
+                  "the time constant of the gyro's first-order low-pass in the firmware that logged the "
+                  "recording, µs (0: none); default: aloft's firmware's, 640 (the ICM-42688-P's UI filter "
+                  "at a quarter of 1 kHz)")
+      ->type_name("US")
+      ->check(CLI::Range(0, 65535).description(""));
   cmd->add_option("--json", options.json_path, "write the report as JSON (keys: docs/file-formats.md)")
       ->check(output_file());
 }

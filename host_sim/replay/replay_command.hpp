@@ -19,10 +19,12 @@ struct ReplayOptions {
   ImuUnits imu_units;  // --time-units, --gyro-units, --accel-units
   std::string fifo_path;
   double odr_hz = 0.0;
+  int gyro_filter_us = -1;  // --gyro-filter-us; -1: the firmware's setting (tensor.gyro_filter_us)
   std::string json_path;
 };
 
-// --body, --imu | --fifo with --odr-hz, the unit options and --json on `command`.
+// --body, --imu | --fifo with --odr-hz, the unit options, --gyro-filter-us and --json on
+// `command`.
 void add_replay_options(CLI::App& command, ReplayOptions& options);
 
 // The recording read and the pipeline run over it: what replay_report_json and

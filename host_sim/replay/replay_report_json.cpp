@@ -70,6 +70,9 @@ json replay_report_json(const Recording& recording, const ReplayResult& result) 
   for (const FlightResult<float>& f : result.flights) flights.push_back(flight_json(result, f));
   return {{"recording", {{"path", recording.path}, {"format", recording.format}}},
           {"stream", stream_json(result)},
+          {"gyro_filter",
+           {{"time_constant_us", result.gyro_filter_us},
+            {"from", result.gyro_filter_from_option ? "option" : "firmware"}}},
           {"flights", flights}};
 }
 

@@ -45,6 +45,10 @@ std::string replay_report_text(const Recording& recording, const ReplayResult& r
       recording.path.c_str(), result.stream.samples, result.stream.gaps, double(result.stream.lost_us) / 1e6,
       result.stream.clipped_samples, result.invalid_samples, result.empty_reads,
       static_cast<unsigned long long>(result.bytes_skipped));
+  text +=
+      printf_text("gyro filter: first-order, %u µs (%s)\n", unsigned{result.gyro_filter_us},
+                  result.gyro_filter_from_option ? "--gyro-filter-us"
+                                                 : "aloft's firmware's; --gyro-filter-us states the log's");
   if (result.flights.empty()) return text + "no flight found\n";
   text += "flight  release_s  landing_s samples gaps  imu_position_mm         rms_da_deg rms_rel_err\n";
   for (const FlightResult<float>& f : result.flights) text += flight_row(result, f);

@@ -33,6 +33,7 @@ OnboardPipelineSettings<float> pipeline_settings(const ReplaySettings& settings)
   p.imu_position_known = settings.imu_position_m.has_value();
   if (settings.imu_position_m) p.imu_position_m = *settings.imu_position_m;
   p.rotor = settings.rotor;
+  p.tensor.gyro_filter_us = settings.gyro_filter_us;
   return p;
 }
 
@@ -44,6 +45,7 @@ ReplayResult run_replay(const ReplaySettings& settings, const std::string& body_
   result.empty_reads = recording.empty_reads;
   result.resyncs = recording.resyncs;
   result.t0_us = std::llround(recording.t0_s * 1e6);
+  result.gyro_filter_us = settings.gyro_filter_us;
   // The pipeline is large (K simulations); on the heap rather than the stack.
   auto pipeline =
       std::make_unique<ReplayPipeline>(replay_inertia(settings, body_source), pipeline_settings(settings));

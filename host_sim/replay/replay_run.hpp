@@ -25,6 +25,9 @@ struct ReplaySettings {
   Quat<float> sensor_to_body = Quat<float>::Identity();
   std::optional<Vec3<float>> imu_position_m;  // body axes; none: the pipeline estimates it
   Rotor<float> rotor;                         // the body file's `rotor`; none: inertia 0
+  // The gyro's first-order filter (tensor.gyro_filter_us): a property of the firmware that
+  // logged the recording, not of the body; unless told, aloft's firmware's.
+  std::uint16_t gyro_filter_us = TensorEstimatorSettings<float>{}.gyro_filter_us;
 };
 
 ReplaySettings replay_settings_from_body(const Body& body);
@@ -47,7 +50,9 @@ struct ReplayResult {
   std::uint32_t resyncs = 0;
   std::vector<StreamGap> gaps;
   std::vector<FlightResult<float>> flights;
-  std::int64_t t0_us = 0;  // the recording's first sample in its own time base
+  std::int64_t t0_us = 0;                // the recording's first sample in its own time base
+  std::uint16_t gyro_filter_us = 0;      // the filter the pipeline assumed (ReplaySettings)
+  bool gyro_filter_from_option = false;  // told (--gyro-filter-us), not the firmware's default
 };
 
 // Runs the pipeline over every sample; throws Error naming the recording and the sample

@@ -91,11 +91,12 @@ TEST_CASE("an accelerometer in g is named from its reading at rest", "[first_hou
                 {"g.csv", "1.00", "--accel-units g"});
   check_refused(run_aloft(f.dir, "replay --body " + f.body + " --imu " + log), {"g.csv", "--accel-units g"});
   // Converted, the replay's flight detector finds the three throws: a row each, and a line
-  // each under the tensor estimate's heading.
+  // each under the tensor estimate's heading, below 4 lines: the stream, the gyro filter,
+  // the table's heading and the tensor estimate's.
   const RunResult fixed = run_aloft(f.dir, "replay --body " + f.body + " --imu " + log + " --accel-units g");
   CAPTURE(fixed.err);
   CHECK(fixed.exit_code == 0);
-  CHECK(count_lines(fixed.out) == 3 + 2 * session.flights.size());
+  CHECK(count_lines(fixed.out) == 4 + 2 * session.flights.size());
   const RunResult inspected = run_aloft(f.dir, "inspect " + log);
   CHECK(has(inspected.out, "in g (--accel-units g)"));
 }
