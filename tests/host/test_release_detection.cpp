@@ -96,7 +96,6 @@ std::vector<aloft::FlightResult<float>> replay(const Recording& rec, bool give_r
   aloft::OnboardPipelineSettings<float> settings;
   settings.check.sensor_to_body = rec.sensor_to_body.cast<float>();
   settings.imu_position_known = give_r;
-  if (std::getenv("FADE")) settings.release.fade_out_at_most_us = std::atoi(std::getenv("FADE"));
   // The window's settings from the environment, to repeat their choice on the tuned seeds
   // (docs/validation/release-detection.md, "Real hands"): ALOFT_WINDOW_FLOOR (m/s²), ALOFT_WINDOW_RELATIVE,
   // ALOFT_WINDOW_BLOCK_US.
