@@ -203,10 +203,12 @@ int run() {
   return exit_stream_ended;
 }
 
-// The pipeline, with the tensor and the settings (about 300 B) on this frame only: not
-// under the record ring's mount, the deepest of the set-up's calls. The tensor was checked
-// and decomposed when the image was built (flight_settings.hpp).
-ALOFT_COLD void start_pipeline() { pipeline.emplace(flight_inertia(), pipeline_settings()); }
+// The pipeline, its tensor and settings made in place (OnboardPipeline's constructor from
+// makers): neither is built on this frame and copied. The tensor was checked and decomposed
+// when the image was built (flight_settings.hpp).
+ALOFT_COLD void start_pipeline() {
+  pipeline.emplace([] { return flight_inertia(); }, [] { return pipeline_settings(); });
+}
 
 // Set-up: the board's bus, the sensor, the pipeline and the records; 0, or the exit status.
 // Out of line, so that its locals (the bus among them: the driver keeps its own copy) are
