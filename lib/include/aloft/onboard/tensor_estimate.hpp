@@ -207,7 +207,10 @@ ALOFT_COLD inline void propagate(const Vec3<Scalar>& m, const Mat3<Scalar>& axes
                                  Scalar t, TensorEstimate<Scalar>& out) {
   Scalar var[5] = {};
   Scalar tilt[6] = {};  // the tilts' covariance: 00 11 22 01 02 12
-  const int row[6] = {0, 1, 2, 0, 0, 1}, col[6] = {0, 1, 2, 1, 2, 2};
+  // Static: as locals, both were copied onto this frame (48 B), which was then the deepest
+  // path of the flight image's worst-case stack (STM32F405: 4 B of stack and 16 B of flash
+  // less; the release window's dating is now the deepest).
+  static constexpr int row[6] = {0, 1, 2, 0, 0, 1}, col[6] = {0, 1, 2, 1, 2, 2};
   for (int k = 0; k < 6; ++k) {
     if (!(weight(k) > Scalar(0))) continue;
     // d[e] = (V^T I(v_k) V)(row[e], col[e]), each from I(v_k)'s six entries (no 3 x 3
