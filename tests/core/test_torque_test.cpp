@@ -39,7 +39,7 @@ struct ExactSamples {
       const S step = static_cast<S>(i - 1) * dt;
       history.push(1000000u + static_cast<std::uint64_t>(i) * 1000u, w + step * w_dot, Vec3<S>::Zero(),
                    flags);
-      speeds.set(static_cast<std::uint32_t>(i), s + step * s_dot);
+      speeds.set(static_cast<std::uint32_t>(i), s + step * s_dot, true);
     }
   }
   aloft::BodyKinematics<S> kinematics() const {

@@ -84,6 +84,18 @@ struct BodyKinematics {
   Vec3<Scalar> a = Vec3<Scalar>::Zero();      // m/s²
 };
 
+// Twice the summed torque-free residual, 2 sum(I w_dot + w x (I w)), of samples whose
+// lever-arm matrices K sum to k_sum (in I's units per second squared): K's antisymmetric
+// part is [w_dot]x and its symmetric part S = w w^T - |w|² 1, and w x (I w) is linear in
+// w w^T (integrated_gyroscopic_torque; the multiple of 1 in S adds nothing), so K's sum
+// gives the residual's sum exactly, not the residual at a mean w.
+template <typename Scalar>
+ALOFT_COLD Vec3<Scalar> twice_torque_residual(const Mat3<Scalar>& inertia, const Mat3<Scalar>& k_sum) {
+  const Mat3<Scalar>& k = k_sum;
+  const Vec3<Scalar> twice_w_dot(k(2, 1) - k(1, 2), k(0, 2) - k(2, 0), k(1, 0) - k(0, 1));
+  return integrated_body_torque(inertia, twice_w_dot, Mat3<Scalar>(k + k.transpose()));
+}
+
 // The largest specific force at the centre of mass that still counts as free flight for
 // lever arm r (m/s²): the floor plus a fraction of the lever arm's own specific force.
 template <typename Scalar>

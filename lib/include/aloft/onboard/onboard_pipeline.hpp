@@ -240,7 +240,7 @@ class OnboardPipeline {
       if (!all_finite(gyro, accel))
         flags = static_cast<std::uint8_t>(flags | imu_gyro_clipped | imu_accel_clipped);
     }
-    speeds_.set(history_.count(), sample.rotor_rad_s);
+    speeds_.set(history_.count(), sample.rotor_rad_s, (sample.flags & imu_rotor_speed) != 0);
     history_.push(sample.t_us, gyro, accel, flags);
     if (history_.count() > clock_.half_span()) detect(history_.count() - 1 - clock_.half_span());
     return Status::ok;
@@ -362,7 +362,12 @@ class OnboardPipeline {
     ball.otherwise = r_flight_;
     ball.ridge_rad_s2 = settings_.release.ridge_rad_s2;
     const bool later_look = look_again_;
-    const WindowedRelease<Scalar> w = window_.date(release_index_, current_.release_us, ball, later_look);
+    // The window tests each block's torque against the body's tensor where no rotor turned
+    // in it: a turning rotor's torque is not in the blocks' sums.
+    const bool rotor_turned = rotor_present() && speeds_.turned_since(window_.oldest_index());
+    const Mat3<Scalar>* torque_tensor = rotor_turned ? nullptr : &inertia_.tensor();
+    const WindowedRelease<Scalar> w =
+        window_.date(release_index_, current_.release_us, ball, later_look, torque_tensor);
     if (!w.decided) return true;
     if (later_look) {
       // It only ever dates the release later, past a push the first look took for flight,

@@ -14,9 +14,11 @@
 //    bias: constant over 25 ms in body axes to a tenth of a m/s²).
 //  - A block is free when its mean residual is within `block_limit_floor_m_s2` plus
 //    `block_limit_relative` of its |K r| of that level, and at most half its samples carry
-//    a torque. The release is the first sample of the trailing run of free blocks: later
-//    than proposed when a slow let-go still pushed (its force is slow, and stays in the
-//    block mean), earlier when a ringing body broke the sample-by-sample run.
+//    a torque; and, given the body's tensor, when its mean torque-free residual lies near
+//    the fit blocks' (torque_free_run: the gyro sees a push the accelerometer may not).
+//    The release is the first sample of the trailing run of free blocks: later than
+//    proposed when a slow let-go still pushed (its force is slow, and stays in the block
+//    mean), earlier when a ringing body broke the sample-by-sample run.
 //  - A run shorter than `min_free_us` is no flight yet: the proposal is withdrawn.
 // The proposed release is kept (it is dated more finely than a block's grid) unless the
 // window's lies more than one block after it, or more than two blocks before it (a proposal
@@ -161,9 +163,11 @@ class ReleaseWindow {
   }
 
   // The release proposed at proposed_us (sample proposed_index), judged once the closed
-  // blocks reach window_us past it (a later look: twice that), with r fitted within `ball`.
+  // blocks reach window_us past it (a later look: twice that), with r fitted within `ball`,
+  // and each block's torque tested against `inertia` (the body's tensor; null: not tested).
   ALOFT_COLD WindowedRelease<Scalar> date(std::uint32_t proposed_index, std::uint64_t proposed_us,
-                                          const LeverArmBall<Scalar>& ball, bool later_look = false) const {
+                                          const LeverArmBall<Scalar>& ball, bool later_look = false,
+                                          const Mat3<Scalar>* inertia = nullptr) const {
     WindowedRelease<Scalar> out;
     if (count_ < 2u + settings_.fit_blocks) return out;
     // Stamps as their low 32 bits (a block's), spans as differences: exact below 35 min.
@@ -182,6 +186,7 @@ class ReleaseWindow {
       if (excess_sq < Scalar(0)) break;
       if (run < settings_.fit_blocks && excess_sq > floor * floor) settled = false;
     }
+    if (inertia != nullptr) run = torque_free_run(*inertia, run, end_low, settled);
     if (run == 0u) return out;
     const Block& first = closed(run - 1u);
     if (end_low - first.start_low_us < settings_.min_free_us) return out;
@@ -211,6 +216,11 @@ class ReleaseWindow {
     out.release_us = static_cast<std::uint64_t>(static_cast<std::int64_t>(proposed_us) + after_us) +
                      tail * (next_low - first.start_low_us) / first.samples;
     return out;
+  }
+
+  // The first sample of the oldest block held (with none, the next to come).
+  std::uint32_t oldest_index() const {
+    return count_ == 0 ? next_index_ : blocks_[(newest_ + 1u - count_) % ring_blocks].first_index;
   }
 
  private:
@@ -253,8 +263,11 @@ class ReleaseWindow {
     return static_cast<Scalar>(whole) < samples ? whole + 1u : whole;  // rounded up
   }
 
-  // The n-th newest closed block (0: the newest; the open block is not yet closed).
-  const Block& closed(std::uint32_t n) const { return blocks_[(newest_ - 1u - n) % ring_blocks]; }
+  // The n-th newest closed block (0: the newest; the open block is not yet closed). Out of
+  // line: on the STM32F405, 240 B of flash less than inlined into the cold paths that call it.
+  ALOFT_OUT_OF_LINE const Block& closed(std::uint32_t n) const {
+    return blocks_[(newest_ - 1u - n) % ring_blocks];
+  }
 
   // The mean residual vector of a block for lever arm r. Out of line: on the STM32F405, 32 B
   // of flash less than inlined into tail_samples twice (a cold path).
@@ -295,6 +308,72 @@ class ReleaseWindow {
         settings_.block_limit_floor_m_s2 + settings_.block_limit_relative * (k_r.norm() / samples);
     const Scalar excess_sq = ((b.a_sum - k_r) / samples - level).squaredNorm();
     return excess_sq <= limit * limit ? excess_sq : Scalar(-1);
+  }
+
+  struct TorqueLevel {
+    Vec3<Scalar> residual;  // the fit blocks' mean torque-free residual
+    Scalar inertia_sq;      // |I|², the limits' unit
+    std::uint32_t middle_low_us;
+  };
+
+  // The trailing run of `run` blocks that the force leaves free, shortened to the blocks
+  // whose torque is free too (torque_apart), and `settled` false where a fit block's torque
+  // lies apart. The torque only ever shortens a run the force leaves long enough: where it
+  // would withdraw the flight, the fit is not settled instead, and the later look dates it.
+  // Apart from date(): its frame is not under the lever arm's fit (the worst-case stack).
+  ALOFT_COLD std::uint32_t torque_free_run(const Mat3<Scalar>& inertia, std::uint32_t run,
+                                           std::uint32_t end_low, bool& settled) const {
+    // The fit blocks' mean torque-free residual, their middle, and |I|².
+    TorqueLevel level{Vec3<Scalar>::Zero(), inertia.squaredNorm(), 0};
+    std::uint32_t samples = 0;
+    for (std::uint32_t n = 0; n < settings_.fit_blocks; ++n) {
+      level.residual += twice_torque_residual(inertia, closed(n).k_sum);
+      samples += closed(n).samples;
+    }
+    level.residual /= static_cast<Scalar>(2u * samples);
+    const std::uint32_t first_low = closed(settings_.fit_blocks - 1u).start_low_us;
+    level.middle_low_us = first_low + (end_low - first_low) / 2u;
+    std::uint32_t n = 0;
+    for (; n < run; ++n) {
+      const int apart = torque_apart(closed(n), inertia, level);
+      if (n < settings_.fit_blocks && apart != 0) settled = false;
+      if (apart == 2) break;
+    }
+    if (n == run) return run;
+    if (n > 0u && end_low - closed(n - 1u).start_low_us >= settings_.min_free_us) return n;
+    settled = false;
+    return run;
+  }
+
+  // How far a block's mean torque-free residual lies off the fit blocks': 0 within its
+  // noise and relative parts, 1 within the drift's too, 2 beyond (not free). The limit, in
+  // units of |I| (rad/s²), is the root sum of squares of
+  //  - noise_rad_s2 / sqrt(samples): a block mean of the gyro's w_dot, its noise;
+  //  - relative |w|²: the tensor's error (15 % in the tests' "I 15 % off" cases), whose
+  //    gyroscopic part the fit blocks' level takes up where w is the same;
+  //  - drift_per_s |w| |w_dot| times the block's distance from the fit blocks' middle: that
+  //    part's change as w turns.
+  // Chosen on the tuned seeds of tests/host/test_release_detection.cpp and reported on
+  // fresh ones (docs/validation/release-detection.md, "A finger's re-touch"): without the
+  // drift term a spinning flight with the tensor 15 % off came 64 ms late, not 38 ms.
+  // Constants, not settings: on the STM32F405 the settings' copy costs RAM and flash.
+  ALOFT_COLD int torque_apart(const Block& b, const Mat3<Scalar>& inertia, const TorqueLevel& level) const {
+    constexpr Scalar noise_rad_s2 = Scalar(20), relative_of_w_sq = Scalar(0.02), drift_per_s = Scalar(0.2);
+    const Scalar samples = static_cast<Scalar>(b.samples);
+    const Mat3<Scalar>& k = b.k_sum;
+    const Scalar w_sq = Scalar(-0.5) * k.trace() / samples;
+    const Scalar w_dot_sq =
+        Vec3<Scalar>(k(2, 1) - k(1, 2), k(0, 2) - k(2, 0), k(1, 0) - k(0, 1)).squaredNorm() /
+        (Scalar(4) * samples * samples);
+    const auto age_us =
+        static_cast<std::int32_t>(level.middle_low_us - b.start_low_us - settings_.block_us / 2u);
+    const Scalar drift = drift_per_s * Scalar(1e-6) * static_cast<Scalar>(age_us < 0 ? -age_us : age_us);
+    const Scalar relative = relative_of_w_sq * w_sq;
+    const Scalar apart_sq =
+        (twice_torque_residual(inertia, k) / (Scalar(2) * samples) - level.residual).squaredNorm();
+    const Scalar noise_sq = level.inertia_sq * (noise_rad_s2 * noise_rad_s2 / samples + relative * relative);
+    const Scalar drift_sq = level.inertia_sq * drift * drift * w_sq * w_dot_sq;
+    return (apart_sq > noise_sq) + (apart_sq > noise_sq + drift_sq);
   }
 
   const ReleaseWindowSettings<Scalar>& settings_;

@@ -92,8 +92,18 @@ struct RotorMomentum {
 template <typename Scalar, int N, bool Keep>
 class RotorSpeedHistory {
  public:
-  void set(std::uint32_t i, Scalar speed) { speeds_[i % N] = speed; }
+  // A speed that is not known (no imu_rotor_speed, or not a number) may be any: it counts
+  // as turning.
+  void set(std::uint32_t i, Scalar speed, bool known) {
+    speeds_[i % N] = speed;
+    if (!known || !(speed <= Scalar(0) && speed >= Scalar(0))) {
+      last_turning_ = i;
+      turned_ = true;
+    }
+  }
   Scalar get(std::uint32_t i) const { return speeds_[i % N]; }
+  // Whether the rotor turned at sample i or after (it adds a torque from then on).
+  bool turned_since(std::uint32_t i) const { return turned_ && last_turning_ >= i; }
 
   // The rotor's h at sample i and its rate: a central difference of the speed over the same
   // +-half samples as the gyro's w_dot (SampleHistory::kinematics), so that both sides of
@@ -111,13 +121,16 @@ class RotorSpeedHistory {
 
  private:
   Scalar speeds_[N] = {};
+  std::uint32_t last_turning_ = 0;
+  bool turned_ = false;
 };
 
 template <typename Scalar, int N>
 class RotorSpeedHistory<Scalar, N, false> {
  public:
-  void set(std::uint32_t, Scalar) {}
+  void set(std::uint32_t, Scalar, bool) {}
   Scalar get(std::uint32_t) const { return Scalar(0); }
+  bool turned_since(std::uint32_t) const { return false; }
   bool momentum(const SampleHistory<Scalar, N>&, std::uint32_t, std::uint32_t, const Rotor<Scalar>&,
                 RotorMomentum<Scalar>&) const {
     return false;
