@@ -84,6 +84,14 @@ struct BodyKinematics {
   Vec3<Scalar> a = Vec3<Scalar>::Zero();      // m/s²
 };
 
+// Twice the summed w_dot of samples whose lever-arm matrices K sum to k_sum: K's
+// antisymmetric part is [w_dot]x.
+template <typename Scalar>
+inline Vec3<Scalar> twice_w_dot_sum(const Mat3<Scalar>& k_sum) {
+  const Mat3<Scalar>& k = k_sum;
+  return Vec3<Scalar>(k(2, 1) - k(1, 2), k(0, 2) - k(2, 0), k(1, 0) - k(0, 1));
+}
+
 // Twice the summed torque-free residual, 2 sum(I w_dot + w x (I w)), of samples whose
 // lever-arm matrices K sum to k_sum (in I's units per second squared): K's antisymmetric
 // part is [w_dot]x and its symmetric part S = w w^T - |w|² 1, and w x (I w) is linear in
@@ -91,9 +99,7 @@ struct BodyKinematics {
 // gives the residual's sum exactly, not the residual at a mean w.
 template <typename Scalar>
 ALOFT_COLD Vec3<Scalar> twice_torque_residual(const Mat3<Scalar>& inertia, const Mat3<Scalar>& k_sum) {
-  const Mat3<Scalar>& k = k_sum;
-  const Vec3<Scalar> twice_w_dot(k(2, 1) - k(1, 2), k(0, 2) - k(2, 0), k(1, 0) - k(0, 1));
-  return integrated_body_torque(inertia, twice_w_dot, Mat3<Scalar>(k + k.transpose()));
+  return integrated_body_torque(inertia, twice_w_dot_sum(k_sum), Mat3<Scalar>(k_sum + k_sum.transpose()));
 }
 
 // The largest specific force at the centre of mass that still counts as free flight for

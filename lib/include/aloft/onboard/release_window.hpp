@@ -362,9 +362,7 @@ class ReleaseWindow {
     const Scalar samples = static_cast<Scalar>(b.samples);
     const Mat3<Scalar>& k = b.k_sum;
     const Scalar w_sq = Scalar(-0.5) * k.trace() / samples;
-    const Scalar w_dot_sq =
-        Vec3<Scalar>(k(2, 1) - k(1, 2), k(0, 2) - k(2, 0), k(1, 0) - k(0, 1)).squaredNorm() /
-        (Scalar(4) * samples * samples);
+    const Scalar w_dot_sq = twice_w_dot_sum(k).squaredNorm() / (Scalar(4) * samples * samples);
     const auto age_us =
         static_cast<std::int32_t>(level.middle_low_us - b.start_low_us - settings_.block_us / 2u);
     const Scalar drift = drift_per_s * Scalar(1e-6) * static_cast<Scalar>(age_us < 0 ? -age_us : age_us);
