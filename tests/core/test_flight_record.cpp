@@ -76,7 +76,7 @@ ALOFT_TEST_CASE("crc32: the standard check value, chaining, and the empty input"
 ALOFT_TEST_CASE("flight record: every field at its offset, little-endian", "[records]") {
   std::uint8_t b[aloft::flight_record_size];
   aloft::encode_flight_record(sample_record(), b);
-  const std::uint8_t head[16] = {0x41, 0x4C, 0x46, 0x52, 3, 0, 128, 0, 4, 3, 2, 1, 7, 0, 0, 0};
+  const std::uint8_t head[16] = {0x41, 0x4C, 0x46, 0x52, 4, 0, 128, 0, 4, 3, 2, 1, 7, 0, 0, 0};
   ALOFT_CHECK(aloft::bytes_equal(b, head, 16));
   const std::uint8_t release[8] = {0x88, 0x77, 0x66, 0x55, 0x44, 0x33, 0x22, 0x11};
   ALOFT_CHECK(aloft::bytes_equal(b + 16, release, 8));
@@ -111,12 +111,23 @@ ALOFT_TEST_CASE("flight record: decoded as written; torn, corrupt, foreign and o
   aloft::encode_flight_record(back, again);
   ALOFT_CHECK(aloft::bytes_equal(b, again, aloft::flight_record_size));
   ALOFT_CHECK(back.release_us == 0x1122334455667788ull);
-  ALOFT_CHECK(back.version == 3u);
+  ALOFT_CHECK(back.version == 4u);
   ALOFT_CHECK((back.tensor.determined && back.tensor.absolute && back.tensor.note == 0u));
   ALOFT_CHECK(same_bits(back.tensor.principal[1], 0.002f));
   ALOFT_CHECK(same_bits(back.tensor.axes_95_rad[1], 1.5f));
   ALOFT_CHECK(same_bits(back.tensor.principal_95[0], 0.0078125f));
   ALOFT_CHECK(back.seeds_stored == 0u);
+
+  // Version 3, written before the settings hash's list lost a setting, has this layout:
+  // it reads, tensor and all, and says it is version 3.
+  std::uint8_t v3[aloft::flight_record_size];
+  for (std::uint32_t i = 0; i < aloft::flight_record_size; ++i) v3[i] = b[i];
+  aloft::le::put_u16(v3 + 4, 3);
+  aloft::le::put_u32(v3 + aloft::flight_record_crc_offset, aloft::crc32(v3, aloft::flight_record_crc_offset));
+  FlightRecord old;
+  ALOFT_REQUIRE(aloft::decode_flight_record(v3, old) == SlotState::valid);
+  ALOFT_CHECK(old.version == 3u);
+  ALOFT_CHECK(same_bits(old.tensor.principal[1], 0.002f));
 
   std::uint8_t s[aloft::flight_record_size];
   const auto state_with = [&](std::uint32_t offset, std::uint8_t value) {
@@ -128,7 +139,7 @@ ALOFT_TEST_CASE("flight record: decoded as written; torn, corrupt, foreign and o
   ALOFT_CHECK(state_with(60, static_cast<std::uint8_t>(b[60] ^ 0x10)) == SlotState::crc_mismatch);
   ALOFT_CHECK(state_with(116, static_cast<std::uint8_t>(b[116] ^ 1)) == SlotState::crc_mismatch);
   ALOFT_CHECK(state_with(123, 0xFF) == SlotState::not_committed);
-  ALOFT_CHECK(state_with(4, 4) == SlotState::unknown_version);
+  ALOFT_CHECK(state_with(4, 5) == SlotState::unknown_version);
   ALOFT_CHECK(state_with(4, 0) == SlotState::unknown_version);
   ALOFT_CHECK(state_with(6, 64) == SlotState::unknown_version);
   ALOFT_CHECK(state_with(0, 0x42) == SlotState::no_magic);

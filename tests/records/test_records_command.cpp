@@ -200,12 +200,12 @@ TEST_CASE("aloft records refuses random bytes, an empty file, another version, i
   CHECK_ONE_LINE_ERROR(aloft::host::read_record_dump(noise_path + ".missing"), "cannot be opened");
   CHECK_ONE_LINE_ERROR(aloft::host::read_record_dump(program_scratch().path("")), "a folder");
 
-  std::string v4 = good_dump_bytes();
-  for (int slot = 0; slot < 5; ++slot) v4[slot * 128 + 4] = 4;
-  const std::string v4_path = write_dump("v4.bin", v4);
-  CHECK_ONE_LINE_ERROR(aloft::host::read_record_dump(v4_path), v4_path, "record version 4 at offset 0",
-                       "versions 1 to 3");
-  for (const std::string& p : {noise_path, empty_path, v4_path}) {
+  std::string v5 = good_dump_bytes();
+  for (int slot = 0; slot < 5; ++slot) v5[slot * 128 + 4] = 5;
+  const std::string v5_path = write_dump("v5.bin", v5);
+  CHECK_ONE_LINE_ERROR(aloft::host::read_record_dump(v5_path), v5_path, "record version 5 at offset 0",
+                       "versions 1 to 4");
+  for (const std::string& p : {noise_path, empty_path, v5_path}) {
     const auto r = run_aloft("records '" + p + "'");
     CHECK(r.exit_code == 2);
     CHECK(aloft::test::count_lines(r.err) == 1);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 
 #include "aloft/cold_path.hpp"
 #include "aloft/dynamics/free_flight_residual.hpp"
@@ -29,10 +30,27 @@ struct SymmetricMat3 {
     zz += o.zz;
     return *this;
   }
+  void scale(Scalar f) {
+    xx *= f;
+    xy *= f;
+    xz *= f;
+    yy *= f;
+    yz *= f;
+    zz *= f;
+  }
   // Entry (i, j), i <= j.
   Scalar& upper(int i, int j) {
     Scalar* const rows[3][3] = {{&xx, &xy, &xz}, {&xy, &yy, &yz}, {&xz, &yz, &zz}};
     return *rows[i][j];
+  }
+  // trace((this + d I)^-1), from the adjugate's diagonal and the determinant; infinite
+  // where the matrix is singular (or, by rounding, not positive definite).
+  Scalar trace_of_inverse(Scalar d) const {
+    const Scalar a = xx + d, b = yy + d, c = zz + d;
+    const Scalar cofactor_x = b * c - yz * yz, cofactor_y = a * c - xz * xz, cofactor_z = a * b - xy * xy;
+    const Scalar det = a * cofactor_x - xy * (xy * c - yz * xz) + xz * (xy * yz - b * xz);
+    return det > Scalar(0) ? (cofactor_x + cofactor_y + cofactor_z) / det
+                           : std::numeric_limits<Scalar>::infinity();
   }
   Mat3<Scalar> full() const {
     Mat3<Scalar> m;
@@ -64,13 +82,10 @@ class LeverArmFit {
  public:
   void add(const BodyKinematics<Scalar>& k) { add(LeverArmTerms<Scalar>(k)); }
   ALOFT_OUT_OF_LINE void add(const LeverArmTerms<Scalar>& t) { accumulate(t); }
-  // One sample's terms into two fits (a flight's and its half's), in line: the terms stay
-  // in registers, not stored and read back once per fit (about 35 instructions per
-  // sample on a Cortex-M4F). The same sums to the bit as two add() calls.
-  static void add_to_both(LeverArmFit& a, LeverArmFit& b, const LeverArmTerms<Scalar>& t) {
-    a.accumulate(t);
-    b.accumulate(t);
-  }
+  // The same, in line: the terms stay in registers rather than stored for a call (a
+  // flight's fit takes every airborne sample; out of line, the STM32F405 image's deepest
+  // stack path grew by 8 B and each sample took 25 instructions more, for 88 B less flash).
+  void add_in_line(const LeverArmTerms<Scalar>& t) { accumulate(t); }
   // n samples summarised by their mean K and mean a (a block mean: what varies within
   // the block, as a structural mode does, is left out).
   // Written out rather than as Eigen products, whose temporaries made this the deepest
@@ -108,6 +123,25 @@ class LeverArmFit {
     if (count_ == 0) return Scalar(0);
     const Scalar sse = ata_ - Scalar(2) * r.dot(kta_) + r.dot(ktk_.full() * r);
     return std::sqrt((sse > Scalar(0) ? sse : Scalar(0)) / static_cast<Scalar>(count_));
+  }
+
+  // A bound on how far r (this fit's, at the ridge) can lie from the true one, from the
+  // smallest eigenvalue mu of the mean ridged K^T K (M = K^T K / n + ridge² I):
+  //  - a misfit as large as the fit's rms residual at r, laid along the direction K sees
+  //    worst, moves r by rms / sqrt(mu): a flight that turns little about one axis sees r's
+  //    part along it weakly, and a hand's last touch or a ringing body moves that part;
+  //  - the ridge pulls r's part along that direction towards zero by ridge² / mu of it, at
+  //    most ridge² / mu * max_r_m.
+  // mu is bounded below through trace(M^-1) >= 1 / mu (so the bound is at most sqrt 3 and
+  // 3 times the exact terms).
+  ALOFT_COLD Scalar worst_error_m(const Vec3<Scalar>& r, Scalar ridge_rad_s2, Scalar max_r_m) const {
+    if (count_ == 0) return std::numeric_limits<Scalar>::infinity();
+    // Per sample: the sums of a long flight would overflow a float's determinant.
+    SymmetricMat3<Scalar> mean = ktk_;
+    mean.scale(Scalar(1) / static_cast<Scalar>(count_));
+    const Scalar ridge2 = ridge_rad_s2 * ridge_rad_s2;
+    const Scalar inverse_mu = mean.trace_of_inverse(ridge2);
+    return rms_residual(r) * std::sqrt(inverse_mu) + ridge2 * inverse_mu * max_r_m;
   }
 
   std::uint32_t count() const { return count_; }

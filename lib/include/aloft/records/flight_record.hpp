@@ -7,11 +7,13 @@
 // (aloft/records/settings_hash.hpp): version 2 walks the settings' one list with the build
 // constants; version 1, written before, hashed a shorter list. Version 3 keeps the flight's
 // own tensor estimate (aloft/onboard/tensor_estimate.hpp) where versions 1 and 2 kept the
-// first seeds' figures, and hashes the settings' list with the tensor estimate's. All three
-// are read, and a record says which it is. Layout:
+// first seeds' figures, and hashes the settings' list with the tensor estimate's. Version 4
+// keeps version 3's layout and hashes the list without `lever_arm.half_block_samples` (the
+// lever arm's trust test no longer splits a flight's fit in halves). All four are read, and
+// a record says which it is. Layout:
 //   offset size field
 //        0    4 magic "ALFR" (41 4C 46 52)
-//        4    2 version (3; 1 or 2 for records written before)
+//        4    2 version (4; 1 to 3 for records written before)
 //        6    2 record size in bytes (128)
 //        8    4 sequence number: 1, 2, ... over the life of the ring, across wraps
 //       12    4 flight number within its recording (FlightResult::flight_number)
@@ -20,7 +22,7 @@
 //       32    4 airborne samples fed to the check
 //       36    4 gaps while airborne
 //       40    4 clipped samples while airborne
-//       44    4 flags: bit 0 landed, bit 1 turned, bit 2 IMU position estimated; version 3:
+//       44    4 flags: bit 0 landed, bit 1 turned, bit 2 IMU position estimated; versions 3, 4:
 //                bit 3 tensor determined, bit 4 absolute moments, bits 5-7 its note
 //                (TensorEstimateNote)
 //       48    4 comparisons behind the overall statistics
@@ -32,7 +34,7 @@
 //       68    4 seeds stored below (0 to 4)
 //       72   32 the first 4 seeds: RMS deviation angle (rad), RMS relative error; 4+4 each
 //      112    4 reserved, 0
-//   version 3, the tensor estimate:
+//   versions 3 and 4, the tensor estimate:
 //       68   12 principal moments, ascending: kg·m² when absolute, else I1/I3, I2/I3, 1
 //       80   12 principal axes: x, y, z of the quaternion (w >= 0, the rest of a unit one)
 //       92    4 bf16: 95 % half-widths of I1/I3, I2/I3
@@ -62,7 +64,7 @@ constexpr std::uint32_t flight_record_size = 128;
 constexpr std::uint32_t flight_record_body_size = 120;  // programmed first: bytes 0..119
 constexpr std::uint32_t flight_record_crc_offset = 116;
 constexpr std::uint32_t flight_record_commit_offset = 120;
-constexpr std::uint16_t flight_record_version = 3;         // the version written
+constexpr std::uint16_t flight_record_version = 4;         // the version written
 constexpr std::uint16_t flight_record_oldest_version = 1;  // the oldest one read
 constexpr std::uint32_t flight_record_seeds = 4;
 constexpr std::uint8_t flight_record_magic[4] = {0x41, 0x4C, 0x46, 0x52};   // "ALFR"
