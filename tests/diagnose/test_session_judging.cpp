@@ -177,7 +177,7 @@ TEST_CASE("between-flight scatter: flights that share one value read about 1, fl
     CHECK(scatter->median_own_shrink == Approx(0.44));
     CHECK(scatter->chi_square_per_dof == Approx(0.735 * scale * scale));
     Analysis pooled = pooled_verdict(Effect::gyro_scale, 0.35);
-    note_between_flight_scatter(pooled, pointers);
+    note_between_flight_scatter(pooled, pointers, {});
     CHECK(pooled.notes.size() == (scale > 1.0 ? 1u : 0u));
   }
 }

@@ -7,6 +7,7 @@
 
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/printf_text.hpp"
+#include "diagnose/4_judge/tensor_intervals.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -74,18 +75,20 @@ std::optional<BetweenFlightScatter> scatter_of(Effect effect, std::vector<Eigen:
   return out;
 }
 
-}  // namespace
-
-std::optional<BetweenFlightScatter> between_flight_scatter(Effect effect,
-                                                           const std::vector<const Analysis*>& flights) {
+// The flights' own fits of `effect`, each covariance widened by its flight's noise
+// correlation and by `serial_of(j, candidate)`.
+template <typename SerialFactor>
+std::optional<BetweenFlightScatter> own_fits_scatter(Effect effect, const std::vector<const Analysis*>& own,
+                                                     SerialFactor serial_of) {
   std::vector<Eigen::VectorXd> theta;
   std::vector<Eigen::MatrixXd> covariance;
   std::vector<double> shrinks;
-  for (const Analysis* a : flights) {
+  for (std::size_t j = 0; j < own.size(); ++j) {
+    const Analysis* a = own[j];
     const Candidate* c = a ? own_candidate(*a, effect) : nullptr;
     if (!c || c->fit.theta_covariance.rows() != c->fit.theta.size() || c->fit.theta.size() == 0) continue;
     theta.push_back(c->fit.theta);
-    covariance.push_back(c->fit.theta_covariance * a->where.noise_correlation);
+    covariance.push_back(c->fit.theta_covariance * a->where.noise_correlation * serial_of(j, *c));
     shrinks.push_back(c->shrink);
   }
   std::optional<BetweenFlightScatter> out = scatter_of(effect, theta, covariance);
@@ -94,6 +97,20 @@ std::optional<BetweenFlightScatter> between_flight_scatter(Effect effect,
   std::nth_element(shrinks.begin(), shrinks.begin() + static_cast<std::ptrdiff_t>(n / 2), shrinks.end());
   out->median_own_shrink = shrinks[n / 2];
   return out;
+}
+
+}  // namespace
+
+std::optional<BetweenFlightScatter> between_flight_scatter(Effect effect,
+                                                           const std::vector<const Analysis*>& flights) {
+  return own_fits_scatter(effect, flights, [](std::size_t, const Candidate&) { return 1.0; });
+}
+
+std::optional<BetweenFlightScatter> between_flight_scatter_serial(Effect effect,
+                                                                  const std::vector<const Analysis*>& own,
+                                                                  const std::vector<const Flight*>& flights) {
+  return own_fits_scatter(
+      effect, own, [&](std::size_t j, const Candidate& c) { return serial_inflation(c, {flights.at(j)}); });
 }
 
 std::optional<BetweenFlightScatter> between_flight_scatter(const Candidate& candidate,
@@ -112,7 +129,19 @@ std::optional<BetweenFlightScatter> between_flight_scatter(const Candidate& cand
   return scatter_of(candidate.effect, theta, covariance);
 }
 
-std::string between_flight_scatter_note(const BetweenFlightScatter& s, double pooled_shrink) {
+std::string between_flight_scatter_note(const BetweenFlightScatter& s, double pooled_shrink,
+                                        const std::optional<BetweenFlightScatter>& serial) {
+  std::string allowing;
+  if (serial) {
+    allowing = printf_text(
+                   "; allowing for each flight's serially correlated misfit (AR(1) of its own held-out "
+                   "residuals, as the tensor report widens its intervals) they scatter %.3g x, ",
+                   serial->chi_square_per_dof) +
+               (serial->chi_square_per_dof <= kFlightsDisagree
+                    ? "so the flights agree on it and what the shared model misses is a misfit of each "
+                      "flight's own"
+                    : "so the flights truly disagree on it");
+  }
   return printf_text("the pooled model shrinks the held-out gap by %.0f %%, its flights' own fits of ",
                      100.0 * pooled_shrink) +
          effect_name(s.effect) +
@@ -122,10 +151,12 @@ std::string between_flight_scatter_note(const BetweenFlightScatter& s, double po
              100.0 * s.median_own_shrink, static_cast<double>(s.flights), s.chi_square_per_dof) +
          " (chi-square per degree of freedom between flights; 1 if they shared one value), and a model "
          "shared "
-         "by every flight, judged on the flight it left out, cannot follow each";
+         "by every flight, judged on the flight it left out, cannot follow each" +
+         allowing;
 }
 
-void note_between_flight_scatter(Analysis& pooled, const std::vector<const Analysis*>& own) {
+void note_between_flight_scatter(Analysis& pooled, const std::vector<const Analysis*>& own,
+                                 const std::vector<const Flight*>& flights) {
   const Verdict& v = pooled.verdict;
   if (v.effect == Effect::none || !(v.heldout_rms_rel_err_before > 0.0)) return;
   const std::optional<BetweenFlightScatter> scatter = between_flight_scatter(v.effect, own);
@@ -135,7 +166,9 @@ void note_between_flight_scatter(Analysis& pooled, const std::vector<const Analy
       scatter->chi_square_per_dof <= kFlightsDisagree) {
     return;
   }
-  pooled.notes.push_back(between_flight_scatter_note(*scatter, pooled_shrink));
+  const std::optional<BetweenFlightScatter> serial =
+      flights.size() == own.size() ? between_flight_scatter_serial(v.effect, own, flights) : std::nullopt;
+  pooled.notes.push_back(between_flight_scatter_note(*scatter, pooled_shrink, serial));
 }
 
 }  // namespace aloft::host::diagnose

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "diagnose/1_input/flight.hpp"
 #include "diagnose/4_judge/analysis.hpp"
 
 namespace aloft::host::diagnose {
@@ -30,14 +31,26 @@ struct BetweenFlightScatter {
 std::optional<BetweenFlightScatter> between_flight_scatter(Effect effect,
                                                            const std::vector<const Analysis*>& flights);
 
+// The same with each flight's covariance widened again by the AR(1) factor of its own
+// held-out residuals' lag-1 correlation (serial_inflation, as the tensor report widens its
+// intervals): where the model misses each flight by a slow motion of its own, its residuals
+// are not independent and the plain comparison counts their evidence many times over.
+// `flights[j]`: the flight `own[j]` analysed.
+std::optional<BetweenFlightScatter> between_flight_scatter_serial(Effect effect,
+                                                                  const std::vector<const Analysis*>& own,
+                                                                  const std::vector<const Flight*>& flights);
+
 // The same for a session's candidate (`flights`: each flight's own analysis, in the pooled
 // order): added to a base, on the flights' own fits of that base and the effect together
 // (Candidate::flights_own_fits; median_own_shrink then 0, unmeasured); alone, as above.
 std::optional<BetweenFlightScatter> between_flight_scatter(const Candidate& candidate,
                                                            const std::vector<const Analysis*>& flights);
 
-// The report's note: the pooled shrink beside the flights' own and their scatter.
-std::string between_flight_scatter_note(const BetweenFlightScatter& scatter, double pooled_shrink);
+// The report's note: the pooled shrink beside the flights' own and their scatter, and,
+// where measured (`serial`), their scatter allowing for each flight's serially correlated
+// misfit: at most kFlightsDisagree, the flights do not truly disagree on the effect.
+std::string between_flight_scatter_note(const BetweenFlightScatter& scatter, double pooled_shrink,
+                                        const std::optional<BetweenFlightScatter>& serial = std::nullopt);
 
 // The flights disagree beyond their noise when their scatter's chi-square per degree of
 // freedom exceeds this: for flights that share one value it is 1 with a spread of
@@ -54,7 +67,9 @@ constexpr double kPooledFallsShort = 0.9;
 
 // Adds the note to `pooled` when its verdict names an effect whose pooled shrink falls
 // short of the flights' own and the flights disagree (kFlightsDisagree): the reason a
-// shared model cannot shrink the gap further. `own[j]`: flight j's own analysis.
-void note_between_flight_scatter(Analysis& pooled, const std::vector<const Analysis*>& own);
+// shared model cannot shrink the gap further. `own[j]`: flight j's own analysis, of
+// `flights[j]` (empty: the serial correlation's figure is left out).
+void note_between_flight_scatter(Analysis& pooled, const std::vector<const Analysis*>& own,
+                                 const std::vector<const Flight*>& flights);
 
 }  // namespace aloft::host::diagnose

@@ -161,7 +161,7 @@ SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const Nomi
   for (const Flight* f : pool.judged.flights) ends.push_back(f->end_s() - f->start_s());
   set_spin_up_end(analysis, ends);
   note_disagreeing_flights(analysis, pool.judged.flights, pool.own);
-  note_between_flight_scatter(analysis, pool.own);
+  note_between_flight_scatter(analysis, pool.own, pool.judged.flights);
   add_flip_periods(session, pool, none_all, flights, nominal);
   // Onsets relative to each flight's start: the flights' clocks need not be one.
   std::vector<double> onsets;
