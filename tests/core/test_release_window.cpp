@@ -112,21 +112,26 @@ ALOFT_TEST_CASE("release window: a push that never ends withdraws the proposal",
 
 namespace {
 
-// A finger that touches again after the release at sample 200: 3.5 m/s² along y from
-// sample 250 to 290 (10 ms); free flight before and after.
-V3 finger_push(std::uint32_t i) { return i >= 250 && i < 290 ? V3(0, 3.5f, 0) : V3::Zero(); }
+// A finger that touches again after the release at sample 200: 3.5 m/s² along `along`
+// from sample `from` to `to` (by default along y, 250 to 290, 10 ms); free flight before
+// and after.
+struct Finger {
+  std::uint32_t from = 250, to = 290;
+  V3 along = V3(0, 1, 0);
+  V3 push(std::uint32_t i) const { return i >= from && i < to ? V3(along * 3.5f) : V3::Zero(); }
+};
 
 // Feeds samples to `to` (free flight from sample 200, with the finger's push on it when
 // `finger`) and dates the release at `release` (a later look when `later_look`) once the
 // window has seen enough.
 aloft::WindowedRelease<float> date_release(Window& w, std::uint32_t to, std::uint32_t release,
-                                           bool later_look, bool finger) {
+                                           bool later_look, bool finger, const Finger& f = Finger{}) {
   const aloft::LeverArmBall<float> ball = given_r();
   aloft::WindowedRelease<float> verdict;
   for (std::uint32_t i = 0; i < to && !verdict.decided; ++i) {
     const float push = i < 200 ? 15.0f * static_cast<float>(200 - i) / 80.0f : 0.0f;  // the hand's fade
     const V3 hand = V3(0, 1, 0) * push;
-    w.add(i, stamp(i), kinematics(finger ? hand + finger_push(i) : hand), true);
+    w.add(i, stamp(i), kinematics(finger ? hand + f.push(i) : hand), true);
     if (i >= release) verdict = w.date(release, stamp(release), ball, later_look);
   }
   return verdict;
@@ -155,6 +160,31 @@ ALOFT_TEST_CASE(
   ALOFT_CHECK(l.index >= 290u);
   ALOFT_CHECK(l.index <= 310u);
   ALOFT_CHECK(l.release_us > v.release_us);
+}
+
+ALOFT_TEST_CASE(
+    "release window: a push through all the fit blocks is no flight's level: unsettled, a later look dates "
+    "past it",
+    "[release_window]") {
+  // The finger pushes from sample 230 to 330 (25 ms), along the spin axis (where no lever
+  // arm within the given r's 10 mm takes it up, as none does a push fixed in the world on a
+  // turning body): the first look's fit blocks (240-300) lie at its level, 3.5 m/s² from
+  // zero where a free block's limit is 0.8 + 0.02 |K r| (|K r| about 25 m/s²: 1.3 m/s²),
+  // and the blocks from 240 on look free against it.
+  const Finger long_finger{230, 330, V3(1.0f, -0.5f, 25.0f).normalized()};
+  Window first{default_settings};
+  const aloft::WindowedRelease<float> v = date_release(first, 800, 200, false, true, long_finger);
+  ALOFT_CHECK(v.decided);
+  ALOFT_CHECK(v.free);
+  ALOFT_CHECK(v.index < 330u);
+  ALOFT_CHECK(!v.settled);
+  // The later look fits the flight past the push, and dates the release after it.
+  Window later{default_settings};
+  const aloft::WindowedRelease<float> l = date_release(later, 900, v.index, true, true, long_finger);
+  ALOFT_CHECK(l.decided);
+  ALOFT_CHECK(l.settled);
+  ALOFT_CHECK(l.index >= 330u);
+  ALOFT_CHECK(l.index <= 350u);
 }
 
 ALOFT_TEST_CASE("release window: free flight leaves the fit settled", "[release_window]") {
