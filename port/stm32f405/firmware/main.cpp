@@ -198,7 +198,7 @@ int run() {
   out.text("stream_samples ").integer(pipeline->stream().samples).line();
   out.text("stream_gaps ").integer(pipeline->stream().gaps).line();
   write_records();
-  out.text("stream ended: no sample for ").integer(static_cast<std::int64_t>(stream_end_after_us / 1000u));
+  out.text("stream ended: idle ").integer(static_cast<std::int64_t>(stream_end_after_us / 1000u));
   out.text(" ms after ").integer(pipeline->stream().samples).text(" samples").line();
   return exit_stream_ended;
 }
