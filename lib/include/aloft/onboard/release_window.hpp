@@ -309,10 +309,15 @@ class ReleaseWindow {
       samples += static_cast<Scalar>(b.samples);
     }
     const Vec3<Scalar> level = sum / samples;
-    const Scalar limit =
-        settings_.block_limit_floor_m_s2 + settings_.block_limit_relative * k_r_sum / samples;
+    const Scalar limit = free_limit(k_r_sum / samples);
     a_push = level.squaredNorm() > limit * limit;
     return level;
+  }
+
+  // How far a free block's mean residual may lie from the level (m/s²), for a mean |K r| of
+  // `mean_k_r_m_s2`: the floor plus the relative part.
+  Scalar free_limit(Scalar mean_k_r_m_s2) const {
+    return settings_.block_limit_floor_m_s2 + settings_.block_limit_relative * mean_k_r_m_s2;
   }
 
   // A free block's mean residual's squared distance from the level (m²/s⁴); -1 for a block
@@ -322,8 +327,7 @@ class ReleaseWindow {
     if (2u * b.torque_samples > b.samples) return Scalar(-1);
     const Vec3<Scalar> k_r = b.k_sum * r;
     const Scalar samples = static_cast<Scalar>(b.samples);
-    const Scalar limit =
-        settings_.block_limit_floor_m_s2 + settings_.block_limit_relative * (k_r.norm() / samples);
+    const Scalar limit = free_limit(k_r.norm() / samples);
     const Scalar excess_sq = ((b.a_sum - k_r) / samples - level).squaredNorm();
     return excess_sq <= limit * limit ? excess_sq : Scalar(-1);
   }
