@@ -187,6 +187,30 @@ ALOFT_TEST_CASE(
   ALOFT_CHECK(l.index <= 350u);
 }
 
+ALOFT_TEST_CASE(
+    "release window: a push through the block that holds the proposal dates the release past it; a let-go "
+    "that ended before the proposal keeps it",
+    "[release_window]") {
+  // Proposed at 230, halfway into the block 220-240; a finger pushes from 205 to 236. That
+  // block's mean (2.8 m/s²) lies above what the block before (2.6 m/s²) could leave before
+  // the proposal plus a free stretch after it (0.5 x 2.6 + 0.5 x 0.8): the push went on
+  // past the proposal, and the release moves past its end (236), into the next block.
+  Window pushed{default_settings};
+  const aloft::WindowedRelease<float> v = date_release(pushed, 800, 230, false, true, Finger{205, 236});
+  ALOFT_CHECK(v.decided);
+  ALOFT_CHECK(v.free);
+  ALOFT_CHECK(v.index >= 236u);
+  ALOFT_CHECK(v.index <= 245u);
+  ALOFT_CHECK(v.release_us == stamp(v.index));
+  // The hand's push (60 m/s² scale) fades to zero at sample 210, the release proposed at
+  // 212: the block 200-220 is not free (mean 2.1 m/s²), but a falling push before the
+  // proposal accounts for it (at most 0.6 of the block before's 15 m/s²).
+  Window let_go{default_settings};
+  const aloft::WindowedRelease<float> kept = feed(let_go, 800, 210, 60.0f, 0.0f, 212);
+  ALOFT_CHECK(kept.free);
+  ALOFT_CHECK(kept.index == 212u);
+}
+
 ALOFT_TEST_CASE("release window: free flight leaves the fit settled", "[release_window]") {
   Window w{default_settings};
   const aloft::WindowedRelease<float> v = feed(w, 600, 200, 15.0f, 0.0f, 205);

@@ -24,8 +24,9 @@
 // window's lies more than one block after it, or more than two blocks before it (a proposal
 // held back by ringing; closer than that, the block grid is no better than the proposal),
 // or the block before the run is not free and starts at or after the proposal (a finger
-// that touched again: the release is then dated past the push's tail, tail_samples), and
-// at rates where a block holds fewer than `min_block_samples` samples.
+// that touched again), or holds the proposal and a push that went on past it (pushes_past);
+// and at rates where a block holds fewer than `min_block_samples` samples. A release moved
+// to a run after a block that is not free is dated past that push's tail (tail_samples).
 // A push can hide in the fit itself: a finger that touches again while the newest blocks are
 // fitted lifts the flight's level with it, and the blocks before it then look free. Such a
 // fit leaves its own blocks apart (a block farther than the floor of a free block from the
@@ -207,14 +208,16 @@ class ReleaseWindow {
     // may start before it (a later look under a window_us above the default's, for which the
     // ring is sized, or a recording's first 60 ms).
     const bool later = after_us > block_us && run + 1u < count_;
-    const bool moved =
-        (later || after_us < -2 * block_us || pushed_after) && first.samples >= settings_.min_block_samples;
+    const bool pushed_through = !pushed_after && after_us > 0 && run + 2u < count_ &&
+                                pushes_past(proposed_low, closed(run), closed(run + 1u), first, r, level);
+    const bool moved = (later || after_us < -2 * block_us || pushed_after || pushed_through) &&
+                       first.samples >= settings_.min_block_samples;
     if (!moved) {
       out.index = proposed_index;
       out.release_us = proposed_us;
       return out;
     }
-    const std::uint32_t tail = pushed_after ? tail_samples(closed(run), run - 1u, r, level) : 0u;
+    const std::uint32_t tail = run + 1u < count_ ? tail_samples(closed(run), run - 1u, r, level) : 0u;
     const std::uint32_t next_low = run >= 2u ? closed(run - 2u).start_low_us : end_low;
     out.index = first.first_index + tail;
     out.release_us = static_cast<std::uint64_t>(static_cast<std::int64_t>(proposed_us) + after_us) +
@@ -258,13 +261,24 @@ class ReleaseWindow {
                                         const Vec3<Scalar>& level) const {
     constexpr Scalar fall_over_mean = Scalar(2);
     const Block& first = closed(first_n);
-    const Scalar push = (mean_residual(pushed, r) - level).norm();
-    const Scalar excess = (mean_residual(first, r) - level).norm();
+    const Scalar push = excess(pushed, r, level);
+    const Scalar first_excess = excess(first, r, level);
     const Scalar most = static_cast<Scalar>(first.samples - 1u);
-    Scalar samples = fall_over_mean * static_cast<Scalar>(first.samples) * excess / push;
+    Scalar samples = fall_over_mean * static_cast<Scalar>(first.samples) * first_excess / push;
     if (!(samples <= most)) samples = most;  // and a push of zero (never: the block is not free)
     const auto whole = static_cast<std::uint32_t>(samples);
     return static_cast<Scalar>(whole) < samples ? whole + 1u : whole;  // rounded up
+  }
+
+  // Whether the push in the block holding the proposal reached past it. A let-go's force only
+  // falls: before the proposal it is no more than the block before's mean, and after it a
+  // free stretch lies within a free block's floor; a mean above both shares pushed past it.
+  ALOFT_COLD bool pushes_past(std::uint32_t proposed_low, const Block& holding, const Block& before,
+                              const Block& next, const Vec3<Scalar>& r, const Vec3<Scalar>& level) const {
+    const Scalar share = static_cast<Scalar>(proposed_low - holding.start_low_us) /
+                         static_cast<Scalar>(next.start_low_us - holding.start_low_us);
+    return excess(holding, r, level) >
+           share * excess(before, r, level) + (Scalar(1) - share) * settings_.block_limit_floor_m_s2;
   }
 
   // The n-th newest closed block (0: the newest; the open block is not yet closed). Out of
@@ -273,10 +287,10 @@ class ReleaseWindow {
     return blocks_[(newest_ - 1u - n) % ring_blocks];
   }
 
-  // The mean residual vector of a block for lever arm r. Out of line: on the STM32F405, 32 B
-  // of flash less than inlined into tail_samples twice (a cold path).
-  ALOFT_OUT_OF_LINE static Vec3<Scalar> mean_residual(const Block& b, const Vec3<Scalar>& r) {
-    return (b.a_sum - b.k_sum * r) / static_cast<Scalar>(b.samples);
+  // How far a block's mean residual vector for lever arm r lies from the level (m/s²). Out of
+  // line: on the STM32F405, less flash than inlined into its cold callers.
+  ALOFT_OUT_OF_LINE static Scalar excess(const Block& b, const Vec3<Scalar>& r, const Vec3<Scalar>& level) {
+    return ((b.a_sum - b.k_sum * r) / static_cast<Scalar>(b.samples) - level).norm();
   }
 
   ALOFT_COLD Vec3<Scalar> window_r(const LeverArmBall<Scalar>& ball) const {
