@@ -288,7 +288,7 @@ class ReleaseWindow {
   }
 
   // How far a block's mean residual vector for lever arm r lies from the level (m/s²). Out of
-  // line: on the STM32F405, less flash than inlined into its cold callers.
+  // line: one copy for its four calls (tail_samples, pushes_past), cold paths.
   ALOFT_OUT_OF_LINE static Scalar excess(const Block& b, const Vec3<Scalar>& r, const Vec3<Scalar>& level) {
     return ((b.a_sum - b.k_sum * r) / static_cast<Scalar>(b.samples) - level).norm();
   }
