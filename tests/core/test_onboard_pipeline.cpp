@@ -4,6 +4,7 @@
 #include "aloft/onboard/onboard_pipeline.hpp"
 #include "test_api.hpp"
 
+#include <cmath>
 #include <limits>
 
 namespace {
@@ -101,7 +102,46 @@ void gap_ends_flight() {
   ALOFT_CHECK(pipeline.stream().lost_us == 301000u);
 }
 
+// A slow spin whose IMU sits 30 mm further out than the given r: a flight that hardly turns
+// fixes r poorly (docs/onboard-pipeline.md, "The lever arm r"). The flight's own fit,
+// which takes over for the landing, is kept on the surface of the ball of
+// given_r_tolerance_m about the given r; with no r given it is the fit itself, farther out.
+template <typename S>
+void flight_r_kept_near_given(bool r_known) {
+  const Vec3<S> given(S(0.03), S(0), S(0));
+  const Vec3<S> truth(S(0.06), S(0), S(0));
+  const Vec3<S> spin(S(0), S(0), S(5));
+  aloft::OnboardPipelineSettings<S> settings;
+  settings.imu_position_known = r_known;
+  settings.imu_position_m = given;
+  aloft::OnboardPipeline<S, 8> pipeline(box<S>(), settings);
+  aloft::ImuSample<S> s;
+  for (int k = 0; k < 900; ++k) {
+    const bool flying = k >= 500;
+    s.t_us = 1000000u + static_cast<std::uint64_t>(k) * 1000u;
+    s.gyro_rad_s = flying ? spin : Vec3<S>::Zero();
+    s.accel_m_s2 = flying ? Vec3<S>(spin.cross(spin.cross(truth))) : Vec3<S>(S(0), S(0), S(9.81));
+    ALOFT_REQUIRE(pipeline.push(s) == Status::ok);
+  }
+  ALOFT_REQUIRE(pipeline.airborne());
+  const S off_m = (pipeline.flight_lever_arm() - given).norm();
+  const S within = settings.release.given_r_tolerance_m;
+  if (r_known) {
+    ALOFT_CHECK(std::abs(off_m - within) < S(1e-4));
+    ALOFT_CHECK(pipeline.flight_lever_arm().x() > given.x());  // towards the flight's fit
+  } else {
+    ALOFT_CHECK(off_m > S(1.5) * within);
+  }
+}
+
 }  // namespace
+
+ALOFT_TEST_CASE("pipeline: a flight's own r is kept within given_r_tolerance_m of a given r", "[pipeline]") {
+  flight_r_kept_near_given<double>(true);
+  flight_r_kept_near_given<double>(false);
+  flight_r_kept_near_given<float>(true);
+  flight_r_kept_near_given<float>(false);
+}
 
 ALOFT_TEST_CASE("pipeline: release and landing of a spinning off-centre IMU, r known or fitted",
                 "[pipeline]") {

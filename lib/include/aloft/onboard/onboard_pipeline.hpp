@@ -278,6 +278,8 @@ class OnboardPipeline {
   // The lever arm the recording's flights have given so far (valid when has_estimate()).
   bool has_imu_position_estimate() const { return lever_arm_.has_estimate(); }
   const Vec3<Scalar>& imu_position_estimate() const { return lever_arm_.estimate(); }
+  // The lever arm the open flight's landing is looked for with (while airborne()).
+  const Vec3<Scalar>& flight_lever_arm() const { return r_flight_; }
 
  private:
   // The detector's torque test: with rotor support, the rotor's known torque is part of the
