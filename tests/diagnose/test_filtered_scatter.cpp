@@ -28,29 +28,44 @@ using namespace aloft::host::diagnose;
 
 namespace {
 
+// The gyro's low-pass: none, a second-order Butterworth, or first-order PT1 stages as a
+// flight controller's firmware runs them (generator/gyro_filter.hpp): one, two at one
+// cutoff (Betaflight's PT2), or a second at twice the first's cutoff (Betaflight's default
+// pair of gyro low-passes).
+enum class Shape { none, pt1, butterworth, pt2, pt1_pair };
+
 struct GridPoint {
   double rate_hz;
-  int order;  // 0: no low-pass; 1: PT1; 2: Butterworth
+  Shape shape;
   double cutoff_hz;
 };
 
-// Flight-controller rates and a phone's, each with no low-pass and with both shapes at
-// the cutoffs that lie below 0.4 of the rate. `near_motion`: the PT1s at 20 Hz, printed
-// but not held to the bar. Their knee lies a few times above a tumble's frequencies: at
-// 1-8 kHz the PT1's phase distortion (a first-order low-pass is a delay plus (RC^2 / 2) w''
-// to second order, a Butterworth a delay alone) bends the readings beyond the noise, so a
-// flight's fit leaves a misfit the model does not know of; at 100 Hz the knee lies at the
-// motion band's edge, where the noise floor does not take a first-order shape
-// (noise_floor.cpp, fitted_low_pass).
-std::vector<GridPoint> grid(bool small, bool near_motion) {
-  if (small) return near_motion ? std::vector<GridPoint>{} : std::vector<GridPoint>{{1000.0, 1, 50.0}};
+bool first_order_stages(Shape shape) {
+  return shape == Shape::pt1 || shape == Shape::pt2 || shape == Shape::pt1_pair;
+}
+
+// Flight-controller rates and a phone's, each with no low-pass and with every shape at
+// the cutoffs that lie below 0.4 of the rate. `near_motion`: first-order stages at 20 Hz,
+// printed but not held to the bar. Their knee lies a few times above a tumble's
+// frequencies: at 1-8 kHz a first-order stage's phase distortion (a delay plus
+// (RC^2 / 2) w'' to second order, a Butterworth a delay alone) bends the readings beyond the
+// noise, so a flight's fit leaves a misfit the model does not know of; at 100 Hz the knee
+// lies at the motion band's edge, where the noise floor does not take a first-order shape
+// (noise_floor.cpp, fitted_low_pass). `shapes`: the PT1 and the Butterworth (the grid the
+// rule was set on), or the PT2 and the PT1 pair (added with the PT2's shape, a flight
+// controller's filters the noise floor was not tuned on).
+std::vector<GridPoint> grid(bool small, bool near_motion, bool pt1_stages_added) {
+  if (small)
+    return near_motion ? std::vector<GridPoint>{} : std::vector<GridPoint>{{1000.0, Shape::pt1, 50.0}};
+  const std::vector<Shape> shapes = pt1_stages_added ? std::vector<Shape>{Shape::pt2, Shape::pt1_pair}
+                                                     : std::vector<Shape>{Shape::pt1, Shape::butterworth};
   std::vector<GridPoint> out;
   for (double rate : {100.0, 1000.0, 4000.0, 8000.0}) {
-    if (!near_motion) out.push_back({rate, 0, 0.0});
-    for (int order : {1, 2}) {
+    if (!near_motion && !pt1_stages_added) out.push_back({rate, Shape::none, 0.0});
+    for (Shape shape : shapes) {
       for (double cutoff : {20.0, 50.0, 100.0, 400.0}) {
-        if (near_motion != (order == 1 && cutoff < 50.0)) continue;
-        if (cutoff < 0.4 * rate) out.push_back({rate, order, cutoff});
+        if (near_motion != (first_order_stages(shape) && cutoff < 50.0)) continue;
+        if (cutoff < 0.4 * rate) out.push_back({rate, shape, cutoff});
       }
     }
   }
@@ -66,6 +81,9 @@ std::uint64_t seed_base() {
 
 constexpr double kFlightControllerStep = 3.14159265358979323846 / 180.0 / 16.4;  // rad/s
 constexpr int kFlights = 5;
+// The scatter's spread for sessions of kFlights flights of a 3-parameter effect sharing one
+// value: sqrt(2 / dof).
+const double kExpectedSpread = std::sqrt(2.0 / ((kFlights - 1) * 3.0));
 
 struct SessionScatter {
   double scatter = 0.0;
@@ -86,7 +104,9 @@ SessionScatter session_scatter(const GridPoint& p, int index) {
     spec.body = body;
     spec.imu_rate_hz = p.rate_hz;
     spec.gyro_cutoff_hz = p.cutoff_hz;
-    spec.gyro_filter_order = p.order == 0 ? 2 : p.order;
+    spec.gyro_filter_order = first_order_stages(p.shape) ? 1 : 2;
+    spec.gyro_pt1_stages = p.shape == Shape::pt2 || p.shape == Shape::pt1_pair ? 2 : 1;
+    spec.gyro_later_stage_ratio = p.shape == Shape::pt1_pair ? 2.0 : 1.0;
     spec.gyro_quantum_rad_s = kFlightControllerStep;
     spec.throw_seed = seed + 7 + static_cast<std::uint64_t>(f);
     const auto g = aloft::generator::generate_flight(spec, seed);
@@ -116,45 +136,85 @@ std::string grid_line(const GridPoint& p, const SessionScatter& s) {
   char line[160];
   std::snprintf(line, sizeof line,
                 "%6.0f Hz, %s %4.0f Hz: scatter %6.2f  correlation %6.1f (filter's %6.1f)%s", p.rate_hz,
-                p.order == 0   ? "none"
-                : p.order == 1 ? "PT1 "
-                               : "BW2 ",
+                p.shape == Shape::none          ? "none    "
+                : p.shape == Shape::pt1         ? "PT1     "
+                : p.shape == Shape::butterworth ? "BW2     "
+                : p.shape == Shape::pt2         ? "PT2     "
+                                                : "PT1 pair",
                 p.cutoff_hz, s.scatter, s.correlation, s.true_correlation,
                 s.scatter > kFlightsDisagree ? "  DISAGREE" : "");
   return line;
 }
 
-void check_grid(bool small) {
+struct GridScatter {
+  double mean = 0.0, spread = 0.0;
+  int beyond = 0;                  // sessions beyond kFlightsDisagree
+  double worst_correlation = 1.0;  // the correlation's worst factor off the filter's
+};
+
+// The sessions of `points`, printed, their seeds from `index` on; then those of
+// `not_held`, printed beside them.
+GridScatter run_grid(const std::vector<GridPoint>& points, const std::vector<GridPoint>& not_held,
+                     int index) {
+  GridScatter out;
   std::vector<double> all;
-  int index = 0, beyond = 0;
-  for (const GridPoint& p : grid(small, false)) {
+  for (const GridPoint& p : points) {
     const SessionScatter s = session_scatter(p, index++);
     all.push_back(s.scatter);
-    beyond += s.scatter > kFlightsDisagree;
+    out.beyond += s.scatter > kFlightsDisagree;
+    const double ratio = s.correlation / s.true_correlation;
+    out.worst_correlation = std::max({out.worst_correlation, ratio, 1.0 / ratio});
     std::printf("%s\n", grid_line(p, s).c_str());
   }
-  double mean = 0.0, squares = 0.0;
-  for (double s : all) mean += s / static_cast<double>(all.size());
-  for (double s : all) squares += (s - mean) * (s - mean);
-  const double spread = std::sqrt(squares / std::max<double>(1.0, static_cast<double>(all.size()) - 1.0));
-  const double expected_spread = std::sqrt(2.0 / ((kFlights - 1) * 3.0));
+  double squares = 0.0;
+  for (double s : all) out.mean += s / static_cast<double>(all.size());
+  for (double s : all) squares += (s - out.mean) * (s - out.mean);
+  out.spread = std::sqrt(squares / std::max<double>(1.0, static_cast<double>(all.size()) - 1.0));
   std::printf(
-      "scatter over %zu sessions: mean %.2f, spread %.2f (for one shared value: 1 +- %.2f); %d beyond %.0f\n",
-      all.size(), mean, spread, expected_spread, beyond, kFlightsDisagree);
-  CHECK(beyond == 0);
-  for (const GridPoint& p : grid(small, true))
+      "scatter over %zu sessions: mean %.2f, spread %.2f (for one shared value: 1 +- %.2f); %d beyond %.0f; "
+      "correlation within x%.2f of the filter's\n",
+      all.size(), out.mean, out.spread, kExpectedSpread, out.beyond, kFlightsDisagree, out.worst_correlation);
+  for (const GridPoint& p : not_held)
     std::printf("not held to the bar: %s\n", grid_line(p, session_scatter(p, index++)).c_str());
+  return out;
+}
+
+void check_grid(bool small) {
+  const GridScatter g = run_grid(grid(small, false, false), grid(small, true, false), 0);
+  CHECK(g.beyond == 0);
   if (small) return;
   // The mean of N sessions lies within 3 standard errors of 1, and their spread within
   // a factor 1.5 of sqrt(2 / dof).
-  CHECK(std::abs(mean - 1.0) < 3.0 * expected_spread / std::sqrt(static_cast<double>(all.size())));
-  CHECK(spread < 1.5 * expected_spread);
+  const double sessions = static_cast<double>(grid(small, false, false).size());
+  CHECK(std::abs(g.mean - 1.0) < 3.0 * kExpectedSpread / std::sqrt(sessions));
+  CHECK(g.spread < 1.5 * kExpectedSpread);
 }
 
 }  // namespace
 
 TEST_CASE("flights sharing one rotor agree behind any common gyro filter", "[scatter][filtered]") {
   check_grid(false);
+}
+
+// Behind two first-order stages (Betaflight's PT2, its default pair of gyro low-passes) the
+// noise floor has no shape of its own: it takes a Butterworth's or a PT1's, and the
+// correlation comes out up to 2.4 times off either way (tuning seeds: scatter 1.54 +- 0.85,
+// none beyond 3; fresh: x2.5, 1.69 +- 1.26, one at 5.42). Hidden until the noise floor meets it
+// (the bar of the grid above: correlation within x1.25, no session beyond 3). Measured
+// with a PT2's shape added to the fit (the PT1's gain squared, its knee sought above the
+// motion band and only where the band above it spans a decade, so the 100 Hz racquet keeps
+// its reports): the correlation within x1.14, scatter 1.38 +- 0.48 and 1.39 +- 0.75 (the
+// stages' distortion of the motion, twice a PT1's (RC^2) w'' to second order, unmodelled),
+// but a Butterworth at 20-50 Hz above was then read as a PT2 in 2-4 of its sessions,
+// correlation up to x1.46 off, where it is x1.13 now: not landed.
+TEST_CASE(
+    "flights sharing one rotor behind a flight controller's PT2 or pair of PT1s: each counts its independent "
+    "samples",
+    "[.][scatter][pt1_stages]") {
+  // Seeds from index 100 on, so the grid above keeps its sessions.
+  const GridScatter g = run_grid(grid(false, false, true), grid(false, true, true), 100);
+  CHECK(g.beyond == 0);
+  CHECK(g.worst_correlation <= 1.25);
 }
 
 TEST_CASE("flights sharing one rotor agree behind a flight controller's PT1", "[scatter][small]") {

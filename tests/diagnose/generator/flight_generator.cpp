@@ -520,7 +520,8 @@ void add_dissipation_measured(const FlightSpec& spec, const std::vector<TrueSamp
 // constants of the cutoff).
 double filter_correlation(const FlightSpec& spec) {
   if (!(spec.gyro_cutoff_hz > 0.0)) return 1.0;
-  GyroFilter filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, 1.0 / spec.imu_rate_hz);
+  GyroFilter filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, 1.0 / spec.imu_rate_hz, spec.gyro_pt1_stages,
+                    spec.gyro_later_stage_ratio);
   const int steps = static_cast<int>(std::ceil(40.0 * spec.imu_rate_hz / spec.gyro_cutoff_hz)) + 10;
   double sum = 0.0, squares = 0.0;
   for (int k = 0; k < steps; ++k) {
@@ -542,8 +543,10 @@ Eigen::Vector3d record_gyro(const FlightSpec& spec, const Throw& thrown, const I
   // The filter is linear: the readings' noise is the filtered noise sequence, kept
   // apart to measure its spread; filtering reading and noise separately adds up to
   // filtering their sum.
-  GyroFilter signal_filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, step_s),
-      noise_filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, step_s);
+  GyroFilter signal_filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, step_s, spec.gyro_pt1_stages,
+                           spec.gyro_later_stage_ratio),
+      noise_filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, step_s, spec.gyro_pt1_stages,
+                   spec.gyro_later_stage_ratio);
   if (spec.gyro_cutoff_hz > 0.0) {
     settle_on_motion_before(
         signal_filter, effect.physics, thrown.omega0_body, spec.gyro_cutoff_hz, spec.imu_rate_hz,

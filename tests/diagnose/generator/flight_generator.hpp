@@ -94,6 +94,11 @@ struct FlightSpec {
   // The low-pass's order: 2, the Butterworth above; 1, a flight controller's first-order
   // PT1 (first_order_low_pass.hpp), whose noise stays correlated over fs / (pi fc) readings.
   int gyro_filter_order = 2;
+  // With order 1: how many PT1 stages in series (gyro_filter.hpp: Betaflight's PT2 is 2), the
+  // first at the cutoff, each later one at gyro_later_stage_ratio times it (Betaflight's
+  // default pair of gyro low-passes: 2, a second PT1 at twice the first's cutoff).
+  int gyro_pt1_stages = 1;
+  double gyro_later_stage_ratio = 1.0;
   // > 0: each reading rounded to a multiple of this after the noise (a flight controller
   // logs 1/16.4 deg/s, the ICM-42688's and MPU-6000's step at +-2000 deg/s). 0: none.
   double gyro_quantum_rad_s = 0.0;
