@@ -287,9 +287,11 @@ class ReleaseWindow {
     return blocks_[(newest_ - 1u - n) % ring_blocks];
   }
 
-  // How far a block's mean residual vector for lever arm r lies from the level (m/s²). Out of
-  // line: one copy for its four calls (tail_samples, pushes_past), cold paths.
-  ALOFT_OUT_OF_LINE static Scalar excess(const Block& b, const Vec3<Scalar>& r, const Vec3<Scalar>& level) {
+  // How far a block's mean residual vector for lever arm r lies from the level (m/s²). Cold:
+  // one copy for its four calls (tail_samples, pushes_past), themselves cold; like
+  // flight_level and free_excess_sq, date()'s alone, it runs when a release is dated, not
+  // per sample (on the STM32F405 the three cold, not -O3, are 128 B of flash less).
+  ALOFT_COLD static Scalar excess(const Block& b, const Vec3<Scalar>& r, const Vec3<Scalar>& level) {
     return ((b.a_sum - b.k_sum * r) / static_cast<Scalar>(b.samples) - level).norm();
   }
 
@@ -311,7 +313,7 @@ class ReleaseWindow {
   // where the limit was 1.4, and the blocks before it, at the finger's level, looked free.
   // The fit is then not settled, and the later look dates the release past the push.
   // Measured on fresh seeds (docs/validation/release-detection.md, "A finger's re-touch").
-  Vec3<Scalar> flight_level(const Vec3<Scalar>& r, bool& a_push) const {
+  ALOFT_COLD Vec3<Scalar> flight_level(const Vec3<Scalar>& r, bool& a_push) const {
     Vec3<Scalar> sum = Vec3<Scalar>::Zero();
     Scalar k_r_sum = Scalar(0);
     Scalar samples = Scalar(0);
@@ -337,7 +339,7 @@ class ReleaseWindow {
   // A free block's mean residual's squared distance from the level (m²/s⁴); -1 for a block
   // that is not free. K r once, for the limit and the residual (168 B of flash less than
   // twice).
-  Scalar free_excess_sq(const Block& b, const Vec3<Scalar>& r, const Vec3<Scalar>& level) const {
+  ALOFT_COLD Scalar free_excess_sq(const Block& b, const Vec3<Scalar>& r, const Vec3<Scalar>& level) const {
     if (2u * b.torque_samples > b.samples) return Scalar(-1);
     const Vec3<Scalar> k_r = b.k_sum * r;
     const Scalar samples = static_cast<Scalar>(b.samples);
