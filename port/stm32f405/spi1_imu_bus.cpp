@@ -92,7 +92,8 @@ void spi_init_master(SpiRegisters& spi) {
   spi.cr1 = spi.cr1 | cr1_spe;
 }
 
-void spi1_init() {
+// Once, at set-up: cold, so built for size (as init_clocks).
+[[gnu::cold]] void spi1_init() {
   using namespace gpio_bits;
   rcc().ahb1enr = rcc().ahb1enr | rcc_bits::ahb1enr_gpioa;
   rcc().apb2enr = rcc().apb2enr | rcc_bits::apb2enr_spi1;
