@@ -10,7 +10,7 @@ namespace {
 // from 0x08020000 (§3.3, Table 5, 1 MiB devices).
 using namespace flash_bits;
 constexpr std::uint32_t sector5_address = 0x08020000u;
-constexpr std::uint32_t sector_size = 128u * 1024u;
+constexpr std::uint32_t sector_size = InternalFlash::sector_size;
 constexpr std::uint32_t sr_errors = sr_operr | sr_wrperr | sr_pgaerr | sr_pgperr | sr_pgserr;
 
 constexpr std::uint32_t erase_timeout_us = 4000000;  // DS8626 Table 43: tERASE128KB max 2 s (x32)
@@ -71,18 +71,6 @@ std::uint32_t word_at(const std::uint8_t* p) {
 }
 
 }  // namespace
-
-InternalFlash::InternalFlash(const InternalFlashConfig& config) : config_(config) {
-  usable_ =
-      config.first_sector >= 5 && config.sector_count >= 2 && config.first_sector + config.sector_count <= 12;
-  device_.context = this;
-  device_.block_size = sector_size;
-  device_.block_count = usable_ ? config.sector_count : 0;
-  device_.program_size = 4;
-  device_.read = &InternalFlash::read;
-  device_.program = &InternalFlash::program;
-  device_.erase = &InternalFlash::erase;
-}
 
 Status InternalFlash::read(void* context, std::uint32_t block, std::uint32_t offset, std::uint8_t* data,
                            std::uint32_t size) {
