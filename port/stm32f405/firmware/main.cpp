@@ -41,8 +41,15 @@ namespace {
 using aloft::port::ReportWriter;
 using aloft_stm32f405::Pipeline;
 
+// A message that ends in a status's phrase: `what`, the phrase, the line's end. Out of line:
+// one copy of the phrase's lookup (aloft::describe) for every such message.
+ALOFT_COLD void say_status(const char* what, aloft::Status status) {
+  ReportWriter().text(what).text(aloft::describe(status)).line();
+}
+
 #if defined(ALOFT_STM32F405_FAKE_BUS)
-constexpr const char* bus_name = "the fake bus";
+// The bus's name as a literal, joined to its messages' text when the image is compiled.
+#define ALOFT_STM32F405_BUS_NAME "the fake bus"
 aloft::ImuBus board_imu_bus() { return aloft_stm32f405::fake_imu_bus(); }
 constexpr int exit_stream_ended = 0;
 
@@ -54,10 +61,8 @@ aloft::testing::FakeFlash<512, 3> record_flash;
 const aloft::BlockDevice& record_device() { return record_flash.device(); }
 
 void write_records() {
-  ReportWriter out;
-  const aloft::Status written =
-      aloft::port::write_record_area(record_flash.device(), ALOFT_STM32F405_RECORDS_PATH);
-  out.text("record area written: ").text(aloft::describe(written)).line();
+  say_status("record area written: ",
+             aloft::port::write_record_area(record_flash.device(), ALOFT_STM32F405_RECORDS_PATH));
 }
 
 aloft::OnboardPipelineSettings<float> pipeline_settings() {
@@ -93,7 +98,7 @@ aloft_stm32f405::RecordHashes record_hashes() {
 }
 #endif
 #else
-constexpr const char* bus_name = "SPI1";
+#define ALOFT_STM32F405_BUS_NAME "SPI1"
 aloft::ImuBus board_imu_bus() {
   aloft::port::stm32f405::spi1_init();
   return aloft::port::stm32f405::spi1_imu_bus();
@@ -124,20 +129,18 @@ void store_record(const aloft::FlightResult<float>&) {}
 #else
 void start_records() {
   const aloft::Status mounted = aloft_stm32f405::start_flight_storage(record_device(), record_hashes());
-  if (mounted != aloft::Status::ok)
-    ReportWriter().text("flight records off: ").text(aloft::describe(mounted)).line();
+  if (mounted != aloft::Status::ok) say_status("flight records off: ", mounted);
 }
 
 // Stores the flight's record and says which sequence number it got.
 void store_record(const aloft::FlightResult<float>& f) {
-  ReportWriter out;
   std::uint32_t sequence = 0;
   const aloft::Status stored = aloft_stm32f405::store_flight(f, sequence);
   if (stored != aloft::Status::ok) {
-    out.text("record not stored: ").text(aloft::describe(stored)).line();
+    say_status("record not stored: ", stored);
     return;
   }
-  out.text("record_sequence ").integer(sequence).line();
+  ReportWriter().text("record_sequence ").integer(sequence).line();
 }
 #endif
 
@@ -169,8 +172,7 @@ ALOFT_COLD void report_finished_flights() {
 void push_sample(void*, const aloft::ImuSample<float>& sample) {
   ++samples_this_poll;
   const aloft::Status pushed = pipeline->push(sample);
-  if (pushed != aloft::Status::ok)
-    ReportWriter().text("sample dropped: ").text(aloft::describe(pushed)).line();
+  if (pushed != aloft::Status::ok) say_status("sample dropped: ", pushed);
 }
 
 // The driver's sink: in flash, not on the stack under every sample's path.
@@ -185,9 +187,9 @@ int run() {
     samples_this_poll = 0;
     const aloft::Status polled = aloft_stm32f405::imu_poll(sample_sink);
     if (polled == aloft::Status::register_not_kept) {
-      out.text("ICM-42688-P on ").text(bus_name).text(": a register lost its setting; rewritten").line();
+      out.text("ICM-42688-P on " ALOFT_STM32F405_BUS_NAME ": a register lost its setting; rewritten\n");
     } else if (polled != aloft::Status::ok) {
-      out.text("ICM-42688-P on ").text(bus_name).text(": ").text(aloft::describe(polled)).line();
+      say_status("ICM-42688-P on " ALOFT_STM32F405_BUS_NAME ": ", polled);
       return exit_bus_failed;
     }
     if (samples_this_poll > 0) last_sample_at_us = aloft_stm32f405::imu_bus_now_us();
@@ -220,17 +222,17 @@ ALOFT_COLD int set_up() {
   std::uint8_t who_am_i = 0;
   const aloft::Status found = aloft_stm32f405::imu_bring_up(bus, who_am_i);
   if (found == aloft::Status::sensor_not_found) {
-    out.text("ICM-42688-P not found on ").text(bus_name).text(": WHO_AM_I reads ").hex_byte(who_am_i);
+    out.text("ICM-42688-P not found on " ALOFT_STM32F405_BUS_NAME ": WHO_AM_I reads ").hex_byte(who_am_i);
     out.text(", expected ").hex_byte(aloft_stm32f405::who_am_i_expected).line();
     return exit_sensor_not_found;
   }
   if (found != aloft::Status::ok) {
-    out.text("ICM-42688-P on ").text(bus_name).text(": ").text(aloft::describe(found)).line();
+    say_status("ICM-42688-P on " ALOFT_STM32F405_BUS_NAME ": ", found);
     return exit_bus_failed;
   }
   start_pipeline();
   start_records();
-  out.text("ICM-42688-P found on ").text(bus_name).text("; onboard pipeline running, K = ");
+  out.text("ICM-42688-P found on " ALOFT_STM32F405_BUS_NAME "; onboard pipeline running, K = ");
   out.integer(aloft_stm32f405::live_simulations).line();
   return 0;
 }
