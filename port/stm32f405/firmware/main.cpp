@@ -140,7 +140,8 @@ void store_record(const aloft::FlightResult<float>& f) {
     say_status("record not stored: ", stored);
     return;
   }
-  ReportWriter().text("record_sequence ").integer(sequence).line();
+  ReportWriter out;
+  aloft_flight_lines::write_integer_line(out, "record_sequence ", sequence);
 }
 #endif
 
@@ -197,8 +198,8 @@ int run() {
   }
   pipeline->finish();
   report_finished_flights();
-  out.text("stream_samples ").integer(pipeline->stream().samples).line();
-  out.text("stream_gaps ").integer(pipeline->stream().gaps).line();
+  aloft_flight_lines::write_integer_line(out, "stream_samples ", pipeline->stream().samples);
+  aloft_flight_lines::write_integer_line(out, "stream_gaps ", pipeline->stream().gaps);
   write_records();
   out.text("stream ended: idle ").integer(static_cast<std::int64_t>(stream_end_after_us / 1000u));
   out.text(" ms after ").integer(pipeline->stream().samples).text(" samples").line();
