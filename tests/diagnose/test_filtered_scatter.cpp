@@ -51,9 +51,9 @@ bool first_order_stages(Shape shape) {
 // (RC^2 / 2) w'' to second order, a Butterworth a delay alone) bends the readings beyond the
 // noise, so a flight's fit leaves a misfit the model does not know of; at 100 Hz the knee
 // lies at the motion band's edge, where the noise floor does not take a first-order shape
-// (noise_floor.cpp, fitted_low_pass). `shapes`: the PT1 and the Butterworth (the grid the
-// rule was set on), or the PT2 and the PT1 pair (added with the PT2's shape, a flight
-// controller's filters the noise floor was not tuned on).
+// (noise_floor.cpp, fitted_low_pass). The shapes: the PT1 and the Butterworth (the grid the
+// rule was set on), or, with `pt1_stages_added`, the PT2 and the PT1 pair (a flight
+// controller's filters the noise floor was not tuned on and has no shape for).
 std::vector<GridPoint> grid(bool small, bool near_motion, bool pt1_stages_added) {
   if (small)
     return near_motion ? std::vector<GridPoint>{} : std::vector<GridPoint>{{1000.0, Shape::pt1, 50.0}};
@@ -147,6 +147,7 @@ std::string grid_line(const GridPoint& p, const SessionScatter& s) {
 }
 
 struct GridScatter {
+  std::size_t sessions = 0;  // held to the bar
   double mean = 0.0, spread = 0.0;
   int beyond = 0;                  // sessions beyond kFlightsDisagree
   double worst_correlation = 1.0;  // the correlation's worst factor off the filter's
@@ -166,6 +167,7 @@ GridScatter run_grid(const std::vector<GridPoint>& points, const std::vector<Gri
     out.worst_correlation = std::max({out.worst_correlation, ratio, 1.0 / ratio});
     std::printf("%s\n", grid_line(p, s).c_str());
   }
+  out.sessions = all.size();
   double squares = 0.0;
   for (double s : all) out.mean += s / static_cast<double>(all.size());
   for (double s : all) squares += (s - out.mean) * (s - out.mean);
@@ -185,8 +187,7 @@ void check_grid(bool small) {
   if (small) return;
   // The mean of N sessions lies within 3 standard errors of 1, and their spread within
   // a factor 1.5 of sqrt(2 / dof).
-  const double sessions = static_cast<double>(grid(small, false, false).size());
-  CHECK(std::abs(g.mean - 1.0) < 3.0 * kExpectedSpread / std::sqrt(sessions));
+  CHECK(std::abs(g.mean - 1.0) < 3.0 * kExpectedSpread / std::sqrt(static_cast<double>(g.sessions)));
   CHECK(g.spread < 1.5 * kExpectedSpread);
 }
 
@@ -199,8 +200,8 @@ TEST_CASE("flights sharing one rotor agree behind any common gyro filter", "[sca
 // Behind two first-order stages (Betaflight's PT2, its default pair of gyro low-passes) the
 // noise floor has no shape of its own: it takes a Butterworth's or a PT1's, and the
 // correlation comes out up to 2.4 times off either way (tuning seeds: scatter 1.54 +- 0.85,
-// none beyond 3; fresh: x2.5, 1.69 +- 1.26, one at 5.42). Hidden until the noise floor meets it
-// (the bar of the grid above: correlation within x1.25, no session beyond 3). Measured
+// none beyond 3; fresh: x2.5, 1.69 +- 1.26, one at 5.42). Hidden until the noise floor meets what the
+// grid above measures (correlation within x1.25, no session beyond 3). Measured
 // with a PT2's shape added to the fit (the PT1's gain squared, its knee sought above the
 // motion band and only where the band above it spans a decade, so the 100 Hz racquet keeps
 // its reports): the correlation within x1.14, scatter 1.38 +- 0.48 and 1.39 +- 0.75 (the
