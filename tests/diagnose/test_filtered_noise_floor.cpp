@@ -86,8 +86,8 @@ TEST_CASE("the noise floor holds within x2 from 100 Hz to 8 kHz, filtered or not
   }
   std::printf("noise floor within x2 on %d of %d flights; worst x%.2f\n", within, flights, worst);
   // Measured: 66 of 66 on the tuning seeds (worst x1.74: 4 kHz behind 20 Hz, a
-  // wrong-moments flight), 66 of 66 on the withheld ones (worst x1.53: 8 kHz behind 20 Hz,
-  // an impulse flight) and 66 of 66 on the fresh set, not tuned on (worst x1.79: 1 kHz
+  // wrong-moments flight), 66 of 66 on the withheld ones (worst x1.62: 100 Hz behind 20 Hz,
+  // a noise-only flight) and 66 of 66 on the fresh set, not tuned on (worst x1.79: 1 kHz
   // behind 20 Hz, a wrong-moments flight). Before the window's response, the finer
   // segments and the outlying segments' removal (noise_spectrum.hpp) it was 65 of 66 on
   // the tuning and withheld seeds (x2.08, x2.12): an impulse flight at 4-8 kHz behind 20 Hz.

@@ -5,8 +5,9 @@
 // readings per independent sample where a fit counts readings (25 behind a first-order
 // 50 Hz low-pass at 4 kHz). Generated sessions of five flights sharing one rotor
 // (internal_momentum, the effect the rule rules out when its flights disagree), from
-// 100 Hz to 8 kHz, with no low-pass, a second-order Butterworth or a flight controller's
-// first-order PT1 at 20-400 Hz, quantised to 1/16.4 deg/s as a flight controller logs.
+// 100 Hz to 8 kHz, with no low-pass, a second-order Butterworth, a flight controller's
+// first-order PT1 or two PT1 stages at 20-400 Hz, quantised to 1/16.4 deg/s as a flight
+// controller logs.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -73,11 +74,19 @@ std::vector<GridPoint> grid(bool small, bool near_motion, bool pt1_stages_added)
 }
 
 // Seeds of their own: 61000 on, the set the estimate was tuned on; 71000 on
-// (ALOFT_SCATTER_SEEDS=fresh), measured once the rule was set.
+// (ALOFT_SCATTER_SEEDS=fresh), measured once the rule was set; 81000 on
+// (ALOFT_SCATTER_SEEDS=unseen), measured once the PT2's shape was set (noise_floor.cpp).
 std::uint64_t seed_base() {
   const char* set = std::getenv("ALOFT_SCATTER_SEEDS");
-  return set != nullptr && std::string(set) == "fresh" ? 71000 : 61000;
+  const std::string name = set != nullptr ? set : "";
+  return name == "unseen" ? 81000 : name == "fresh" ? 71000 : 61000;
 }
+
+// Every session's correlation, the mean of its flights', lies within this factor of the
+// filter's. Measured, worst on the tuning, fresh and unseen seeds: x1.12, x1.22 and x1.27
+// behind a PT1 or a Butterworth (a Butterworth at 50 Hz taken in part for a PT2), x1.26,
+// x1.18 and x1.16 behind a PT2 or a PT1 pair (x2.40, x2.49 and x2.46 before the PT2's shape).
+constexpr double kCorrelationWithin = 1.3;
 
 constexpr double kFlightControllerStep = 3.14159265358979323846 / 180.0 / 16.4;  // rad/s
 constexpr int kFlights = 5;
@@ -185,6 +194,7 @@ void check_grid(bool small) {
   const GridScatter g = run_grid(grid(small, false, false), grid(small, true, false), 0);
   CHECK(g.beyond == 0);
   if (small) return;
+  CHECK(g.worst_correlation <= kCorrelationWithin);
   // The mean of N sessions lies within 3 standard errors of 1, and their spread within
   // a factor 1.5 of sqrt(2 / dof).
   CHECK(std::abs(g.mean - 1.0) < 3.0 * kExpectedSpread / std::sqrt(static_cast<double>(g.sessions)));
@@ -198,24 +208,23 @@ TEST_CASE("flights sharing one rotor agree behind any common gyro filter", "[sca
 }
 
 // Behind two first-order stages (Betaflight's PT2, its default pair of gyro low-passes) the
-// noise floor has no shape of its own: it takes a Butterworth's or a PT1's, and the
-// correlation comes out up to 2.4 times off either way (tuning seeds: scatter 1.54 +- 0.85,
-// none beyond 3; fresh: x2.5, 1.69 +- 1.26, one at 5.42). Hidden until the noise floor meets what the
-// grid above measures (correlation within x1.25, no session beyond 3). Measured
-// with a PT2's shape added to the fit (the PT1's gain squared, its knee sought above the
-// motion band and only where the band above it spans a decade, so the 100 Hz racquet keeps
-// its reports): the correlation within x1.14, scatter 1.38 +- 0.48 and 1.39 +- 0.75 (the
-// stages' distortion of the motion, twice a PT1's (RC^2) w'' to second order, unmodelled),
-// but a Butterworth at 20-50 Hz above was then read as a PT2 in 2-4 of its sessions,
-// correlation up to x1.46 off, where it is x1.13 now: not landed.
-TEST_CASE(
-    "flights sharing one rotor behind a flight controller's PT2 or pair of PT1s: each counts its independent "
-    "samples",
-    "[.][scatter][pt1_stages]") {
-  // Seeds from index 100 on, so the grid above keeps its sessions.
+// noise floor fits a PT2's shape where it can tell it from a Butterworth's (noise_floor.cpp).
+// Seeds from index 100 on, so the grid above keeps its sessions.
+TEST_CASE("behind a flight controller's PT2 or pair of PT1s each fit counts its independent samples",
+          "[scatter][filtered][pt1_stages]") {
+  const GridScatter g = run_grid(grid(false, false, true), grid(false, true, true), 100);
+  CHECK(g.worst_correlation <= kCorrelationWithin);
+}
+
+// The same sessions' scatter: two stages distort the motion twice as much as a PT1 ((RC^2) w''
+// to second order), which no fit models, so flights that share one rotor disagree more than
+// their noise allows: tuning seeds 1.38 +- 0.48, none beyond 3; fresh 1.40 +- 0.79, one
+// (4 kHz behind a PT2 at 50 Hz, 4.1, its correlation x1.18 off); unseen 1.53 +- 1.75, one
+// (the same point, 7.9, x1.12). Hidden until the fits model the filter's distortion.
+TEST_CASE("flights sharing one rotor behind a flight controller's PT2 or pair of PT1s agree",
+          "[.][scatter][pt1_stages_agree]") {
   const GridScatter g = run_grid(grid(false, false, true), grid(false, true, true), 100);
   CHECK(g.beyond == 0);
-  CHECK(g.worst_correlation <= 1.25);
 }
 
 TEST_CASE("flights sharing one rotor agree behind a flight controller's PT1", "[scatter][small]") {

@@ -81,8 +81,9 @@ constexpr double kUnderstated = 1.5;
 struct SpectralFloor {
   Eigen::Vector3d sigma = Eigen::Vector3d::Zero();
   double correlation = 1.0;
-  double cutoff_hz = 0.0;  // the low-pass fitted (0: none)
-  int order = 0;           // its shape (low_pass_shape.hpp; 0: none)
+  double cutoff_hz = 0.0;      // the low-pass fitted (0: none)
+  int order = 0;               // its order (low_pass_shape.hpp; 0: none)
+  const char* shape = "none";  // its shape: LowPassShape::name()
 };
 
 // The longest run of usable samples with no time gap inside.
@@ -154,18 +155,34 @@ constexpr std::size_t kFirstBoundingBin = 3;
 // The low-pass whose shape, as the bins see it, fits the three axes' spectrum above the
 // motion band best (in log power, the level for each cutoff its best) and exceeds none of
 // the bins below it kBelowEdgeSlack times (each excess's log counts as a misfit): for each
-// shape of low_pass_shape.hpp (the Butterworth first, then the PT1: a tie keeps the
-// earlier), cutoffs on a log grid of 64 from kLowestCutoffBins bins to the Nyquist rate,
-// and none after the Butterworth's. A PT1's cutoffs start at the motion band's edge: with
-// its knee below the edge the bins above see only its 1/f^2 roll-off, which a motion's own
-// tail has as well where the motion is not smooth (a knock, a string's buzz: the real
-// racquet flights of 2025-01-16 fitted a PT1 at 6.2 Hz, the grid's lowest, at 3 of 6
-// flights, weighting them 30 times less), where a Butterworth's 1/f^4 is the sensor's. A
-// flight controller's PT1 (50-500 Hz) lies far above a tumble's band. Measured on the grid of
+// shape of low_pass_shape.hpp, cutoffs on a log grid of 64 from kLowestCutoffBins bins to
+// the Nyquist rate, and none after the Butterworth's. A PT1's cutoffs start at the motion
+// band's edge: with its knee below the edge the bins above see only its 1/f^2 roll-off,
+// which a motion's own tail has as well where the motion is not smooth (a knock, a string's
+// buzz: the real racquet flights of 2025-01-16 fitted a PT1 at 6.2 Hz, the grid's lowest, at
+// 3 of 6 flights, weighting them 30 times less), where a Butterworth's 1/f^4 is the sensor's.
+// A flight controller's PT1 (50-500 Hz) lies far above a tumble's band. Measured on the grid of
 // test_filtered_noise_floor.cpp (tuning and withheld seeds): worst x1.74 and x1.53 from 2 bins, x1.79 and
 // x1.64 from 1 bin (a flight whose knee hides under the motion's band runs further down), x1.80 and x1.53
 // with no bound below the edge.
 constexpr double kLowestCutoffBins = 2.0;
+// A PT2 (two PT1 stages: a flight controller's) is sought only where it can be told from a
+// Butterworth, which falls as 1/f^4 as well and differs only at the knee: a PT2's bends
+// over an octave or two (a quarter of the power at its cutoff, a Butterworth's half).
+// - Only where the band above the motion spans kSoftKneeBand in frequency: over a narrower
+//   band a PT2 fits a motion's steep tail as well as a sensor's roll-off. The real racquet
+//   flights of 2025-01-16 (100 Hz, the band's edge at 9-12 Hz, a ratio of 4-5) fitted a PT2
+//   at 22 and 36 Hz on 2 of 6 flights where their spectra fall by two decades an octave to
+//   the Nyquist rate, a motion's fall, and their pooled shrink fell from 60 to 50 %; a
+//   flight controller's log at 1-8 kHz spans 25 or more (test_filtered_scatter.cpp).
+// - Its cutoffs start kSoftKneeAboveEdge times above the band's edge: a knee at the edge
+//   is hidden under the motion. A Butterworth at 20 Hz (the edge at 16-23 Hz at 1-8 kHz)
+//   was fitted by a PT2 at 1.00-1.39 times the edge in 30 flights of the grid of
+//   test_filtered_scatter.cpp (tuning and fresh seeds) and then outfitted its Butterworth
+//   in half of them, where the PT2s and PT1 pairs at 50-400 Hz came out at 1.41-37 times
+//   the edge.
+constexpr double kSoftKneeBand = 10.0;
+constexpr double kSoftKneeAboveEdge = 1.5;
 // Bins fitted hold at least this many times the rounding's density (rounding_density,
 // below): nearer it, a bin's median over a few segments less the rounding scatters about
 // zero, and the bins that come out above it, kept, bend the roll-off flat.
@@ -187,36 +204,78 @@ double shape_misfit(const NoiseSpectrum& s, std::size_t first, std::size_t edge,
   }
   return misfit;
 }
-LowPassShape fitted_low_pass(const NoiseSpectrum& s, std::size_t edge, double rounding) {
+
+struct FittedShape {
+  LowPassShape shape;
+  double misfit = -1.0;  // < 0: none sought
+};
+
+// The cutoff of one kind of low-pass that fits the bins best (a tie keeps the lower).
+FittedShape best_cutoff(const NoiseSpectrum& s, std::size_t edge, LowPassShape::Kind kind,
+                        const std::vector<std::size_t>& bins) {
+  using Kind = LowPassShape::Kind;
+  const std::size_t last = s.density.size() - 1, first = std::min(kFirstBoundingBin, edge);
+  const double low = kLowestCutoffBins * s.bin_hz, high = 0.5 * s.sample_hz;
+  const double from = kind == Kind::butterworth   ? low
+                      : kind == Kind::first_order ? std::max(low, edge * s.bin_hz)
+                                                  : std::max(low, kSoftKneeAboveEdge * edge * s.bin_hz);
+  const std::vector<double> frequencies = response_frequencies(s, first, last);
+  std::vector<double> abscissae(frequencies.size()), fine(frequencies.size());
+  for (std::size_t k = 0; k < frequencies.size(); ++k)
+    abscissae[k] = LowPassShape::abscissa(kind, frequencies[k], s.sample_hz);
+  FittedShape best{LowPassShape(kind, 0.0, s.sample_hz)};
+  for (int i = 0; i <= 64; ++i) {
+    if (i == 64 && kind != Kind::butterworth) break;  // "no low-pass" is tried once
+    const LowPassShape shape(kind, i == 64 ? 0.0 : from * std::pow(high / from, i / 63.0), s.sample_hz);
+    for (std::size_t k = 0; k < fine.size(); ++k) fine[k] = shape.gain_at(abscissae[k]);
+    const double misfit = shape_misfit(s, first, edge, bins, densities_seen(s, fine));
+    if (best.misfit < 0.0 || misfit < best.misfit) best = {shape, misfit};
+  }
+  return best;
+}
+
+// Where a PT2 and the best of the other shapes fit the bins about as well (misfits within
+// a factor kShapesToldApart), the bins do not tell which the gyro sits behind; the floor
+// then takes the mean, in log, of the two floors, weighted linearly in the log of the
+// misfits' ratio (the PT2's share 1/2 at equal misfits, 1 at kShapesToldApart times less,
+// 0 at as many times more). Behind a knee hidden under the motion the two shapes' correlations
+// differ by a factor of about 1.4 (2 fs / (pi fc) against fs / (2.2 fc)), so the mean is off
+// by at most its square root whichever the gyro has. Measured on the grid of
+// test_filtered_scatter.cpp: a Butterworth at 50 Hz gave misfit ratios (PT2 over Butterworth)
+// of 0.82-3.4 at 1-8 kHz, a PT2 at 50 Hz at 4 kHz 0.60-1.18; every PT2 and PT1 pair at
+// 100-400 Hz, and at 50 Hz at 1 and 8 kHz, under 0.87.
+constexpr double kShapesToldApart = 1.25;
+double pt2_share(const FittedShape& pt2, const FittedShape& other) {
+  if (pt2.misfit < 0.0) return 0.0;
+  if (other.misfit <= 0.0) return pt2.misfit <= 0.0 ? 0.5 : 0.0;
+  if (pt2.misfit <= 0.0) return 1.0;
+  const double share = 0.5 - std::log(pt2.misfit / other.misfit) / (2.0 * std::log(kShapesToldApart));
+  return std::clamp(share, 0.0, 1.0);
+}
+
+struct FittedLowPass {
+  LowPassShape other;      // the Butterworth or PT1 that fits best (cutoff 0: no low-pass)
+  LowPassShape pt2;        // the PT2 that fits best (cutoff 0: none sought)
+  double pt2_share = 0.0;  // its share of the floor (pt2_share)
+};
+
+FittedLowPass fitted_low_pass(const NoiseSpectrum& s, std::size_t edge, double rounding) {
   std::vector<std::size_t> bins;
   double highest = 0.0;
-  const std::size_t last = s.density.size() - 1, first = std::min(kFirstBoundingBin, edge);
+  const std::size_t last = s.density.size() - 1;
   for (std::size_t j = edge; j < last; ++j) highest = std::max(highest, s.density[j].sum());
   for (std::size_t j = edge; j < last; ++j) {
     if (s.density[j].sum() >= kFitDepth * highest && s.density[j].sum() > 3.0 * kAboveRounding * rounding)
       bins.push_back(j);
   }
-  LowPassShape best(LowPassShape::kButterworth, 0.0, s.sample_hz);
-  double best_misfit = -1.0;
-  const double low = kLowestCutoffBins * s.bin_hz, high = 0.5 * s.sample_hz;
-  const std::vector<double> frequencies = response_frequencies(s, first, last);
-  std::vector<double> abscissae(frequencies.size()), fine(frequencies.size());
-  for (int order : {LowPassShape::kButterworth, LowPassShape::kFirstOrder}) {
-    for (std::size_t k = 0; k < frequencies.size(); ++k)
-      abscissae[k] = LowPassShape::abscissa(order, frequencies[k], s.sample_hz);
-    for (int i = 0; i <= 64; ++i) {
-      if (i == 64 && order != LowPassShape::kButterworth) break;
-      const double from = order == LowPassShape::kFirstOrder ? std::max(low, edge * s.bin_hz) : low;
-      const LowPassShape shape(order, i == 64 ? 0.0 : from * std::pow(high / from, i / 63.0), s.sample_hz);
-      for (std::size_t k = 0; k < fine.size(); ++k) fine[k] = shape.gain_at(abscissae[k]);
-      const double misfit = shape_misfit(s, first, edge, bins, densities_seen(s, fine));
-      if (best_misfit < 0.0 || misfit < best_misfit) {
-        best_misfit = misfit;
-        best = shape;
-      }
-    }
-  }
-  return best;
+  using Kind = LowPassShape::Kind;
+  const FittedShape butterworth = best_cutoff(s, edge, Kind::butterworth, bins);
+  const FittedShape first_order = best_cutoff(s, edge, Kind::first_order, bins);
+  const FittedShape& other = first_order.misfit < butterworth.misfit ? first_order : butterworth;
+  const double band = 0.5 * s.sample_hz / (static_cast<double>(edge) * s.bin_hz);
+  const FittedShape pt2 =
+      band >= kSoftKneeBand ? best_cutoff(s, edge, Kind::two_first_order, bins) : FittedShape{other.shape};
+  return {other.shape, pt2.shape, pt2_share(pt2, other)};
 }
 
 // Readings rounded to a step q carry a white noise of variance q^2 / 12 on each axis
@@ -234,22 +293,12 @@ NoiseSpectrum without_rounding(NoiseSpectrum s, double rounding) {
   return s;
 }
 
-// The noise's variance per axis: its power above the motion's band, and below it the
-// fitted low-pass's shape at the level the bins above the band give it, and the
+// The noise's variance per axis behind `filter`: its power above the motion's band, and
+// below it the filter's shape at the level the bins above the band give it, and the
 // rounding's; and its correlation, the density at low frequencies over a white noise's of
 // the same variance.
-std::optional<SpectralFloor> floor_from_spectrum(const Flight& flight, const std::vector<char>& gap_after,
-                                                 double resolution) {
-  double rate_hz = 0.0;
-  const std::vector<Eigen::Vector3d> run = longest_clean_run(flight, gap_after, rate_hz);
-  const NoiseSpectrum all = welch_spectrum(run, rate_hz);
-  const std::size_t edge = all.density.empty() ? 0 : end_of_motion_band(all);
-  if (edge == 0 || edge + kPlateauBins > all.density.size()) return std::nullopt;
-  // An impulse's step shows most over the octave just above the motion's band.
-  const double rounding = rounding_density(resolution, rate_hz);
-  const NoiseSpectrum s = without_rounding(
-      without_outlying_segments(all, edge, std::min(2 * edge, all.density.size())), rounding);
-  const LowPassShape filter = fitted_low_pass(s, edge, rounding);
+SpectralFloor floor_behind(const NoiseSpectrum& s, std::size_t edge, double rounding,
+                           const LowPassShape& filter) {
   // The level: the bins' power over the shape's, summed over the band above the motion
   // to kFitDepth (each bin weighed by the shape, so the flat part counts most).
   Eigen::Vector3d power = Eigen::Vector3d::Zero(), variance = Eigen::Vector3d::Zero();
@@ -273,6 +322,35 @@ std::optional<SpectralFloor> floor_from_spectrum(const Flight& flight, const std
   out.correlation = std::max(1.0, (level.sum() + 3.0 * rounding) * 0.5 * s.sample_hz / variance.sum());
   out.cutoff_hz = filter.cutoff_hz();
   out.order = filter.cutoff_hz() > 0.0 ? filter.order() : 0;
+  out.shape = filter.cutoff_hz() > 0.0 ? filter.name() : "none";
+  return out;
+}
+
+// The floor behind the fitted low-pass; where a PT2 fits about as well as the other shapes
+// (pt2_share), the mean of the two floors in log, named after the larger share.
+std::optional<SpectralFloor> floor_from_spectrum(const Flight& flight, const std::vector<char>& gap_after,
+                                                 double resolution) {
+  double rate_hz = 0.0;
+  const std::vector<Eigen::Vector3d> run = longest_clean_run(flight, gap_after, rate_hz);
+  const NoiseSpectrum all = welch_spectrum(run, rate_hz);
+  const std::size_t edge = all.density.empty() ? 0 : end_of_motion_band(all);
+  if (edge == 0 || edge + kPlateauBins > all.density.size()) return std::nullopt;
+  // An impulse's step shows most over the octave just above the motion's band.
+  const double rounding = rounding_density(resolution, rate_hz);
+  const NoiseSpectrum s = without_rounding(
+      without_outlying_segments(all, edge, std::min(2 * edge, all.density.size())), rounding);
+  const FittedLowPass fitted = fitted_low_pass(s, edge, rounding);
+  SpectralFloor out = floor_behind(s, edge, rounding, fitted.other);
+  if (fitted.pt2_share > 0.0) {
+    const SpectralFloor pt2 = floor_behind(s, edge, rounding, fitted.pt2);
+    const double w = fitted.pt2_share;
+    const Eigen::Vector3d sigma = (w * pt2.sigma.array().log() + (1.0 - w) * out.sigma.array().log()).exp();
+    const double correlation =
+        std::exp(w * std::log(pt2.correlation) + (1.0 - w) * std::log(out.correlation));
+    if (w > 0.5) out = pt2;
+    out.sigma = sigma;
+    out.correlation = correlation;
+  }
   return out;
 }
 
@@ -325,6 +403,7 @@ NoiseFloor estimate_noise_floor(const Flight& flight) {
       best.method = "spectrum";
       best.low_pass_hz = spectral->cutoff_hz;
       best.low_pass_order = spectral->order;
+      best.low_pass_shape = spectral->shape;
     }
   }
   hold_at_resolution(best, flight);

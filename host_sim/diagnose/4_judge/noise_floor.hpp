@@ -5,7 +5,7 @@
 // variance. Either way never below the rounding noise of the data's resolution.
 //
 // A gyro's low-pass (a fast gyro behind a 20-400 Hz filter, a Butterworth or a flight
-// controller's first-order PT1: low_pass_shape.hpp) makes its noise correlated:
+// controller's first-order PT1 or PT2: low_pass_shape.hpp) makes its noise correlated:
 // the differences of neighbouring samples see only the top of its band and understate it
 // many times over, and neighbouring samples are not independent. There the spectrum of
 // the readings (noise_spectrum.hpp) gives both: the noise's variance (its band's power,
@@ -38,11 +38,13 @@ struct NoiseFloor {
   const char* method = "differences";
   // Readings per independent sample (>= 1): 1 for white noise; for noise behind a
   // low-pass (method "spectrum"), about the rate over 2.2 times the cutoff behind a
-  // Butterworth, over pi times the cutoff behind a first-order PT1.
+  // Butterworth, over pi times the cutoff behind a first-order PT1, twice that behind a PT2.
   double correlation = 1.0;
   double low_pass_hz = 0.0;  // method "spectrum": the gyro's low-pass as fitted (0: none)
-  // Its shape (low_pass_shape.hpp): 2, a Butterworth; 1, a first-order PT1; 0, none.
+  // Its order (low_pass_shape.hpp): 2, a Butterworth or a PT2; 1, a first-order PT1; 0, none;
+  // and its shape: "butterworth", "pt1", "pt2" or "none".
   int low_pass_order = 0;
+  const char* low_pass_shape = "none";
   // What fits weigh the readings by: sigma * sqrt(correlation), the white noise whose
   // chi-square over the readings is that of the correlated noise over its independent
   // samples (the same low-frequency density).

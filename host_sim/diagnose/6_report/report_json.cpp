@@ -242,6 +242,7 @@ json flight_report(const FlightDiagnosis& d) {
     out["noise_floor"]["readings_per_independent_sample"] = d.noise.correlation;
     out["noise_floor"]["low_pass_hz"] = d.noise.low_pass_hz;
     out["noise_floor"]["low_pass_order"] = d.noise.low_pass_order;
+    out["noise_floor"]["low_pass_shape"] = d.noise.low_pass_shape;
   }
   out["unusable_samples"] = d.unusable_samples;
   if (!d.comment.empty()) out["comment"] = d.comment;
