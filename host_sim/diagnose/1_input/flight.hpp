@@ -47,6 +47,13 @@ struct Flight {
   // settling from the spin-up, so a jump of the rate there cannot be told from the
   // filter's transient, and no impulse is placed there. -infinity: no such start.
   double settling_until_s = -std::numeric_limits<double>::infinity();
+  // Half the variance (s^2) of the impulse response of the gyro's low-pass as the noise floor
+  // fitted it (noise_floor.hpp): the readings are the motion delayed by the response's mean
+  // and bent by this times its second derivative, to second order. 0: no bend (no low-pass
+  // fitted, a Butterworth's, whose bend vanishes, or a knee too near the motion's band for the
+  // second order to hold: noise_floor.cpp). Set by the diagnosis once the noise floor is known
+  // (diagnosis.cpp); the prediction bends its readings by it (gyro_filter_bend.hpp).
+  mutable double gyro_filter_bend_s2 = 0.0;
   // What of the given segment was contact, not flight (empty when nothing was cut).
   std::vector<Contact> contacts;
 

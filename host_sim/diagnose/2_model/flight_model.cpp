@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "diagnose/2_model/flight_dynamics.hpp"
+#include "diagnose/2_model/gyro_filter_bend.hpp"
 #include "diagnose/2_model/reading_walks.hpp"
 #include "diagnose/2_model/spin_up_walk.hpp"
 #include "diagnose/2_model/walk_layout.hpp"
@@ -53,21 +54,23 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   const std::size_t n = flight.size();
   readings.resize(n);
   if (n == 0) return;
+  read = samples_to_read(flight, read);
   const ModelTerms terms = model_terms(model, theta);
   FlightDynamics dynamics(terms, flight);
   dynamics.set_impulse_scale(model.nominal.tensor);
   const WalkLayoutKey key = layout_key(model, flight, ref, stepping, dynamics);
   if (has_spin_up(terms)) {
     predict_spin_up_readings(dynamics, terms, flight, ref, omega_ref, key.jump_time, readings, read);
-    return;
+  } else {
+    const WalkLayout& layout = walk_layout(flight.time_s, key);
+    const ReadingWalks walks(dynamics, key.jump_time, readings, layout.weights, rate_at_impulse, read);
+    const Motion start = start_at(omega_ref);
+    readings[ref] = dynamics.reading(start.x);
+    // Forwards from the reference and backwards from it, independent of each other.
+    ReadingWalks::Walk up{start, ref}, down{start, ref};
+    walk_together(paired_steps(dynamics), walks, up, layout.up, walks, down, layout.down);
   }
-  const WalkLayout& layout = walk_layout(flight.time_s, key);
-  const ReadingWalks walks(dynamics, key.jump_time, readings, layout.weights, rate_at_impulse, read);
-  const Motion start = start_at(omega_ref);
-  readings[ref] = dynamics.reading(start.x);
-  // Forwards from the reference and backwards from it, independent of each other.
-  ReadingWalks::Walk up{start, ref}, down{start, ref};
-  walk_together(paired_steps(dynamics), walks, up, layout.up, walks, down, layout.down);
+  bend_by_gyro_filter(flight, readings);
 }
 
 namespace {
@@ -123,7 +126,10 @@ void predict_readings_pair(const EffectModel& model, const Flight& flight, std::
   dynamics.set_impulse_scale(model.nominal.tensor);
   const WalkLayoutKey key = layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics);
   one_walks_side_by_side(paired_steps(dynamics), dynamics, dynamics, walk_layout(flight.time_s, key),
-                         key.jump_time, ref, omega_a, omega_b, readings_a, readings_b, n, read);
+                         key.jump_time, ref, omega_a, omega_b, readings_a, readings_b, n,
+                         samples_to_read(flight, read));
+  bend_by_gyro_filter(flight, readings_a);
+  bend_by_gyro_filter(flight, readings_b);
 }
 
 void predict_readings_two(const EffectModel& model, const Flight& flight, std::size_t ref,
@@ -158,7 +164,9 @@ void predict_readings_two(const EffectModel& model, const Flight& flight, std::s
     FlightDynamics::advance_two(lanes, dynamics_a, x, x_steps, hx, dynamics_b, y, y_steps, hy);
   };
   one_walks_side_by_side(advance_two, dynamics_a, dynamics_b, walk_layout(flight.time_s, key), key.jump_time,
-                         ref, omega_a, omega_b, readings_a, readings_b, n, read);
+                         ref, omega_a, omega_b, readings_a, readings_b, n, samples_to_read(flight, read));
+  bend_by_gyro_filter(flight, readings_a);
+  bend_by_gyro_filter(flight, readings_b);
 }
 
 }  // namespace aloft::host::diagnose

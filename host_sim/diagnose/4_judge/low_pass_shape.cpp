@@ -37,6 +37,13 @@ double LowPassShape::gain_at(double abscissa) const {
   return kind_ == Kind::two_first_order ? stage * stage : stage;
 }
 
+double LowPassShape::bend_s2() const {
+  if (cutoff_hz_ <= 0.0 || kind_ == Kind::butterworth) return 0.0;
+  const double dt = 1.0 / sample_hz_;
+  const double stage_variance = dt * dt * (1.0 - k_) / (k_ * k_);  // RC (RC + dt)
+  return 0.5 * stage_variance * (kind_ == Kind::two_first_order ? 2.0 : 1.0);
+}
+
 const char* LowPassShape::name() const {
   switch (kind_) {
     case Kind::butterworth: return "butterworth";

@@ -37,6 +37,11 @@ class LowPassShape {
   // "butterworth", "pt1" or "pt2" (the reports' noise_floor.low_pass_shape).
   const char* name() const;
   double cutoff_hz() const { return cutoff_hz_; }
+  // Half the variance of the filter's impulse response (s^2): a slow signal x comes out as
+  // x(t - mean) + (variance / 2) x'' to second order. A PT1's response k (1 - k)^n dt has
+  // variance RC (RC + dt), n stages in series n times that; a 2nd-order Butterworth's
+  // (Q = 1 / sqrt 2: 1 - sqrt 2 s / w0 + s^2 / w0^2 + ...) has none, to this order.
+  double bend_s2() const;
 
  private:
   Kind kind_;

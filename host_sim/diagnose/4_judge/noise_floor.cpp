@@ -84,6 +84,7 @@ struct SpectralFloor {
   double cutoff_hz = 0.0;      // the low-pass fitted (0: none)
   int order = 0;               // its order (low_pass_shape.hpp; 0: none)
   const char* shape = "none";  // its shape: LowPassShape::name()
+  double bend_s2 = 0.0;        // its bend of the motion: LowPassShape::bend_s2()
 };
 
 // The longest run of usable samples with no time gap inside.
@@ -293,6 +294,15 @@ NoiseSpectrum without_rounding(NoiseSpectrum s, double rounding) {
   return s;
 }
 
+// The filter's bend of the motion (LowPassShape::bend_s2) is its second-order term in
+// 2 pi f RC, f the motion's frequencies: it is given only where the cutoff lies at least
+// kBendAboveEdge times above the motion band's edge, where 2 pi f RC is under about 2/3 and the
+// terms after it are smaller still. At the edge it is not: a PT1 at 20 Hz behind 100 Hz
+// readings, fitted at the edge, bent by it, made its flights disagree more (scatter 7.9 -> 11.9,
+// test_filtered_scatter.cpp's tuning seeds), where at 50 Hz behind 4 kHz (2-3 times the edge)
+// the bend took a session's scatter from 3.9 to 1.6.
+constexpr double kBendAboveEdge = 1.5;
+
 // The noise's variance per axis behind `filter`: its power above the motion's band, and
 // below it the filter's shape at the level the bins above the band give it, and the
 // rounding's; and its correlation, the density at low frequencies over a white noise's of
@@ -323,6 +333,7 @@ SpectralFloor floor_behind(const NoiseSpectrum& s, std::size_t edge, double roun
   out.cutoff_hz = filter.cutoff_hz();
   out.order = filter.cutoff_hz() > 0.0 ? filter.order() : 0;
   out.shape = filter.cutoff_hz() > 0.0 ? filter.name() : "none";
+  out.bend_s2 = filter.cutoff_hz() >= kBendAboveEdge * edge * s.bin_hz ? filter.bend_s2() : 0.0;
   return out;
 }
 
@@ -347,9 +358,11 @@ std::optional<SpectralFloor> floor_from_spectrum(const Flight& flight, const std
     const Eigen::Vector3d sigma = (w * pt2.sigma.array().log() + (1.0 - w) * out.sigma.array().log()).exp();
     const double correlation =
         std::exp(w * std::log(pt2.correlation) + (1.0 - w) * std::log(out.correlation));
+    const double bend_s2 = w * pt2.bend_s2 + (1.0 - w) * out.bend_s2;
     if (w > 0.5) out = pt2;
     out.sigma = sigma;
     out.correlation = correlation;
+    out.bend_s2 = bend_s2;
   }
   return out;
 }
@@ -404,6 +417,7 @@ NoiseFloor estimate_noise_floor(const Flight& flight) {
       best.low_pass_hz = spectral->cutoff_hz;
       best.low_pass_order = spectral->order;
       best.low_pass_shape = spectral->shape;
+      best.low_pass_bend_s2 = spectral->bend_s2;
     }
   }
   hold_at_resolution(best, flight);

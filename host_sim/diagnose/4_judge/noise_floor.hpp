@@ -45,6 +45,9 @@ struct NoiseFloor {
   // and its shape: "butterworth", "pt1", "pt2" or "none".
   int low_pass_order = 0;
   const char* low_pass_shape = "none";
+  // Its bend of the motion (LowPassShape::bend_s2, s^2), the diagnosis's
+  // Flight::gyro_filter_bend_s2; 0 where none was fitted or its knee is too near the motion.
+  double low_pass_bend_s2 = 0.0;
   // What fits weigh the readings by: sigma * sqrt(correlation), the white noise whose
   // chi-square over the readings is that of the correlated noise over its independent
   // samples (the same low-frequency density).

@@ -78,6 +78,7 @@ FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nomi
     return d;
   }
   d.noise = estimate_noise_floor(flight);
+  flight.gyro_filter_bend_s2 = d.noise.low_pass_bend_s2;
   analysis.where.noise_floor = d.noise.sigma;
   analysis.where.noise_correlation = d.noise.correlation;
   const Vec3 inverse_sigma = d.noise.weighting_sigma().cwiseInverse();
