@@ -36,7 +36,8 @@ double worst_error(int stages, double cutoff_hz, double sample_hz, double sine_h
 TEST_CASE("a PT1's and a PT2's bend is half their impulse response's variance; a Butterworth's none",
           "[gyro_filter_bend]") {
   const double fs = 4000.0, fc = 50.0, dt = 1.0 / fs, rc = 1.0 / (2.0 * kPi * fc);
-  const LowPassShape pt1(LowPassShape::Kind::first_order, fc, fs), pt2(LowPassShape::Kind::two_first_order, fc, fs);
+  const LowPassShape pt1(LowPassShape::Kind::first_order, fc, fs),
+      pt2(LowPassShape::Kind::two_first_order, fc, fs);
   CHECK(pt1.bend_s2() == Approx(0.5 * rc * (rc + dt)).epsilon(1e-12));
   CHECK(pt2.bend_s2() == Approx(2.0 * pt1.bend_s2()).epsilon(1e-12));
   CHECK(LowPassShape(LowPassShape::Kind::butterworth, fc, fs).bend_s2() == 0.0);
@@ -46,7 +47,8 @@ TEST_CASE("a PT1's and a PT2's bend is half their impulse response's variance; a
   // behind a PT1 and (8/3) (w RC)^3 behind two, at most 7 % and 11 % of the bend here (3 % measured).
   for (int stages : {1, 2}) {
     const double bend = stages == 1 ? pt1.bend_s2() : pt2.bend_s2();
-    const double delayed = worst_error(stages, fc, fs, 2.0, 0.0), bent = worst_error(stages, fc, fs, 2.0, bend);
+    const double delayed = worst_error(stages, fc, fs, 2.0, 0.0),
+                 bent = worst_error(stages, fc, fs, 2.0, bend);
     INFO(stages << " stages: delayed " << delayed << ", bent " << bent);
     CHECK(delayed > 7e-4 * stages);
     CHECK(bent < 0.1 * delayed);
