@@ -367,10 +367,44 @@ std::optional<SpectralFloor> floor_from_spectrum(const Flight& flight, const std
   return out;
 }
 
+// A log that lay still gives the noise's spread as it is (floor_from_rest), but not how
+// correlated it is: behind a flight controller's low-pass its readings are correlated over
+// tens of samples, and a fit that counted each as independent weighed its evidence as many
+// times too strongly (a PT1 at 100 Hz behind 1 kHz, 400 Hz behind 4 kHz and a Butterworth at
+// 20 Hz behind 100 Hz, still before the throw: their flights disagreed, scatter 3.3-5.8,
+// test_filtered_scatter.cpp). The correlation, the filter and its bend come from the flight's
+// spectrum as without rest (floor_from_spectrum), for logs at kFastGyro_hz and above. Below,
+// the phone's rates (100-400 Hz), it is left at 1: taken there it moved 14 of the 65 reports of
+// tests/diagnose/make_reports.sh, the real racquet's second session's verdict among them (gyro
+// scale to inertia moments), and practice3/T00's tensor report for the worse (its nominal
+// Iy/Ix, right, then outside the interval): the phone's rules were set with it at 1.
+constexpr double kFastGyro_hz = 1000.0;
+// The spectrum's correlation is taken where it exceeds this: a white noise's reads 1 (the 1 kHz
+// flights with rest of ../shared/data/practice2/C00-C03: 1 + 1e-15, a Butterworth fitted at the
+// Nyquist rate), the filters of test_filtered_scatter.cpp's grid at 1-8 kHz 4 and more.
+constexpr double kCorrelatedAtRest = 1.5;
+
+NoiseFloor floor_from_rest_and_spectrum(const Flight& flight) {
+  NoiseFloor floor = floor_from_rest(flight);
+  const double rate_hz = flight.size() < 2 ? 0.0
+                                           : static_cast<double>(flight.size() - 1) /
+                                                 (flight.time_s.back() - flight.time_s.front());
+  if (!flight.gyro_input || flight.rates_from_differences || rate_hz < kFastGyro_hz) return floor;
+  const std::optional<SpectralFloor> spectral =
+      floor_from_spectrum(flight, steps_followed_by_gap(flight.time_s), reading_resolution(flight));
+  if (!spectral || spectral->cutoff_hz <= 0.0 || spectral->correlation < kCorrelatedAtRest) return floor;
+  floor.correlation = spectral->correlation;
+  floor.low_pass_hz = spectral->cutoff_hz;
+  floor.low_pass_order = spectral->order;
+  floor.low_pass_shape = spectral->shape;
+  floor.low_pass_bend_s2 = spectral->bend_s2;
+  return floor;
+}
+
 }  // namespace
 
 NoiseFloor estimate_noise_floor(const Flight& flight) {
-  if (flight.rest_noise) return floor_from_rest(flight);
+  if (flight.rest_noise) return floor_from_rest_and_spectrum(flight);
   NoiseFloor best;
   const std::vector<char> gap_after = steps_followed_by_gap(flight.time_s);
   const std::size_t n = flight.size();

@@ -237,8 +237,9 @@ json flight_report(const FlightDiagnosis& d) {
                         {"method", d.noise.method},
                         {"resolution_rad_s", d.noise.resolution},
                         {"reliable", d.noise.reliable}};
-  // Only where the spectrum gave the floor (the other methods take the noise as white).
-  if (std::string(d.noise.method) == "spectrum") {
+  // Only where the spectrum gave the floor or its correlation (a fast gyro's rest: noise_floor.cpp);
+  // elsewhere the noise is taken as white.
+  if (std::string(d.noise.method) == "spectrum" || d.noise.low_pass_hz > 0.0) {
     out["noise_floor"]["readings_per_independent_sample"] = d.noise.correlation;
     out["noise_floor"]["low_pass_hz"] = d.noise.low_pass_hz;
     out["noise_floor"]["low_pass_order"] = d.noise.low_pass_order;
