@@ -76,5 +76,21 @@ TEST_CASE("readings are bent by their second derivative, at uneven times and at 
     CHECK(added(1) == Approx(-2e-4).epsilon(1e-9));
     CHECK(std::abs(added(2)) < 1e-15);
   }
-  CHECK(samples_to_read(flight, ReadSamples{"", ""}).mask == nullptr);
+  // Only the samples a fit reads are bent, each from its own run's readings: a fold of chunks
+  // of 50 samples, the others' readings unread (here NaN) and left alone.
+  std::vector<char> mask(readings.size()), usable(readings.size(), 1);
+  readings = before;
+  for (std::size_t k = 0; k < readings.size(); ++k) {
+    mask[k] = (k / 50) % 2 == 0;
+    if (!mask[k]) readings[k].setConstant(std::nan(""));
+  }
+  bend_by_gyro_filter(flight, readings, ReadSamples{mask.data(), usable.data()});
+  for (std::size_t k = 0; k < readings.size(); ++k) {
+    if (!mask[k]) {
+      CHECK(std::isnan(readings[k](0)));
+      continue;
+    }
+    CHECK(readings[k](0) - before[k](0) == Approx(6e-4).epsilon(1e-9));
+    CHECK(readings[k](1) - before[k](1) == Approx(-2e-4).epsilon(1e-9));
+  }
 }

@@ -54,7 +54,6 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
   const std::size_t n = flight.size();
   readings.resize(n);
   if (n == 0) return;
-  read = samples_to_read(flight, read);
   const ModelTerms terms = model_terms(model, theta);
   FlightDynamics dynamics(terms, flight);
   dynamics.set_impulse_scale(model.nominal.tensor);
@@ -70,7 +69,7 @@ void predict_readings(const EffectModel& model, const Flight& flight, std::size_
     ReadingWalks::Walk up{start, ref}, down{start, ref};
     walk_together(paired_steps(dynamics), walks, up, layout.up, walks, down, layout.down);
   }
-  bend_by_gyro_filter(flight, readings);
+  bend_by_gyro_filter(flight, readings, read);
 }
 
 namespace {
@@ -126,10 +125,9 @@ void predict_readings_pair(const EffectModel& model, const Flight& flight, std::
   dynamics.set_impulse_scale(model.nominal.tensor);
   const WalkLayoutKey key = layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics);
   one_walks_side_by_side(paired_steps(dynamics), dynamics, dynamics, walk_layout(flight.time_s, key),
-                         key.jump_time, ref, omega_a, omega_b, readings_a, readings_b, n,
-                         samples_to_read(flight, read));
-  bend_by_gyro_filter(flight, readings_a);
-  bend_by_gyro_filter(flight, readings_b);
+                         key.jump_time, ref, omega_a, omega_b, readings_a, readings_b, n, read);
+  bend_by_gyro_filter(flight, readings_a, read);
+  bend_by_gyro_filter(flight, readings_b, read);
 }
 
 void predict_readings_two(const EffectModel& model, const Flight& flight, std::size_t ref,
@@ -164,9 +162,9 @@ void predict_readings_two(const EffectModel& model, const Flight& flight, std::s
     FlightDynamics::advance_two(lanes, dynamics_a, x, x_steps, hx, dynamics_b, y, y_steps, hy);
   };
   one_walks_side_by_side(advance_two, dynamics_a, dynamics_b, walk_layout(flight.time_s, key), key.jump_time,
-                         ref, omega_a, omega_b, readings_a, readings_b, n, samples_to_read(flight, read));
-  bend_by_gyro_filter(flight, readings_a);
-  bend_by_gyro_filter(flight, readings_b);
+                         ref, omega_a, omega_b, readings_a, readings_b, n, read);
+  bend_by_gyro_filter(flight, readings_a, read);
+  bend_by_gyro_filter(flight, readings_b, read);
 }
 
 }  // namespace aloft::host::diagnose

@@ -1,6 +1,7 @@
 #include "diagnose/2_model/gyro_filter_bend.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 namespace aloft::host::diagnose {
@@ -12,32 +13,56 @@ namespace {
 // under 1 %.
 constexpr double kBendSpan = 0.005;
 
-// The sample nearest time t among time_s (increasing).
-std::size_t nearest(const std::vector<double>& time_s, double t) {
-  const auto at = std::lower_bound(time_s.begin(), time_s.end(), t);
-  if (at == time_s.begin()) return 0;
-  if (at == time_s.end()) return time_s.size() - 1;
-  const std::size_t k = static_cast<std::size_t>(at - time_s.begin());
-  return t - time_s[k - 1] <= time_s[k] - t ? k - 1 : k;
+// The position in `run` (samples in time order) nearest time `target`, searched onwards from
+// `from`: the targets of one pass only grow, so each pass is linear in the run's length.
+std::size_t nearest_onwards(const std::vector<double>& t, const std::vector<std::size_t>& run,
+                            std::size_t from, double target) {
+  while (from + 1 < run.size() && std::abs(t[run[from + 1]] - target) <= std::abs(t[run[from]] - target))
+    ++from;
+  return from;
+}
+
+// The bend of the samples `run` lists, from their own readings. Each prediction bends its
+// readings (thousands a fit), so no search and no allocation a call: the second derivatives
+// go to a buffer kept per thread.
+void bend_run(const std::vector<double>& t, const std::vector<std::size_t>& run, double bend,
+              std::vector<Eigen::Vector3d>& readings) {
+  const std::size_t n = run.size();
+  if (n < 3 || t[run.back()] - t[run.front()] < 2.0 * kBendSpan) return;
+  thread_local std::vector<Eigen::Vector3d> second;
+  second.resize(n);
+  std::size_t before = 0, centre = 0, after = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double at = std::clamp(t[run[i]], t[run.front()] + kBendSpan, t[run.back()] - kBendSpan);
+    centre = nearest_onwards(t, run, centre, at);
+    const std::size_t m = std::clamp<std::size_t>(centre, 1, n - 2);
+    before = nearest_onwards(t, run, before, t[run[m]] - kBendSpan);
+    after = nearest_onwards(t, run, after, t[run[m]] + kBendSpan);
+    const std::size_t a = run[std::min(before, m - 1)], b = run[std::max(after, m + 1)], c = run[m];
+    const Eigen::Vector3d rise_before = (readings[c] - readings[a]) / (t[c] - t[a]);
+    const Eigen::Vector3d rise_after = (readings[b] - readings[c]) / (t[b] - t[c]);
+    second[i] = 2.0 * (rise_after - rise_before) / (t[b] - t[a]);
+  }
+  for (std::size_t i = 0; i < n; ++i) readings[run[i]] += bend * second[i];
 }
 
 }  // namespace
 
-void bend_by_gyro_filter(const Flight& flight, std::vector<Eigen::Vector3d>& readings) {
+void bend_by_gyro_filter(const Flight& flight, std::vector<Eigen::Vector3d>& readings, ReadSamples read) {
   const double bend = flight.gyro_filter_bend_s2;
+  if (bend <= 0.0) return;
   const std::vector<double>& t = flight.time_s;
-  if (bend <= 0.0 || t.size() < 3 || t.back() - t.front() < 2.0 * kBendSpan) return;
-  std::vector<Eigen::Vector3d> second(t.size());
+  thread_local std::vector<std::size_t> run;  // kept per thread, as bend_run's buffer
+  run.clear();
   for (std::size_t k = 0; k < t.size(); ++k) {
-    const double centre = std::clamp(t[k], t.front() + kBendSpan, t.back() - kBendSpan);
-    const std::size_t m = std::clamp<std::size_t>(nearest(t, centre), 1, t.size() - 2);
-    const std::size_t a = std::min(nearest(t, t[m] - kBendSpan), m - 1);
-    const std::size_t b = std::max(nearest(t, t[m] + kBendSpan), m + 1);
-    const Eigen::Vector3d rise_before = (readings[m] - readings[a]) / (t[m] - t[a]);
-    const Eigen::Vector3d rise_after = (readings[b] - readings[m]) / (t[b] - t[m]);
-    second[k] = 2.0 * (rise_after - rise_before) / (t[b] - t[a]);
+    if (!read.wanted(k)) continue;
+    if (!run.empty() && t[k] - t[run.back()] > kBendSpan) {
+      bend_run(t, run, bend, readings);
+      run.clear();
+    }
+    run.push_back(k);
   }
-  for (std::size_t k = 0; k < t.size(); ++k) readings[k] += bend * second[k];
+  bend_run(t, run, bend, readings);
 }
 
 }  // namespace aloft::host::diagnose

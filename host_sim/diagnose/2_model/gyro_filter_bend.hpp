@@ -17,16 +17,12 @@
 
 namespace aloft::host::diagnose {
 
-// The samples a prediction reads: where the flight's readings are bent, every sample (the
-// bend at one sample takes its neighbours' readings), else `read`.
-inline ReadSamples samples_to_read(const Flight& flight, ReadSamples read) {
-  return flight.gyro_filter_bend_s2 > 0.0 ? ReadSamples{} : read;
-}
-
-// Adds gyro_filter_bend_s2 times the readings' second derivative to each of them (none where
-// it is 0). The derivative is the three-point one over kBendSpan either side, so the cubic
-// pieces the readings are interpolated with between integration steps (reading_walks.hpp)
-// do not show; at the flight's ends, that of the nearest sample kBendSpan inside.
-void bend_by_gyro_filter(const Flight& flight, std::vector<Eigen::Vector3d>& readings);
+// Adds gyro_filter_bend_s2 times the readings' second derivative to each sample `read` wants
+// (none where it is 0). The derivative is the three-point one over kBendSpan either side among
+// those samples, so the cubic pieces the readings are interpolated with between integration
+// steps (reading_walks.hpp) do not show; within each run of them with no step longer than
+// kBendSpan (a fold's chunk, a flight), at its ends that of the nearest sample kBendSpan
+// inside. Only the samples read: a fit that reads half of them pays nothing more.
+void bend_by_gyro_filter(const Flight& flight, std::vector<Eigen::Vector3d>& readings, ReadSamples read = {});
 
 }  // namespace aloft::host::diagnose
