@@ -367,6 +367,15 @@ std::optional<SpectralFloor> floor_from_spectrum(const Flight& flight, const std
   return out;
 }
 
+// The spectrum's correlation and the low-pass it was read behind, into `floor`.
+void take_correlation(NoiseFloor& floor, const SpectralFloor& spectral) {
+  floor.correlation = spectral.correlation;
+  floor.low_pass_hz = spectral.cutoff_hz;
+  floor.low_pass_order = spectral.order;
+  floor.low_pass_shape = spectral.shape;
+  floor.low_pass_bend_s2 = spectral.bend_s2;
+}
+
 // A log that lay still gives the noise's spread as it is (floor_from_rest), but not how
 // correlated it is: behind a flight controller's low-pass its readings are correlated over
 // tens of samples, and a fit that counted each as independent weighed its evidence as many
@@ -392,12 +401,8 @@ NoiseFloor floor_from_rest_and_spectrum(const Flight& flight) {
   if (!flight.gyro_input || flight.rates_from_differences || rate_hz < kFastGyro_hz) return floor;
   const std::optional<SpectralFloor> spectral =
       floor_from_spectrum(flight, steps_followed_by_gap(flight.time_s), reading_resolution(flight));
-  if (!spectral || spectral->cutoff_hz <= 0.0 || spectral->correlation < kCorrelatedAtRest) return floor;
-  floor.correlation = spectral->correlation;
-  floor.low_pass_hz = spectral->cutoff_hz;
-  floor.low_pass_order = spectral->order;
-  floor.low_pass_shape = spectral->shape;
-  floor.low_pass_bend_s2 = spectral->bend_s2;
+  if (spectral && spectral->cutoff_hz > 0.0 && spectral->correlation >= kCorrelatedAtRest)
+    take_correlation(floor, *spectral);
   return floor;
 }
 
@@ -445,13 +450,9 @@ NoiseFloor estimate_noise_floor(const Flight& flight) {
         floor_from_spectrum(flight, gap_after, reading_resolution(flight));
     if (spectral && spectral->sigma.norm() > kUnderstated * best.sigma.norm()) {
       best.sigma = spectral->sigma.cwiseMax(1e-6);
-      best.correlation = spectral->correlation;
       best.reliable = true;
       best.method = "spectrum";
-      best.low_pass_hz = spectral->cutoff_hz;
-      best.low_pass_order = spectral->order;
-      best.low_pass_shape = spectral->shape;
-      best.low_pass_bend_s2 = spectral->bend_s2;
+      take_correlation(best, *spectral);
     }
   }
   hold_at_resolution(best, flight);
