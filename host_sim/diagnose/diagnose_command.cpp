@@ -180,8 +180,8 @@ nlohmann::json diagnose_report(const DiagnoseOptions& o, const DiagnoseOutput& o
   const Body body = read_body(o.body, o.body_json);
   const diagnose::NominalInertia nominal = diagnose::NominalInertia::of(body.inertia);
 
-  const Trial trial = read_trial(o, body);
-  const std::vector<diagnose::Flight>& flights = trial.flights;
+  Trial trial = read_trial(o, body);
+  std::vector<diagnose::Flight>& flights = trial.flights;  // the diagnosis sets each one's gyro filter
   const bool session = trial.session;
   const bool found_by_detector = trial.found_by_detector;
   const std::string& source = trial.source;

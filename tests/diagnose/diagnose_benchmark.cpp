@@ -33,7 +33,7 @@ aloft::generator::GeneratedFlight make(const char* effect, std::uint64_t seed) {
 
 void one_flight(benchmark::State& state) {
   const auto g = make("gyro_bias", 7);
-  const Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, "bench");
+  Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, "bench");
   const NominalInertia nominal = NominalInertia::of(g.body.inertia);
   for (auto _ : state) {
     FlightDiagnosis d = diagnose_flight(flight, nominal);
@@ -49,7 +49,7 @@ BENCHMARK(one_flight)->Unit(benchmark::kMillisecond)->UseRealTime();
 // peer takes; shared_us, per_sample_us: each one's time per prediction.
 void predict_one_flight(benchmark::State& state) {
   const auto g = make("inertia_axes", 7);
-  const Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, "bench");
+  Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, "bench");
   const EffectModel model(Effect::none, NominalInertia::of(g.body.inertia));
   const std::size_t ref = flight.size() / 2;
   const Eigen::Vector3d omega = body_rate_of_reading(flight, flight.omega[ref]);

@@ -162,7 +162,7 @@ TEST_CASE("a flight with gaps in its time stamps is judged, and the gaps reporte
     log.time_s.push_back(t);
     log.gyro_rad_s.push_back(g.imu.gyro_rad_s[k]);
   }
-  const Flight flight = flight_from_imu(log, g.body, -INFINITY, INFINITY, "gappy");
+  Flight flight = flight_from_imu(log, g.body, -INFINITY, INFINITY, "gappy");
   const FlightDiagnosis d = diagnose_flight(flight, NominalInertia::of(g.body.inertia));
   CHECK(d.gaps.size() == 2);
   CHECK(d.analysis.verdict.effect == Effect::none);
@@ -174,7 +174,7 @@ TEST_CASE("a saturated gyro's flat tops are left out, not read as an effect", "[
   for (const auto& w : g.imu.gyro_rad_s) peak = std::max(peak, w.cwiseAbs().maxCoeff());
   const double limit = 0.85 * peak;  // a gyro whose range the throw exceeds
   for (auto& w : g.imu.gyro_rad_s) w = w.cwiseMax(-limit).cwiseMin(limit);
-  const Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, "clipped");
+  Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, "clipped");
   const FlightDiagnosis d = diagnose_flight(flight, NominalInertia::of(g.body.inertia));
   CHECK(d.unusable_samples > 0);
   // Clipping bends the readings like a scale error would; with the flat tops out the
@@ -184,7 +184,7 @@ TEST_CASE("a saturated gyro's flat tops are left out, not read as an effect", "[
 
 TEST_CASE("fewer than 20 usable samples: no verdict, and it says why", "[diagnose]") {
   auto g = noise_only_flight(15);
-  const Flight flight = flight_from_imu(g.imu, g.body, 0.0, 0.012, "short");
+  Flight flight = flight_from_imu(g.imu, g.body, 0.0, 0.012, "short");
   const FlightDiagnosis d = diagnose_flight(flight, NominalInertia::of(g.body.inertia));
   CHECK(d.analysis.candidates.empty());
   CHECK_FALSE(d.analysis.verdict.confident);

@@ -99,7 +99,7 @@ TEST_CASE("noise alone behind a gyro's low-pass stays none", "[noise_floor][filt
   int flights = 0, none = 0, index = 500;
   for (const GridPoint& p : grid()) {
     const auto g = filtered_flight(p, "none", index++);
-    const Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, "grid");
+    Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, "grid");
     const FlightDiagnosis d = diagnose_flight(flight, NominalInertia::of(g.body.inertia));
     const bool ok = d.analysis.verdict.effect == Effect::none;
     ++flights;

@@ -57,7 +57,7 @@ Decisions decide(std::uint64_t first_seed, std::uint64_t end_seed) {
     for (std::uint64_t seed = first_seed; seed < end_seed; ++seed) {
       const auto g = impulse_flight(body, seed);
       const double t0 = *g.truth.onset_s;
-      const Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, body);
+      Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, body);
       const auto blow = impulse_force(flight, t0);
       const auto inner = impulse_force(without_blow(flight, g), t0);
       REQUIRE(blow);
@@ -82,7 +82,7 @@ TEST_CASE("impulse force: a blow is seen at the impulse, an inner step is not", 
 
 TEST_CASE("impulse force: a verdict the accelerometer does not back is not confident", "[impulse]") {
   const auto g = impulse_flight("box", 71);
-  const Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, "box");
+  Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, "box");
   const NominalInertia nominal = NominalInertia::of(g.body.inertia);
   const FlightDiagnosis blow = diagnose_flight(flight, nominal);
   REQUIRE(blow.analysis.verdict.effect == Effect::impulse);
@@ -90,7 +90,7 @@ TEST_CASE("impulse force: a verdict the accelerometer does not back is not confi
   for (const Note& n : blow.analysis.notes) noted = noted || n.text.find("shows a blow") != std::string::npos;
   CHECK(noted);
 
-  const Flight inner_flight = without_blow(flight, g);
+  Flight inner_flight = without_blow(flight, g);
   const FlightDiagnosis inner = diagnose_flight(inner_flight, nominal);
   REQUIRE(inner.analysis.verdict.effect == Effect::impulse);
   CHECK_FALSE(inner.analysis.verdict.confident);

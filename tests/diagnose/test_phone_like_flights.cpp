@@ -58,7 +58,7 @@ TEST_CASE("phone-like flights: right class on >= 90 %, none for noise, confident
     const gen::PhoneLikeFlight p = gen::generate_phone_like_flight(c.spec, c.seed);
     const std::vector<Segment> segments = read_back(p.segments_csv, c.name);
     REQUIRE(segments.size() == 1);
-    const std::vector<Flight> flights = flights_from_segments(p.flight.imu, p.flight.body, segments);
+    std::vector<Flight> flights = flights_from_segments(p.flight.imu, p.flight.body, segments);
     const FlightDiagnosis d = diagnose_flight(flights.front(), NominalInertia::of(p.flight.body.inertia));
     const nlohmann::json verdict = flight_report(d)["verdict"];
     const gen::VerdictScore score = gen::score_verdict(p.flight.truth, verdict);
@@ -104,7 +104,7 @@ TEST_CASE("phone-like sessions: right class on every one with an effect, a blank
     const gen::PhoneLikeSession s = gen::generate_phone_like_session(c.flight.spec, c.flights, c.flight.seed);
     const std::vector<Segment> segments = read_back(s.segments_csv, c.flight.name);
     REQUIRE(segments.size() == static_cast<std::size_t>(c.flights));
-    const std::vector<Flight> flights = flights_from_segments(s.log, s.first.body, segments);
+    std::vector<Flight> flights = flights_from_segments(s.log, s.first.body, segments);
     const SessionDiagnosis d = diagnose_session(flights, NominalInertia::of(s.first.body.inertia), 2);
     const nlohmann::json verdict = session_report(d)["verdict"];
     const gen::VerdictScore score = gen::score_verdict(s.first.truth, verdict);

@@ -48,7 +48,7 @@ TEST_CASE("practice flights: the verdict names the injected effect or its class"
   for (const auto& [name, answer] : truth.items()) {
     const fs::path dir = kPractice / name;
     const Body body = read_body_file((dir / "body.json").string());
-    const Flight flight =
+    Flight flight =
         fs::exists(dir / "imu.csv")
             ? flight_from_imu(read_imu_csv((dir / "imu.csv").string()), body, -1e300, 1e300, name)
             : flight_from_poses(fit_poses(read_marker_file((dir / "markers.trc").string()), body), name);
@@ -113,12 +113,12 @@ TEST_CASE("practice2 flights: compound, phone-like and sessions", "[practice2]")
     std::vector<std::string> said;
     try {
       if (kind == "compound") {
-        const FlightDiagnosis d = diagnose_flight(flight_from_imu(log, body, -1e300, 1e300, name), nominal);
+        Flight flight = flight_from_imu(log, body, -1e300, 1e300, name);
+        const FlightDiagnosis d = diagnose_flight(flight, nominal);
         for (const auto& e : d.analysis.verdict.effects) said.push_back(effect_name(e.effect));
         if (said.empty()) said.push_back("none");
       } else {
-        const auto flights =
-            flights_from_segments(log, body, read_segments_csv((dir / "segments.csv").string()));
+        auto flights = flights_from_segments(log, body, read_segments_csv((dir / "segments.csv").string()));
         if (kind == "phone") {
           said.push_back(effect_name(diagnose_flight(flights.front(), nominal).analysis.verdict.effect));
         } else {

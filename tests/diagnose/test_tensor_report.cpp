@@ -137,7 +137,7 @@ TEST_CASE("near-symmetric bodies: the plane whose axes the data cannot fix is na
       spec.body = body;
       spec.duration_s = 1.2;
       const auto g = aloft::generator::generate_flight(spec, seed);
-      const Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, body);
+      Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, body);
       const FlightDiagnosis d = diagnose_flight(flight, NominalInertia::of(g.body.inertia));
       CAPTURE(body, seed);
       REQUIRE(d.analysis.tensor);

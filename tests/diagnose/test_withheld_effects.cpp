@@ -73,9 +73,9 @@ TEST_CASE("withheld effects: right class in >= 90 %, none for noise, parameters 
   for (const auto& c : aloft::generator::withheld_effect_cases()) {
     const aloft::generator::GeneratedFlight g = aloft::generator::generate_flight(c.spec, c.seed);
     const NominalInertia nominal = NominalInertia::of(g.body.inertia);
-    const Flight flight = c.spec.data == aloft::generator::DataKind::imu
-                              ? flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, c.name)
-                              : flight_from_poses(fit_poses(g.markers, g.body), c.name);
+    Flight flight = c.spec.data == aloft::generator::DataKind::imu
+                        ? flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, c.name)
+                        : flight_from_poses(fit_poses(g.markers, g.body), c.name);
     const FlightDiagnosis d = diagnose_flight(flight, nominal);
     const Verdict& v = d.analysis.verdict;
     const std::string verdict = effect_name(v.effect);
@@ -144,7 +144,7 @@ TEST_CASE("compound flights: both effects named on >= 80 %", "[compound]") {
   for (const auto& c : aloft::generator::compound_effect_cases()) {
     const aloft::generator::GeneratedFlight g = aloft::generator::generate_flight(c.spec, c.seed);
     const NominalInertia nominal = NominalInertia::of(g.body.inertia);
-    const Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, c.name);
+    Flight flight = flight_from_imu(g.imu, g.body, -INFINITY, INFINITY, c.name);
     const FlightDiagnosis d = diagnose_flight(flight, nominal);
     const Verdict& v = d.analysis.verdict;
     std::string said;

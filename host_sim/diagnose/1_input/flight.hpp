@@ -51,9 +51,9 @@ struct Flight {
   // fitted it (noise_floor.hpp): the readings are the motion delayed by the response's mean
   // and bent by this times its second derivative, to second order. 0: no bend (no low-pass
   // fitted, a Butterworth's, whose bend vanishes, or a knee too near the motion's band for the
-  // second order to hold: noise_floor.cpp). Set by the diagnosis once the noise floor is known
-  // (diagnosis.cpp); the prediction bends its readings by it (gyro_filter_bend.hpp).
-  mutable double gyro_filter_bend_s2 = 0.0;
+  // second order to hold: noise_floor.cpp). Set by diagnose_flight once the noise floor is known
+  // (diagnosis.hpp); the prediction bends its readings by it (gyro_filter_bend.hpp).
+  double gyro_filter_bend_s2 = 0.0;
   // What of the given segment was contact, not flight (empty when nothing was cut).
   std::vector<Contact> contacts;
 

@@ -89,13 +89,16 @@ void predict_one_after_the_other(const EffectModel& model, const Flight& flight,
 
 // The one walk of each of two predictions from `ref`, the first or last sample (the
 // layout's other direction has no segments), side by side: advance_pair steps them
-// together (walk_together), each in its own body's terms.
+// together (walk_together), each in its own body's terms; then both are read through the
+// flight's gyro filter, as predict_readings reads one.
 template <class AdvancePair>
 void one_walks_side_by_side(const AdvancePair& advance_pair, const FlightDynamics& dynamics_a,
                             const FlightDynamics& dynamics_b, const WalkLayout& layout, double jump_time,
                             std::size_t ref, const Eigen::Vector3d& omega_a, const Eigen::Vector3d& omega_b,
                             std::vector<Eigen::Vector3d>& readings_a,
-                            std::vector<Eigen::Vector3d>& readings_b, std::size_t n, ReadSamples read) {
+                            std::vector<Eigen::Vector3d>& readings_b, const Flight& flight,
+                            ReadSamples read) {
+  const std::size_t n = flight.size();
   readings_a.resize(n);
   readings_b.resize(n);
   const ReadingWalks walks_a(dynamics_a, jump_time, readings_a, layout.weights, nullptr, read),
@@ -106,6 +109,8 @@ void one_walks_side_by_side(const AdvancePair& advance_pair, const FlightDynamic
   ReadingWalks::Walk a{start_a, ref}, b{start_b, ref};
   const std::vector<WalkSegment>& segments = layout.up.empty() ? layout.down : layout.up;
   walk_together(advance_pair, walks_a, a, segments, walks_b, b, segments);
+  bend_by_gyro_filter(flight, readings_a, read);
+  bend_by_gyro_filter(flight, readings_b, read);
 }
 
 }  // namespace
@@ -125,9 +130,7 @@ void predict_readings_pair(const EffectModel& model, const Flight& flight, std::
   dynamics.set_impulse_scale(model.nominal.tensor);
   const WalkLayoutKey key = layout_key(model, flight, ref, SampleStepping::shared_steps, dynamics);
   one_walks_side_by_side(paired_steps(dynamics), dynamics, dynamics, walk_layout(flight.time_s, key),
-                         key.jump_time, ref, omega_a, omega_b, readings_a, readings_b, n, read);
-  bend_by_gyro_filter(flight, readings_a, read);
-  bend_by_gyro_filter(flight, readings_b, read);
+                         key.jump_time, ref, omega_a, omega_b, readings_a, readings_b, flight, read);
 }
 
 void predict_readings_two(const EffectModel& model, const Flight& flight, std::size_t ref,
@@ -162,9 +165,7 @@ void predict_readings_two(const EffectModel& model, const Flight& flight, std::s
     FlightDynamics::advance_two(lanes, dynamics_a, x, x_steps, hx, dynamics_b, y, y_steps, hy);
   };
   one_walks_side_by_side(advance_two, dynamics_a, dynamics_b, walk_layout(flight.time_s, key), key.jump_time,
-                         ref, omega_a, omega_b, readings_a, readings_b, n, read);
-  bend_by_gyro_filter(flight, readings_a, read);
-  bend_by_gyro_filter(flight, readings_b, read);
+                         ref, omega_a, omega_b, readings_a, readings_b, flight, read);
 }
 
 }  // namespace aloft::host::diagnose

@@ -65,7 +65,7 @@ void find_onset(Analysis& analysis, const Flight& flight, const NominalInertia& 
 
 }  // namespace
 
-FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nominal) {
+FlightDiagnosis diagnose_flight(Flight& flight, const NominalInertia& nominal) {
   FlightDiagnosis d = describe_flight(flight);
   Analysis& analysis = d.analysis;
   const std::size_t usable = flight.size() - d.unusable_samples;

@@ -46,13 +46,17 @@ struct SessionDiagnosis {
   std::optional<FlipPeriodSummary> flip_period;
 };
 
-// One flight. Never throws for data it cannot judge: the verdict says so instead.
-FlightDiagnosis diagnose_flight(const Flight& flight, const NominalInertia& nominal);
+// One flight. Never throws for data it cannot judge: the verdict says so instead. Sets the
+// flight's gyro_filter_bend_s2 from its noise floor, so that every later prediction of it (a
+// session's pooled fits, the plots) reads the motion through the same filter; the result
+// points at the flight (plots), which must outlive it.
+FlightDiagnosis diagnose_flight(Flight& flight, const NominalInertia& nominal);
 
 // A session: every flight on its own, and the pooled analysis with effects shared by all
 // flights, judged by leaving one flight out. `threads` >= 1. `flights_done`, when set, is
-// told about every 100 ms how many flights have been diagnosed on their own.
-SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const NominalInertia& nominal,
+// told about every 100 ms how many flights have been diagnosed on their own. Each flight's
+// gyro_filter_bend_s2 is set as diagnose_flight sets it.
+SessionDiagnosis diagnose_session(std::vector<Flight>& flights, const NominalInertia& nominal,
                                   int threads = 2, const ParallelProgress& flights_done = {});
 
 }  // namespace aloft::host::diagnose

@@ -125,8 +125,8 @@ void describe_pooled_baseline(Analysis& analysis, const PooledData& pool, const 
 
 }  // namespace
 
-SessionDiagnosis diagnose_session(const std::vector<Flight>& flights, const NominalInertia& nominal,
-                                  int threads, const ParallelProgress& flights_done) {
+SessionDiagnosis diagnose_session(std::vector<Flight>& flights, const NominalInertia& nominal, int threads,
+                                  const ParallelProgress& flights_done) {
   SessionDiagnosis session;
   session.flights.resize(flights.size());
   const unsigned workers = static_cast<unsigned>(std::max(threads, 1));
