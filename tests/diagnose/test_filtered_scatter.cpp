@@ -23,7 +23,6 @@
 #include "diagnose/4_judge/noise_floor.hpp"
 #include "generator/body_catalogue.hpp"
 #include "generator/flight_generator.hpp"
-#include "generator/gyro_filter.hpp"
 #include "generator/seeded_random.hpp"
 
 using namespace aloft::host;
@@ -103,9 +102,8 @@ const double kExpectedSpread = std::sqrt(2.0 / ((kFlights - 1) * 3.0));
 constexpr double kRestBefore_s = 2.0, kRestGap_s = 1.0;
 aloft::host::ImuLog with_rest_before(const aloft::generator::GeneratedFlight& g) {
   const aloft::generator::FlightSpec& spec = g.spec;
-  const double dt = 1.0 / spec.imu_rate_hz, q = spec.gyro_quantum_rad_s;
-  aloft::generator::GyroFilter filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, dt, spec.gyro_pt1_stages,
-                                      spec.gyro_later_stage_ratio);
+  const double dt = 1.0 / spec.imu_rate_hz;
+  aloft::generator::GyroFilter filter = aloft::generator::gyro_filter_of(spec);
   aloft::generator::SeededRandom rng(g.seed + 1000003);
   aloft::host::ImuLog log;
   const double start = g.imu.time_s.front() - kRestGap_s - kRestBefore_s;
@@ -114,7 +112,7 @@ aloft::host::ImuLog with_rest_before(const aloft::generator::GeneratedFlight& g)
     Eigen::Vector3d reading = rng.normal_vector(spec.gyro_noise_rad_s);
     if (spec.gyro_cutoff_hz > 0.0) reading = filter(reading);
     if (k < 0) continue;  // the filter settling
-    if (q > 0.0) reading = (reading / q).array().round().matrix() * q;
+    reading = aloft::generator::quantised_reading(spec, reading);
     log.time_s.push_back(start + k * dt);
     log.gyro_rad_s.push_back(reading);
     if (!g.imu.accel_m_s2.empty()) log.accel_m_s2.push_back(Eigen::Vector3d(0.0, 0.0, 9.81));

@@ -520,8 +520,7 @@ void add_dissipation_measured(const FlightSpec& spec, const std::vector<TrueSamp
 // constants of the cutoff).
 double filter_correlation(const FlightSpec& spec) {
   if (!(spec.gyro_cutoff_hz > 0.0)) return 1.0;
-  GyroFilter filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, 1.0 / spec.imu_rate_hz, spec.gyro_pt1_stages,
-                    spec.gyro_later_stage_ratio);
+  GyroFilter filter = gyro_filter_of(spec);
   const int steps = static_cast<int>(std::ceil(40.0 * spec.imu_rate_hz / spec.gyro_cutoff_hz)) + 10;
   double sum = 0.0, squares = 0.0;
   for (int k = 0; k < steps; ++k) {
@@ -537,22 +536,17 @@ double filter_correlation(const FlightSpec& spec) {
 // (quantisation included).
 Eigen::Vector3d record_gyro(const FlightSpec& spec, const Throw& thrown, const InjectedEffect& effect,
                             const TrueFlight& flight, SeededRandom& noise_rng, host::ImuLog& log) {
-  const double step_s = 1.0 / spec.imu_rate_hz;
   const Eigen::Matrix3d body_to_sensor = effect.imu_to_body.conjugate().toRotationMatrix();
   const Eigen::Vector3d gain = Eigen::Vector3d::Ones() + effect.scale_error;
   // The filter is linear: the readings' noise is the filtered noise sequence, kept
   // apart to measure its spread; filtering reading and noise separately adds up to
   // filtering their sum.
-  GyroFilter signal_filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, step_s, spec.gyro_pt1_stages,
-                           spec.gyro_later_stage_ratio),
-      noise_filter(spec.gyro_filter_order, spec.gyro_cutoff_hz, step_s, spec.gyro_pt1_stages,
-                   spec.gyro_later_stage_ratio);
+  GyroFilter signal_filter = gyro_filter_of(spec), noise_filter = gyro_filter_of(spec);
   if (spec.gyro_cutoff_hz > 0.0) {
     settle_on_motion_before(
         signal_filter, effect.physics, thrown.omega0_body, spec.gyro_cutoff_hz, spec.imu_rate_hz,
         [&](const Eigen::Vector3d& w) { return gain.cwiseProduct(body_to_sensor * w) + effect.bias; });
   }
-  const double q = spec.gyro_quantum_rad_s;
   Eigen::Vector3d noise_squares = Eigen::Vector3d::Zero();
   for (const FlightState& state : flight.states) {
     const Eigen::Vector3d w_sensor = body_to_sensor * state.omega_body;
@@ -562,11 +556,8 @@ Eigen::Vector3d record_gyro(const FlightSpec& spec, const Throw& thrown, const I
       reading = signal_filter(reading);
       noise = noise_filter(noise);
     }
-    Eigen::Vector3d logged = reading + noise;
-    if (q > 0.0) {
-      logged = (logged / q).array().round().matrix() * q;
-      noise = logged - reading;
-    }
+    const Eigen::Vector3d logged = quantised_reading(spec, reading + noise);
+    if (spec.gyro_quantum_rad_s > 0.0) noise = logged - reading;
     noise_squares += noise.cwiseAbs2();
     log.gyro_rad_s.push_back(logged);
   }
@@ -664,6 +655,16 @@ FlightTruth truth_of(const FlightSpec& spec, const BodyModel& body, const Throw&
 }
 
 }  // namespace
+
+GyroFilter gyro_filter_of(const FlightSpec& spec) {
+  return GyroFilter(spec.gyro_filter_order, spec.gyro_cutoff_hz, 1.0 / spec.imu_rate_hz, spec.gyro_pt1_stages,
+                    spec.gyro_later_stage_ratio);
+}
+
+Eigen::Vector3d quantised_reading(const FlightSpec& spec, const Eigen::Vector3d& reading) {
+  const double q = spec.gyro_quantum_rad_s;
+  return q > 0.0 ? Eigen::Vector3d((reading / q).array().round().matrix() * q) : reading;
+}
 
 const std::vector<std::string>& effect_names() {
   static const std::vector<std::string> names = {

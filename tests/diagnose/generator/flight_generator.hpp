@@ -65,6 +65,7 @@
 
 #include "common/body_file.hpp"
 #include "common/trial.hpp"
+#include "gyro_filter.hpp"
 
 namespace aloft::generator {
 
@@ -210,5 +211,10 @@ struct GeneratedFlight {
 GeneratedFlight generate_flight(const FlightSpec& spec, std::uint64_t seed);
 
 nlohmann::json truth_to_json(const FlightTruth& truth);
+
+// How the spec's gyro logs a reading, for logs made beside generate_flight's (a rest before a
+// flight): its low-pass at the spec's rate, and the rounding to its quantum (none at 0).
+GyroFilter gyro_filter_of(const FlightSpec& spec);
+Eigen::Vector3d quantised_reading(const FlightSpec& spec, const Eigen::Vector3d& reading);
 
 }  // namespace aloft::generator
