@@ -1,24 +1,12 @@
 #include "replay/replay_report_text.hpp"
 
+#include "common/printf_text.hpp"
 #include "common/tensor_estimate_json.hpp"
-
-#include <cstdarg>
-#include <cstdio>
 
 namespace aloft::host {
 namespace {
 
 constexpr double kRadToDeg = 57.29577951308232;
-
-std::string printf_text(const char* format, ...) __attribute__((format(printf, 1, 2)));
-std::string printf_text(const char* format, ...) {
-  char buffer[256];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(buffer, sizeof buffer, format, args);
-  va_end(args);
-  return buffer;
-}
 
 std::string flight_row(const ReplayResult& result, const FlightResult<float>& f) {
   const std::string landing =

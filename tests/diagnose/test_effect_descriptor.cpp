@@ -127,6 +127,22 @@ TEST_CASE("each effect's JSON has its SPEC §4 keys, and none has none; its text
   }
 }
 
+// The words of a session's spin-up, flight by flight: each flight's number, start, time constant
+// and |h| where the text says they are (printf_text's format is checked by the compiler; a
+// flight's number once came out as another value's bits).
+TEST_CASE("a session's spin-up is worded flight by flight", "[effect_descriptor]") {
+  EffectParameters p;
+  p.vector = Eigen::Vector3d(0.0, 0.0, 0.06);
+  p.spin_up_start_s = 0.065;
+  p.spin_up_time_constant_s = 0.040;
+  p.spin_up_flights = {{Eigen::Vector3d(0.0, 0.0, 0.05), 0.046, 0.059, 0.0},
+                       {Eigen::Vector3d(0.0, 0.0, 0.06), 0.065, 0.040, 0.0}};
+  const std::string text = params_text(Effect::internal_momentum_spin_up, p);
+  CAPTURE(text);
+  CHECK(text.find("flight 1 from 46 ms, time constant 59 ms, |h| 0.05 N m s") != std::string::npos);
+  CHECK(text.find("flight 2 from 65 ms, time constant 40 ms, |h| 0.06 N m s") != std::string::npos);
+}
+
 TEST_CASE("a start grid is complete: starts and a joining start of the effect's size, minima told apart",
           "[effect_descriptor]") {
   int grids = 0;

@@ -22,7 +22,7 @@
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/flight_model.hpp"
 #include "diagnose/2_model/momentum_from_readings.hpp"
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 #include "diagnose/4_judge/between_flight_scatter.hpp"
 #include "diagnose/4_judge/momentum_moment_equivalence.hpp"
 #include "diagnose/5_flow/diagnosis.hpp"

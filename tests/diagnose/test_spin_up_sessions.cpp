@@ -19,7 +19,7 @@
 #include "diagnose/2_model/flight_model.hpp"
 #include "diagnose/2_model/spin_up_from_readings.hpp"
 #include "diagnose/2_model/spin_up_profile.hpp"
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 #include "diagnose/5_flow/diagnosis.hpp"
 #include "generator/flight_controller_cases.hpp"
 #include "generator/perturbed_rigid_body.hpp"

@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 #include "diagnose/4_judge/tensor_intervals.hpp"
 
 namespace aloft::host::diagnose {

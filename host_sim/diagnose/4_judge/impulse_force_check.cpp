@@ -6,7 +6,7 @@
 
 #include "aloft/onboard/lever_arm_estimate.hpp"
 #include "diagnose/1_input/body_kinematics.hpp"
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 
 namespace aloft::host::diagnose {
 namespace {

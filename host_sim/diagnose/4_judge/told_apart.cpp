@@ -1,6 +1,6 @@
 #include "diagnose/4_judge/told_apart.hpp"
 
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 #include "diagnose/4_judge/between_flight_scatter.hpp"
 #include "diagnose/4_judge/confidence.hpp"
 

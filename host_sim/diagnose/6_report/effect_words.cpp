@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstddef>
 
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 #include "diagnose/6_report/json_values.hpp"
 
 namespace aloft::host::diagnose {
@@ -154,8 +154,9 @@ std::string internal_momentum_spin_up_text(const EffectParameters& p) {
                      axis(1), axis(2));
   for (std::size_t j = 0; j < p.spin_up_flights.size(); ++j) {
     const EffectParameters::SpinUpFlight& f = p.spin_up_flights[j];
-    out += printf_text(" flight %zu from %.0f ms, %.0f ms, |h| %.3g, %.3g N m s at its end;", j + 1,
-                       1000.0 * f.start_s, 1000.0 * f.time_constant_s, f.final_h.norm(), f.h_at_end().norm());
+    out += printf_text(
+        " flight %zu from %.0f ms, time constant %.0f ms, |h| %.3g N m s, %.3g N m s at its end;", j + 1,
+        1000.0 * f.start_s, 1000.0 * f.time_constant_s, f.final_h.norm(), f.h_at_end().norm());
   }
   out.pop_back();
   return out;

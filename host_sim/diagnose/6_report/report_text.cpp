@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 #include "diagnose/6_report/effect_words.hpp"
 
 namespace aloft::host::diagnose {
@@ -106,7 +106,7 @@ std::string session_summary(const SessionDiagnosis& s) {
                           : " flights (pooled, held out: leave one flight out)\n")
       << analysis_summary(s.pooled);
   if (s.flip_period) {
-    out << printf_text("  flip period from the first sample, %.0f flights: mean error %.1f %% nominal",
+    out << printf_text("  flip period from the first sample, %d flights: mean error %.1f %% nominal",
                        s.flip_period->flights, 100.0 * s.flip_period->mean_error_nominal);
     std::string model;
     for (const VerdictEffect& e : s.pooled.verdict.effects)
@@ -118,7 +118,7 @@ std::string session_summary(const SessionDiagnosis& s) {
     out << "\n";
     if (s.flip_period->fitted_flights > 0) {
       out << printf_text(
-                 "  flip period from each flight's fitted initial state, %.0f flights: mean error %.1f %% "
+                 "  flip period from each flight's fitted initial state, %d flights: mean error %.1f %% "
                  "nominal, ",
                  s.flip_period->fitted_flights, 100.0 * s.flip_period->mean_error_nominal_fitted)
           << printf_text("%.1f %% with ", 100.0 * s.flip_period->mean_error_diagnosed_fitted) << model

@@ -1,6 +1,6 @@
 // `gyro_bias`: measured = true + b. theta = b (rad/s, sensor axes).
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 
 namespace aloft::host::diagnose {
 namespace {

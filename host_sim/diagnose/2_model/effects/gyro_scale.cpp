@@ -1,7 +1,7 @@
 // `gyro_scale`: measured_i = (1 + s_i) true_i. theta = s (sensor axes).
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/moment_scale_equivalence.hpp"
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 
 namespace aloft::host::diagnose {
 namespace {

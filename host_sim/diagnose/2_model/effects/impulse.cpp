@@ -3,7 +3,7 @@
 // moves from one sample to the next), so start_search.cpp searches it, and the ranking
 // charges it as a parameter all the same.
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 
 namespace aloft::host::diagnose {
 namespace {

@@ -4,7 +4,7 @@
 #include "aloft/dynamics/rotation.hpp"
 #include "diagnose/2_model/canonical_rotation.hpp"
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 
 namespace aloft::host::diagnose {
 namespace {

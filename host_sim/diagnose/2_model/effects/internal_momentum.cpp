@@ -11,7 +11,7 @@
 // the two, so a session is where a rotor can be named (`named_only_when_told_apart`).
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/momentum_from_readings.hpp"
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 
 namespace aloft::host::diagnose {
 namespace {

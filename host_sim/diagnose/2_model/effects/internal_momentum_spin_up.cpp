@@ -13,7 +13,7 @@
 #include <cmath>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
-#include "diagnose/2_model/printf_text.hpp"
+#include "common/printf_text.hpp"
 #include "diagnose/2_model/spin_up_from_readings.hpp"
 #include "diagnose/2_model/spin_up_profile.hpp"
 
