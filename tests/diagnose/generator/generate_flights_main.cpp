@@ -8,13 +8,18 @@
 //   aloft_generate_flights --out DIR --phone         the phone-like flights and sessions
 //                                                    (imu.csv is the whole log; the
 //                                                    flights are in segments.csv)
+//   aloft_generate_flights --out DIR --flight-controller   flight-controller sessions, one
+//                                                    of each kind (a spin-up rotor and its
+//                                                    look-alikes), laid out as --phone's
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "body_catalogue.hpp"
 #include "compound_effect_cases.hpp"
+#include "flight_controller_cases.hpp"
 #include "common/atomic_file.hpp"
 #include "common/commands.hpp"
 #include "flight_files.hpp"
@@ -70,6 +75,35 @@ void write_phone_like(const std::string& out, nlohmann::json& all) {
   }
 }
 
+// The flights of a session one after another in one log, each on its own clock moved on to
+// kBetweenFlights_s after the last one's end (the log has no samples there, as a flight
+// controller's log between two armings), with a segments file naming each.
+constexpr double kBetweenFlights_s = 1.0;
+void write_flight_controller(const std::string& out, nlohmann::json& all) {
+  for (const SessionCase& c : flight_controller_session_cases(RotorSeeds::fresh, 1, 4)) {
+    GeneratedFlight joined;
+    std::string segments = "segment,start,end,keep,comment\n";
+    double offset = 0.0;
+    for (std::size_t j = 0; j < c.flights.size(); ++j) {
+      const GeneratedFlight g = generate_flight(c.flights[j], c.seed);
+      if (j == 0) joined = g;
+      aloft::host::ImuLog& log = joined.imu;
+      if (j > 0) {
+        for (double t : g.imu.time_s) log.time_s.push_back(offset + t);
+        log.gyro_rad_s.insert(log.gyro_rad_s.end(), g.imu.gyro_rad_s.begin(), g.imu.gyro_rad_s.end());
+        log.accel_m_s2.insert(log.accel_m_s2.end(), g.imu.accel_m_s2.begin(), g.imu.accel_m_s2.end());
+        log.rotor_rad_s.insert(log.rotor_rad_s.end(), g.imu.rotor_rad_s.begin(), g.imu.rotor_rad_s.end());
+      }
+      char row[160];
+      std::snprintf(row, sizeof row, "flight%zu,%.6f,%.6f,true,\n", j + 1, offset + g.imu.time_s.front(),
+                    offset + g.imu.time_s.back());
+      segments += row;
+      offset = log.time_s.back() + kBetweenFlights_s;
+    }
+    write_logged(joined, segments, out, c.name, c.seed, all);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -80,9 +114,13 @@ int main(int argc, char** argv) {
   int limit = -1;
   bool phone = false;
   bool compound = false;
+  bool flight_controller = false;
   app.add_option("--out", out_dir, "folder to write into")->required();
   app.add_flag("--compound", compound, "write the compound flights, two effects each (issue 8)");
   app.add_flag("--phone", phone, "write the phone-like flights and sessions (issue 8)");
+  app.add_flag(
+      "--flight-controller", flight_controller,
+      "write flight-controller sessions: a rotor spun up after release and its look-alikes (issue 44)");
   app.add_option("--random", random_count,
                  "write this many random flights instead of the "
                  "withheld-effect cases")
@@ -92,9 +130,10 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
-    if (phone) {
+    if (phone || flight_controller) {
       nlohmann::json all = nlohmann::json::object();
-      write_phone_like(out_dir, all);
+      if (phone) write_phone_like(out_dir, all);
+      if (flight_controller) write_flight_controller(out_dir, all);
       aloft::host::write_file_atomically((std::filesystem::path(out_dir) / "truth.json").string(),
                                          [&](std::ostream& o) { o << all.dump(1) << '\n'; });
       return 0;
