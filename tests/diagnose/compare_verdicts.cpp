@@ -5,9 +5,16 @@
 //   diagnose_compare_verdicts REF_DIR NEW_DIR [SCORE_TOLERANCE [RELATIVE_TOLERANCE]]
 //     Identical: each verdict's (and each session flight's) effect, equivalent,
 //     indistinguishable_from, confident and the effects of its final model. Within the
-//     tolerances: every candidate's score (absolute, score units; default 1.0, the
-//     ranking's kScoreRoundingTolerance) and the verdict's held-out errors (relative;
+//     tolerances: every identifiable candidate's score (absolute, score units; default 1.0,
+//     the ranking's kScoreRoundingTolerance) and the verdict's held-out errors (relative;
 //     default 1e-6). Prints each difference, then the largest differences measured.
+//     A candidate is its effect and, where it has one, its profile (a steady rotor and a
+//     spun-up one are both `internal_momentum`). A candidate the report marks not
+//     identifiable is left out of the scores: the data leave a direction of its parameters
+//     unpinned, so where each fold's fit stops along it, and so its held-out score, rests
+//     on the last bits. What such a score changes of the outcome is still compared: the
+//     verdict's effect, ties and confidence, and its held-out errors, whichever candidate
+//     it took.
 //     Exit 0: all agree; 1: a difference; 2: bad use or a missing report.
 //   diagnose_compare_verdicts --libm-probe
 //     Prints a hash of sin, cos, exp, log, pow and atan2 over 200000 arguments.
@@ -54,7 +61,15 @@ struct Measured {
   double score = 0.0;
   double relative = 0.0;
   int differences = 0;
+  int unidentifiable = 0;  // candidates whose scores were not compared
 };
+
+// A candidate's name in the report: its effect, and its profile where it has one.
+std::string candidate_key(const json& c) {
+  const json params = c.value("params", json::object());
+  return c.value("effect", "") +
+         (params.contains("profile") ? "/" + params["profile"].get<std::string>() : "");
+}
 
 json verdict_names(const json& v) {
   json effects = json::array();
@@ -112,8 +127,12 @@ void compare_analysis(const std::string& where, const json& a, const json& b, co
   for (const json& ca : a.value("candidates", json::array())) {
     if (!ca.contains("score")) continue;
     for (const json& cb : b.value("candidates", json::array())) {
-      if (cb.value("effect", "") != ca.value("effect", "") || !cb.contains("score")) continue;
-      compare_scores(where + ": " + ca.value("effect", ""), ca["score"], cb["score"], tol, m);
+      if (candidate_key(cb) != candidate_key(ca) || !cb.contains("score")) continue;
+      if (!ca.value("identifiable", true) || !cb.value("identifiable", true)) {
+        ++m.unidentifiable;
+        continue;
+      }
+      compare_scores(where + ": " + candidate_key(ca), ca["score"], cb["score"], tol, m);
     }
   }
 }
@@ -166,7 +185,9 @@ int main(int argc, char** argv) {
   }
   std::printf(
       "compare_verdicts: %d reports, %d differences; largest score difference %.3g (tolerance %.3g), largest "
-      "relative difference of held-out errors %.3g (tolerance %.3g)\n",
-      reports, m.differences, m.score, tol.score, m.relative, tol.relative);
+      "relative difference of held-out errors %.3g (tolerance %.3g); %d scores of candidates not "
+      "identifiable "
+      "left out\n",
+      reports, m.differences, m.score, tol.score, m.relative, tol.relative, m.unidentifiable);
   return reports > 0 && m.differences == 0 ? 0 : 1;
 }

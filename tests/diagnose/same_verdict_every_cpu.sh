@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The same verdict on every CPU (issue 30): `aloft diagnose` on the withheld-effect flights
-# of the generator (70, every effect and noise-only) and, where ../shared is present, the
+# of the generator (70, every effect and noise-only), its five flight-controller sessions (1-8
+# kHz logs behind a PT1: a spin-up rotor and its look-alikes, issue 44: the noise
+# spectrum's fit and the filter's bend run there) and, where ../shared is present, the
 # 16 flights of ../shared/data/practice, once per libm dispatch target, and the verdicts
 # compared (diagnose_compare_verdicts: identical verdicts, scores within the ranking's
 # rounding tolerance, held-out errors within 1e-6 relative).
@@ -31,8 +33,9 @@ done
 rm -rf "$out"
 mkdir -p "$out/flights"
 "$generator" --out "$out/flights" >/dev/null
+"$generator" --out "$out/sessions" --flight-controller >/dev/null
 
-# One line per flight: NAME BODY --imu|--markers FILE
+# One line per flight or session: NAME BODY --imu|--markers FILE [--segments FILE]
 list="$out/flights.txt"
 : >"$list"
 add_flights() {  # add_flights PREFIX DIR...
@@ -49,6 +52,10 @@ add_flights() {  # add_flights PREFIX DIR...
   done
 }
 add_flights "" "$out"/flights/*/
+for dir in "$out"/sessions/*/; do
+  dir=${dir%/}
+  echo "fc-$(basename "$dir") $dir/body.json --imu $dir/imu.csv --segments $dir/segments.csv" >>"$list"
+done
 if [ -n "$shared" ] && [ -d "$shared/data/practice" ]; then
   add_flights practice- "$shared"/data/practice/*/
 else
@@ -96,11 +103,12 @@ for t in $targets; do
   fi
   export ALOFT_TUNABLES_FOR_RUN
   ALOFT_TUNABLES_FOR_RUN=$(tunables_of "$t")
-  xargs -P 2 -L 1 bash -c 'GLIBC_TUNABLES=$ALOFT_TUNABLES_FOR_RUN "$0" diagnose --body "$2" "$3" "$4" \
-      --json "$5/$1.json" >"$5/$1.txt" 2>&1 || true' "$aloft" <<<"$(sed "s|\$| $out/$t|" "$list")"
+  # Each line's fields: the name, the body, the data's options, and the folder to write into.
+  xargs -P 2 -L 1 bash -c 'dest=${!#}; GLIBC_TUNABLES=$ALOFT_TUNABLES_FOR_RUN "$0" diagnose --body "$2" \
+      "${@:3:$#-3}" --json "$dest/$1.json" >"$dest/$1.txt" 2>&1 || true' "$aloft" <<<"$(sed "s|\$| $out/$t|" "$list")"
 done
 status=0
 "$compare" "$out/baseline" "$out/avx2" || status=1
 "$compare" "$out/avx512" "$out/avx2" || status=1
-echo "same_verdict_every_cpu: $(wc -l <"$list") flights under $targets"
+echo "same_verdict_every_cpu: $(wc -l <"$list") flights and sessions under $targets"
 exit $status
