@@ -368,8 +368,8 @@ class OnboardPipeline {
     // in it: a turning rotor's torque is not in the blocks' sums.
     const bool rotor_turned = rotor_present() && speeds_.turned_since(window_.oldest_index());
     const Mat3<Scalar>* torque_tensor = rotor_turned ? nullptr : &inertia_.tensor();
-    const WindowedRelease<Scalar> w =
-        window_.date(release_index_, current_.release_us, ball, later_look, torque_tensor);
+    const WindowedRelease<Scalar> w = window_.date(release_index_, current_.release_us, ball, later_look,
+                                                   torque_tensor, later_look && moved_by_window_);
     if (!w.decided) return true;
     if (later_look) {
       // It only ever dates the release later, past a push the first look took for flight,
@@ -387,7 +387,8 @@ class OnboardPipeline {
       return false;
     }
     look_again_ = !w.settled;
-    if (w.release_us != current_.release_us) redate_release(w);
+    moved_by_window_ = w.release_us != current_.release_us;
+    if (moved_by_window_) redate_release(w);
     return true;
   }
 
@@ -567,6 +568,7 @@ class OnboardPipeline {
   bool release_missed_given_r_ = false;  // the open flight's release was found with a fitted r
   bool on_probation_ = false;            // the release is still to be dated over the window
   bool look_again_ = false;              // dated, but the window looks once more (not settled)
+  bool moved_by_window_ = false;         // the window's first look moved the release (dated over blocks)
   bool finished_ = false;
   bool tensor_pending_ = false;  // the finished flight's tensor estimate is still to be solved
   // Last: without rotor support it holds nothing, and takes one byte beside the flags.

@@ -437,12 +437,17 @@ class ReleaseDetector {
   //    j0, the first at flight level. The last of a force that fades hides in the noise
   //    there, so the line runs on past j0 (noise at j0 can only move the release later).
   //    A weak push that never rose that high (a finger that touched again, 3-4 m/s²):
-  //    from j0 - 1, the last sample above the level, along the line through the
-  //    residual's square root. A finger lifts off at zero slope (a raised-cosine fall), so
+  //    from j0 - 1, the last sample above the level. Either way along the line through the
+  //    residual's square root: a finger lifts off at zero slope (a raised-cosine fall), so
   //    its force is quadratic near its end, where a straight line through the residual
-  //    reaches zero too early; the root's line reaches zero no earlier than any force whose
-  //    tail is quadratic or steeper. (Taken for every fall, the root's line dated one
-  //    generated rotor throw's release so that its flight ended at the rotor's brake.)
+  //    reaches zero too early (a finger of 3-4 m/s² rises over twice a fitted r's level
+  //    too: dated 0.05 and 0.2 ms early so). The root's line reaches zero no earlier than
+  //    any force whose tail is quadratic or steeper, a hand's linear end included (there it
+  //    comes later by the geometric mean of the two samples' times to the end, a few tenths
+  //    of a millisecond behind a steep let-go). Measured, docs/validation/release-detection.md,
+  //    "A finger's re-touch" (its price there: a rotor throw on a fresh seed set, released
+  //    1.87 ms late rather than 31.6 ms, ends at its rotor's brake, its r fitted over a slow
+  //    turn: "A body with a rotor").
   //  - from `steepest_fall_from_us` up to `fade_out_at_most_us` (about 285 Hz to 1.1 kHz): the
   //    sensor's anti-alias filter, set in proportion to its rate, draws the end of the
   //    force out into a tail of a few samples, and a few samples are 5-10 ms here (j0 came
@@ -454,7 +459,7 @@ class ReleaseDetector {
   ALOFT_COLD std::uint32_t after_fade_out(const History& history, std::uint32_t j0, std::uint32_t c,
                                           std::uint32_t h, const Vec3<Scalar>& r, Scalar level) const {
     std::uint32_t a = j0, b = j0;
-    bool weak = false;
+    bool root = false;  // the line through the residual's square root (above)
     Scalar e_a = residual(history, j0, h, r), e_b = e_a;
     const std::uint32_t dt = history.dt_us(j0);
     const std::uint32_t searched = settings_.fall_search_samples;
@@ -469,8 +474,8 @@ class ReleaseDetector {
         if (j0 <= h + 1u || !history.holds(j0 - 2u - h)) return j0;
         a = j0 - 1u;
         e_a = residual(history, a, h, r);
-        weak = true;
       }
+      root = true;
     } else {
       const std::uint32_t step =
           (settings_.fall_chord_us + dt - 1u) / dt;  // samples per fall, at least the chord
@@ -490,7 +495,7 @@ class ReleaseDetector {
     }
     if (!(e_a > e_b)) return j0;
     Scalar to_zero_us = static_cast<Scalar>(history.span_us(a, b)) * e_b / (e_a - e_b);
-    if (weak) {
+    if (root) {
       if (!(e_b >= Scalar(0))) return j0;  // no kinematics at j0
       const Scalar root_a = std::sqrt(e_a), root_b = std::sqrt(e_b);
       to_zero_us = static_cast<Scalar>(history.span_us(a, b)) * root_b / (root_a - root_b);

@@ -35,6 +35,9 @@
 // once more, 2 window_us past the release as dated, with the newest blocks past the push;
 // that later look only ever dates the release later, and only from a settled fit of its
 // own (the pipeline's rule; docs/validation/release-detection.md, "A finger's re-touch").
+// Where the first look had itself moved the release, its date is no finer than the block
+// grid and came from the unsettled fit: the later look then dates it anew from its own
+// blocks wherever its run starts after it (`dated_over_blocks`).
 #pragma once
 
 #include <cstdint>
@@ -167,9 +170,11 @@ class ReleaseWindow {
   // The release proposed at proposed_us (sample proposed_index), judged once the closed
   // blocks reach window_us past it (a later look: twice that), with r fitted within `ball`,
   // and each block's torque tested against `inertia` (the body's tensor; null: not tested).
+  // `dated_over_blocks`: a later look at a release the first look moved (file comment).
   ALOFT_COLD WindowedRelease<Scalar> date(std::uint32_t proposed_index, std::uint64_t proposed_us,
                                           const LeverArmBall<Scalar>& ball, bool later_look = false,
-                                          const Mat3<Scalar>* inertia = nullptr) const {
+                                          const Mat3<Scalar>* inertia = nullptr,
+                                          bool dated_over_blocks = false) const {
     WindowedRelease<Scalar> out;
     if (count_ < 2u + settings_.fit_blocks) return out;
     // Stamps as their low 32 bits (a block's), spans as differences: exact below 35 min.
@@ -210,7 +215,11 @@ class ReleaseWindow {
     const bool later = after_us > block_us && run + 1u < count_;
     const bool pushed_through = !pushed_after && after_us > 0 && run + 2u < count_ &&
                                 pushes_past(proposed_low, closed(run), closed(run + 1u), first, r, level);
-    const bool moved = (later || after_us < -2 * block_us || pushed_after || pushed_through) &&
+    // A release the first look dated over blocks from an unsettled fit: no finer than the
+    // grid, and its tail taken from blocks the push had lifted (traced: 0.35 ms early at
+    // 2 kHz, a tail that the first look's excesses made run past its block).
+    const bool regridded = later_look && dated_over_blocks && after_us > 0;
+    const bool moved = (later || after_us < -2 * block_us || pushed_after || pushed_through || regridded) &&
                        first.samples >= settings_.min_block_samples;
     if (!moved) {
       out.index = proposed_index;
@@ -251,15 +260,21 @@ class ReleaseWindow {
 
   // How many of the first free block's samples the push before it may still reach into.
   // The push's level is the mean of the block before (at most its peak, when it covered
-  // only part of that block: the tail comes out longer); a fall from that level to zero
-  // whose force averages half its start (a raised cosine, a straight line) lasts twice the
-  // first block's mean excess over its samples. Measured (tests/host/test_release_detection.cpp,
-  // re-touch, tuning seeds): without it the first free block's start came up to 5 ms
-  // before the finger's end; with half of it 31 of 324 fast-hand releases were early,
-  // against 16 (docs/validation/release-detection.md, "A finger's re-touch").
+  // only part of that block: the tail comes out longer). A finger lifts off at zero slope,
+  // so the end of its fall is quadratic, and the first free block starts in that end (the
+  // block before it took the fall's steep middle): a quadratic fall to zero averages a
+  // third of its start, and lasts three times the first block's mean excess over its
+  // samples, over the push's level. (From the top of a raised cosine or along a straight
+  // line the force averages half its start: two times, the factor before, which left
+  // tails short by 0.05-0.1 ms where the block started mid-fall.) Not a bound: a block that
+  // starts further down the fall than the push's level says comes out short still.
+  // Measured (tests/host/test_release_detection.cpp, re-touch): without the tail the first
+  // free block's start came up to 5 ms before the finger's end; with it, once, 16 of 324
+  // fast-hand releases were early against 31 with half of it; docs/validation/
+  // release-detection.md, "A finger's re-touch".
   ALOFT_COLD std::uint32_t tail_samples(const Block& pushed, std::uint32_t first_n, const Vec3<Scalar>& r,
                                         const Vec3<Scalar>& level) const {
-    constexpr Scalar fall_over_mean = Scalar(2);
+    constexpr Scalar fall_over_mean = Scalar(3);
     const Block& first = closed(first_n);
     const Scalar push = excess(pushed, r, level);
     const Scalar first_excess = excess(first, r, level);
