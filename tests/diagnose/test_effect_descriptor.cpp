@@ -139,6 +139,7 @@ TEST_CASE("a session's spin-up is worded flight by flight", "[effect_descriptor]
                        {Eigen::Vector3d(0.0, 0.0, 0.06), 0.065, 0.040, 0.0}};
   const std::string text = params_text(Effect::internal_momentum_spin_up, p);
   CAPTURE(text);
+  CHECK(text.rfind("in the longest flight, a wheel spun up 65 ms after the first sample", 0) == 0);
   CHECK(text.find("flight 1 from 46 ms, time constant 59 ms, |h| 0.05 N m s") != std::string::npos);
   CHECK(text.find("flight 2 from 65 ms, time constant 40 ms, |h| 0.06 N m s") != std::string::npos);
 }

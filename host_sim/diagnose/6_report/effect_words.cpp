@@ -144,10 +144,10 @@ nlohmann::json internal_momentum_json(const EffectParameters& p) { return {{"h_N
 std::string internal_momentum_spin_up_text(const EffectParameters& p) {
   const Eigen::Vector3d end = p.spin_up_h_at_end();
   std::string out = printf_text(
-      "a wheel spun up %.0f ms after the first sample, time constant %.0f ms, to h = (%.3g, %.3g, "
+      "%sa wheel spun up %.0f ms after the first sample, time constant %.0f ms, to h = (%.3g, %.3g, "
       "%.3g) N m s in body axes (|h| %.3g N m s; %.3g N m s at the end of the data)",
-      1000.0 * p.spin_up_start_s, 1000.0 * p.spin_up_time_constant_s, p.vector(0), p.vector(1), p.vector(2),
-      p.vector.norm(), end.norm());
+      p.spin_up_flights.empty() ? "" : "in the longest flight, ", 1000.0 * p.spin_up_start_s,
+      1000.0 * p.spin_up_time_constant_s, p.vector(0), p.vector(1), p.vector(2), p.vector.norm(), end.norm());
   if (p.spin_up_flights.empty()) return out;
   const Eigen::Vector3d axis = p.vector.normalized();
   out += printf_text("; the flights share its axis (%.3f, %.3f, %.3f), each its own profile:", axis(0),
