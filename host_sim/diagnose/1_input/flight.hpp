@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <string>
@@ -60,6 +61,8 @@ struct Flight {
   std::size_t size() const { return time_s.size(); }
   double start_s() const { return time_s.empty() ? 0.0 : time_s.front(); }
   double end_s() const { return time_s.empty() ? 0.0 : time_s.back(); }
+  // Samples per second over the flight (0 for fewer than two samples).
+  double rate_hz() const { return size() > 1 ? (size() - 1) / std::max(end_s() - start_s(), 1e-12) : 0.0; }
   // Mean |omega| over the usable samples (rad/s): how fast the data turns, which sets
   // the tolerances of parameters measured against it.
   double mean_speed() const {

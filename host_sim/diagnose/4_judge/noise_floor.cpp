@@ -395,10 +395,7 @@ constexpr double kCorrelatedAtRest = 1.5;
 
 NoiseFloor floor_from_rest_and_spectrum(const Flight& flight) {
   NoiseFloor floor = floor_from_rest(flight);
-  const double rate_hz = flight.size() < 2 ? 0.0
-                                           : static_cast<double>(flight.size() - 1) /
-                                                 (flight.time_s.back() - flight.time_s.front());
-  if (!flight.gyro_input || flight.rates_from_differences || rate_hz < kFastGyro_hz) return floor;
+  if (!flight.gyro_input || flight.rates_from_differences || flight.rate_hz() < kFastGyro_hz) return floor;
   const std::optional<SpectralFloor> spectral =
       floor_from_spectrum(flight, steps_followed_by_gap(flight.time_s), reading_resolution(flight));
   if (spectral && spectral->cutoff_hz > 0.0 && spectral->correlation >= kCorrelatedAtRest)

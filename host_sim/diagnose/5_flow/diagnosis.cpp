@@ -27,7 +27,7 @@ FlightDiagnosis describe_flight(const Flight& flight) {
   d.start_s = flight.start_s();
   d.end_s = flight.end_s();
   d.samples = flight.size();
-  d.rate_hz = flight.size() > 1 ? (flight.size() - 1) / std::max(d.end_s - d.start_s, 1e-12) : 0.0;
+  d.rate_hz = flight.rate_hz();
   d.gaps = time_gaps(flight.time_s);
   d.unusable_samples = static_cast<std::size_t>(std::count(flight.usable.begin(), flight.usable.end(), 0));
   return d;
