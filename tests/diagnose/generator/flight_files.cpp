@@ -100,4 +100,11 @@ std::string write_flight(const GeneratedFlight& flight, const std::string& dir) 
   return data_file;
 }
 
+std::string segment_row(const host::Segment& s) {
+  char line[200];
+  std::snprintf(line, sizeof line, "%s,%.6f,%.6f,true,%s\n", s.name.c_str(), s.start_s, s.end_s,
+                s.comment.c_str());
+  return line;
+}
+
 }  // namespace aloft::generator

@@ -82,7 +82,7 @@ constexpr double kBetweenFlights_s = 1.0;
 void write_flight_controller(const std::string& out, nlohmann::json& all) {
   for (const SessionCase& c : flight_controller_session_cases(RotorSeeds::fresh, 1, 4)) {
     GeneratedFlight joined;
-    std::string segments = "segment,start,end,keep,comment\n";
+    std::string segments = kSegmentsHeader;
     double offset = 0.0;
     for (std::size_t j = 0; j < c.flights.size(); ++j) {
       const GeneratedFlight g = generate_flight(c.flights[j], c.seed);
@@ -94,10 +94,8 @@ void write_flight_controller(const std::string& out, nlohmann::json& all) {
         log.accel_m_s2.insert(log.accel_m_s2.end(), g.imu.accel_m_s2.begin(), g.imu.accel_m_s2.end());
         log.rotor_rad_s.insert(log.rotor_rad_s.end(), g.imu.rotor_rad_s.begin(), g.imu.rotor_rad_s.end());
       }
-      char row[160];
-      std::snprintf(row, sizeof row, "flight%zu,%.6f,%.6f,true,\n", j + 1, offset + g.imu.time_s.front(),
-                    offset + g.imu.time_s.back());
-      segments += row;
+      segments += segment_row({"flight" + std::to_string(j + 1), offset + g.imu.time_s.front(),
+                               offset + g.imu.time_s.back(), ""});
       offset = log.time_s.back() + kBetweenFlights_s;
     }
     write_logged(joined, segments, out, c.name, c.seed, all);

@@ -1,8 +1,8 @@
 #include "phone_like_flights.hpp"
 
 #include <cmath>
-#include <cstdio>
 
+#include "flight_files.hpp"
 #include "seeded_random.hpp"
 
 namespace aloft::generator {
@@ -81,15 +81,6 @@ void move_onset(FlightTruth& truth, double start_s) {
     truth.params["time_s"] = truth.params["time_s"].get<double>() + start_s;
   }
 }
-
-std::string segment_row(const host::Segment& s) {
-  char line[200];
-  std::snprintf(line, sizeof line, "%s,%.6f,%.6f,true,%s\n", s.name.c_str(), s.start_s, s.end_s,
-                s.comment.c_str());
-  return line;
-}
-
-constexpr const char* kSegmentsHeader = "segment,start,end,keep,comment\n";
 
 }  // namespace
 
