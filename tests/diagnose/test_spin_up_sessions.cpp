@@ -36,17 +36,20 @@ int sessions_per_kind() {
 }
 
 // The tuning set unless ALOFT_SPIN_UP_SEEDS=withheld, =fresh, =unseen, or a number: the
-// first seed of a set never drawn before.
+// first seed of a set never drawn before. ALOFT_SPIN_UP_SHAPE=ramp or =smooth_step: the
+// wheels spin up so, not as the first-order step the model assumes.
 std::vector<gen::SessionCase> spin_up_cases() {
   const char* set = std::getenv("ALOFT_SPIN_UP_SEEDS");
+  const char* shape_name = std::getenv("ALOFT_SPIN_UP_SHAPE");
+  const gen::SpinUpShape shape = gen::spin_up_shape_named(shape_name != nullptr ? shape_name : "");
   const std::string name = set != nullptr ? set : "";
   if (!name.empty() && std::isdigit(static_cast<unsigned char>(name.front())))
-    return gen::flight_controller_session_cases(std::stoull(name), sessions_per_kind(), 4);
+    return gen::flight_controller_session_cases(std::stoull(name), sessions_per_kind(), 4, shape);
   const gen::RotorSeeds seeds = name == "withheld" ? gen::RotorSeeds::withheld
                                 : name == "fresh"  ? gen::RotorSeeds::fresh
                                 : name == "unseen" ? gen::RotorSeeds::unseen
                                                    : gen::RotorSeeds::tuning;
-  return gen::flight_controller_session_cases(seeds, sessions_per_kind(), 4);
+  return gen::flight_controller_session_cases(seeds, sessions_per_kind(), 4, shape);
 }
 
 std::string effects_text(const Verdict& v) {

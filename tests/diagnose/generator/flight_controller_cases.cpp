@@ -17,16 +17,17 @@ FlightSpec flight_controller_spec(const std::string& effect, const std::string& 
   return spec;
 }
 
-std::vector<SessionCase> flight_controller_session_cases(RotorSeeds seeds, int per_kind, int flights) {
+std::vector<SessionCase> flight_controller_session_cases(RotorSeeds seeds, int per_kind, int flights,
+                                                         SpinUpShape shape) {
   return flight_controller_session_cases(seeds == RotorSeeds::tuning     ? 44010000ull
                                          : seeds == RotorSeeds::withheld ? 44090000ull
                                          : seeds == RotorSeeds::fresh    ? 44170000ull
                                                                          : 44250000ull,
-                                         per_kind, flights);
+                                         per_kind, flights, shape);
 }
 
-std::vector<SessionCase> flight_controller_session_cases(std::uint64_t first_seed, int per_kind,
-                                                         int flights) {
+std::vector<SessionCase> flight_controller_session_cases(std::uint64_t first_seed, int per_kind, int flights,
+                                                         SpinUpShape shape) {
   std::uint64_t seed = first_seed;
   const auto next = [&] { return seed += 0x9E3779B1ull; };
   const auto& bodies = body_names();
@@ -47,6 +48,7 @@ std::vector<SessionCase> flight_controller_session_cases(std::uint64_t first_see
         spec.rotor_spin_up = true;
         spec.rotor_fraction_low = 0.05;
         spec.rotor_fraction_high = 0.40;
+        spec.spin_up_shape = shape;
       }
       c.flights.push_back(spec);
     }

@@ -6,7 +6,8 @@
 //   spin_up     a rotor a motor spins up from rest after release (rotor_spin_up.hpp):
 //               one axis and |h| for the session (5-40 % of the |L| the body carries at
 //               10 rad/s), each throw its own start (20-80 ms), time constant (40-80 ms)
-//               and final speed (+-15 %);
+//               and final speed (+-15 %); as a first-order step, or as a ramp or a
+//               smooth step rising over 3 time constants (`shape`: rotor_spin_up.hpp);
 //   and its look-alikes, with no rotor:
 //   moments     wrong moments (5-20 %);
 //   misaligned  the sensor turned 3-15 deg from the body's axes;
@@ -30,9 +31,11 @@ FlightSpec flight_controller_spec(const std::string& effect, const std::string& 
 
 // `per_kind` sessions of each kind, of `flights` flights each (RotorSeeds: seed sets of
 // their own, far from rotor_cases.hpp's).
-std::vector<SessionCase> flight_controller_session_cases(RotorSeeds seeds, int per_kind, int flights);
+std::vector<SessionCase> flight_controller_session_cases(RotorSeeds seeds, int per_kind, int flights,
+                                                         SpinUpShape shape = SpinUpShape::first_order);
 // The same from any first seed: a set never drawn before (the named sets' first seeds are
 // 44010000, 44090000, 44170000 and 44250000).
-std::vector<SessionCase> flight_controller_session_cases(std::uint64_t first_seed, int per_kind, int flights);
+std::vector<SessionCase> flight_controller_session_cases(std::uint64_t first_seed, int per_kind, int flights,
+                                                         SpinUpShape shape = SpinUpShape::first_order);
 
 }  // namespace aloft::generator

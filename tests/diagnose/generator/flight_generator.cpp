@@ -271,13 +271,16 @@ InjectedEffect draw_effect(const std::string& effect, const BodyModel& body, con
     const Eigen::Vector3d h =
         rng.uniform(spec.rotor_fraction_low, spec.rotor_fraction_high) * typical_l * rng.unit_vector();
     if (spec.rotor_spin_up) {
-      e.physics.spin_up = {thrown.spin_up_speed * h, thrown.spin_up_start_s, thrown.spin_up_time_constant_s};
+      e.physics.spin_up = {thrown.spin_up_speed * h, thrown.spin_up_start_s, thrown.spin_up_time_constant_s,
+                           spec.spin_up_shape, 3.0 * thrown.spin_up_time_constant_s};
       const Eigen::Vector3d at_end = e.physics.spin_up.momentum(thrown.duration_s);
       e.params = {{"h_N_m_s", to_json(at_end)},
                   {"final_h_N_m_s", to_json(e.physics.spin_up.final_momentum_N_m_s)},
                   {"start_s", thrown.spin_up_start_s},
                   {"time_constant_s", thrown.spin_up_time_constant_s},
+                  {"shape", spin_up_shape_name(spec.spin_up_shape)},
                   {"h_fraction_of_L", at_end.norm() / l0.norm()}};
+      if (spec.spin_up_shape != SpinUpShape::first_order) e.params["rise_s"] = e.physics.spin_up.rise_s;
     } else {
       e.physics.internal_momentum_N_m_s = h;
       e.params = {{"h_N_m_s", to_json(h)}, {"h_fraction_of_L", h.norm() / l0.norm()}};

@@ -66,6 +66,7 @@
 #include "common/body_file.hpp"
 #include "common/trial.hpp"
 #include "gyro_filter.hpp"
+#include "rotor_spin_up.hpp"
 
 namespace aloft::generator {
 
@@ -123,6 +124,9 @@ struct FlightSpec {
   double spin_up_start_low_s = 0.02, spin_up_start_high_s = 0.08;
   double spin_up_time_constant_low_s = 0.04, spin_up_time_constant_high_s = 0.08;
   double spin_up_speed_spread = 0.15;
+  // The speed's shape (rotor_spin_up.hpp); a ramp or a smooth step rises over 3 time
+  // constants (where a first-order step reaches 95 %).
+  SpinUpShape spin_up_shape = SpinUpShape::first_order;
 
   // A compound flight: a second effect at the same time (empty or "none": one effect).
   // Its magnitude is drawn as for a flight of its own; truth.params then holds each
@@ -168,7 +172,8 @@ struct FlightTruth {
 //   gyro_bias: bias_rad_s; gyro_scale: scale_error; clock_drift: rate_error.
 //   internal_momentum: h_N_m_s (body axes), h_fraction_of_L (|h| over the throw's |L0|);
 //     spun up (FlightSpec::rotor_spin_up): h_N_m_s is h at the flight's end, and
-//     final_h_N_m_s, start_s and time_constant_s describe the profile.
+//     final_h_N_m_s, start_s and time_constant_s describe the profile (rise_s too,
+//     other than a first-order step's: FlightSpec::spin_up_shape).
 
 // The noise-free truth at each data sample (true time, not the sensor's clock).
 struct TrueSample {

@@ -79,8 +79,8 @@ void write_phone_like(const std::string& out, nlohmann::json& all) {
 // kBetweenFlights_s after the last one's end (the log has no samples there, as a flight
 // controller's log between two armings), with a segments file naming each.
 constexpr double kBetweenFlights_s = 1.0;
-void write_flight_controller(const std::string& out, nlohmann::json& all) {
-  for (const SessionCase& c : flight_controller_session_cases(RotorSeeds::fresh, 1, 4)) {
+void write_flight_controller(const std::string& out, SpinUpShape shape, nlohmann::json& all) {
+  for (const SessionCase& c : flight_controller_session_cases(RotorSeeds::fresh, 1, 4, shape)) {
     GeneratedFlight joined;
     std::string segments = kSegmentsHeader;
     double offset = 0.0;
@@ -113,12 +113,17 @@ int main(int argc, char** argv) {
   bool phone = false;
   bool compound = false;
   bool flight_controller = false;
+  std::string spin_up_shape = "first_order";
   app.add_option("--out", out_dir, "folder to write into")->required();
   app.add_flag("--compound", compound, "write the compound flights, two effects each (issue 8)");
   app.add_flag("--phone", phone, "write the phone-like flights and sessions (issue 8)");
   app.add_flag(
       "--flight-controller", flight_controller,
       "write flight-controller sessions: a rotor spun up after release and its look-alikes (issue 44)");
+  app.add_option("--spin-up-shape", spin_up_shape,
+                 "with --flight-controller: how the wheels spin up (first_order, ramp: a motor at its "
+                 "current limit, smooth_step)")
+      ->check(CLI::IsMember({"first_order", "ramp", "smooth_step"}));
   app.add_option("--random", random_count,
                  "write this many random flights instead of the "
                  "withheld-effect cases")
@@ -131,7 +136,7 @@ int main(int argc, char** argv) {
     if (phone || flight_controller) {
       nlohmann::json all = nlohmann::json::object();
       if (phone) write_phone_like(out_dir, all);
-      if (flight_controller) write_flight_controller(out_dir, all);
+      if (flight_controller) write_flight_controller(out_dir, spin_up_shape_named(spin_up_shape), all);
       aloft::host::write_file_atomically((std::filesystem::path(out_dir) / "truth.json").string(),
                                          [&](std::ostream& o) { o << all.dump(1) << '\n'; });
       return 0;

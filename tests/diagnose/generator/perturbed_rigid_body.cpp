@@ -50,14 +50,15 @@ Eigen::Vector3d PerturbedRigidBody::external_torque(double t, const Eigen::Vecto
 
 PerturbedRigidBody::Derivative PerturbedRigidBody::derivative(double t, const Eigen::Vector4d& q,
                                                               const Eigen::Vector3d& w,
-                                                              const Eigen::Vector3d& wr, int motor) const {
+                                                              const Eigen::Vector3d& wr,
+                                                              double side_s) const {
   Derivative d;
   d.q_dot = quaternion_rate(q, w);
   Eigen::Vector3d torque =
       external_torque(t, w) - w.cross(shell_inertia_ * w + physics_.internal_momentum_N_m_s);
   if (physics_.spin_up.present())
     torque -= w.cross(physics_.spin_up.momentum(t)) +
-              (motor < 0 ? physics_.spin_up.momentum_rate(t) : physics_.spin_up.momentum_rate(t, motor == 1));
+              physics_.spin_up.momentum_rate(t, std::isnan(side_s) ? t : side_s);
   if (has_rotor_) {
     const Eigen::Vector3d viscous = physics_.rotor_damping_N_m_s * (wr - w);
     torque += viscous;
@@ -73,15 +74,15 @@ void PerturbedRigidBody::rk4_step(double t, double h, FlightState& s) const {
   const Eigen::Vector4d q0 = s.orientation.coeffs();
   const Eigen::Vector3d w0 = s.omega_body;
   const Eigen::Vector3d r0 = s.rotor_omega_body;
-  // Steps never straddle the motor's start (a break of sample()): the step's middle says
-  // on which side of it the step lies.
-  const int motor = t + 0.5 * h > physics_.spin_up.start_s ? 1 : 0;
-  const Derivative k1 = derivative(t, q0, w0, r0, motor);
+  // Steps never straddle the rotor's rate steps (breaks of sample()): the step's middle
+  // says on which side of them the step lies.
+  const double middle = t + 0.5 * h;
+  const Derivative k1 = derivative(t, q0, w0, r0, middle);
   const Derivative k2 = derivative(t + 0.5 * h, q0 + 0.5 * h * k1.q_dot, w0 + 0.5 * h * k1.w_dot,
-                                   r0 + 0.5 * h * k1.wr_dot, motor);
+                                   r0 + 0.5 * h * k1.wr_dot, middle);
   const Derivative k3 = derivative(t + 0.5 * h, q0 + 0.5 * h * k2.q_dot, w0 + 0.5 * h * k2.w_dot,
-                                   r0 + 0.5 * h * k2.wr_dot, motor);
-  const Derivative k4 = derivative(t + h, q0 + h * k3.q_dot, w0 + h * k3.w_dot, r0 + h * k3.wr_dot, motor);
+                                   r0 + 0.5 * h * k2.wr_dot, middle);
+  const Derivative k4 = derivative(t + h, q0 + h * k3.q_dot, w0 + h * k3.w_dot, r0 + h * k3.wr_dot, middle);
   Eigen::Vector4d q = q0 + h / 6.0 * (k1.q_dot + 2.0 * (k2.q_dot + k3.q_dot) + k4.q_dot);
   s.orientation.coeffs() = q / q.norm();
   s.omega_body = w0 + h / 6.0 * (k1.w_dot + 2.0 * (k2.w_dot + k3.w_dot) + k4.w_dot);
@@ -107,11 +108,9 @@ std::vector<FlightState> PerturbedRigidBody::sample(const FlightState& initial,
       breaks.push_back(physics_.impulse_time_s + physics_.impulse_duration_s);
     }
   }
-  // The motor's start: its reaction torque steps from zero to h_final / tau there.
-  if (physics_.spin_up.present() && physics_.spin_up.start_s > 0.0) {
-    breaks.push_back(physics_.spin_up.start_s);
-    std::sort(breaks.begin(), breaks.end());
-  }
+  // The motor's start (its reaction torque steps from zero there) and a ramp's end.
+  for (const double step : physics_.spin_up.rate_steps_s()) breaks.push_back(step);
+  std::sort(breaks.begin(), breaks.end());
   bool jump_pending = physics_.has_impulse && !(physics_.impulse_duration_s > 0.0);
   std::size_t next_break = 0;
 

@@ -26,6 +26,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cmath>
 #include <vector>
 
 #include "rotor_spin_up.hpp"
@@ -77,10 +78,11 @@ class PerturbedRigidBody {
     Eigen::Vector3d w_dot;
     Eigen::Vector3d wr_dot;
   };
-  // `motor`: whether a spinning-up rotor's motor runs (its rate steps at the start, so
-  // a step beside it says on which side it lies); -1: by t.
+  // `side_s`: the instant whose side of a spinning-up rotor's rate steps (its motor's
+  // start, a ramp's end) the torque is taken on: a step beside one says on which side it
+  // lies; NaN: t's own.
   Derivative derivative(double t, const Eigen::Vector4d& q, const Eigen::Vector3d& w,
-                        const Eigen::Vector3d& wr, int motor = -1) const;
+                        const Eigen::Vector3d& wr, double side_s = NAN) const;
   Eigen::Vector3d external_torque(double t, const Eigen::Vector3d& w) const;
   void rk4_step(double t, double h, FlightState& s) const;
   void advance(double t0, double t1, double max_step_s, FlightState& s) const;

@@ -15,29 +15,51 @@
 
 using namespace aloft::generator;
 
-TEST_CASE("a rotor spun up after release keeps the angular momentum of body and rotor fixed in space",
-          "[generator][spin_up]") {
-  FlightPhysics physics;
-  physics.inertia_kg_m2 = Eigen::Vector3d(0.004, 0.007, 0.009).asDiagonal();
-  physics.spin_up = {Eigen::Vector3d(0.004, -0.002, 0.006), 0.05, 0.06};
-  const PerturbedRigidBody body(physics);
+namespace {
+
+// The largest relative change of the angular momentum of body and rotor, in space, over
+// 1 s at 1 kHz from a turning start.
+double momentum_drift(const PerturbedRigidBody& body, std::vector<FlightState>& states) {
   FlightState start;
   start.omega_body = Eigen::Vector3d(3.0, -7.0, 5.0);
   std::vector<double> times;
   for (int k = 0; k <= 1000; ++k) times.push_back(k * 1e-3);
-  const std::vector<FlightState> states = body.sample(start, times);
+  states = body.sample(start, times);
   const Eigen::Vector3d l0 = states.front().orientation * body.angular_momentum(states.front(), 0.0);
   double worst = 0.0;
   for (std::size_t k = 0; k < states.size(); ++k) {
     const Eigen::Vector3d l = states[k].orientation * body.angular_momentum(states[k], times[k]);
     worst = std::max(worst, (l - l0).norm() / l0.norm());
   }
-  CHECK(worst < 1e-9);
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("a rotor spun up after release keeps the angular momentum of body and rotor fixed in space",
+          "[generator][spin_up]") {
+  FlightPhysics physics;
+  physics.inertia_kg_m2 = Eigen::Vector3d(0.004, 0.007, 0.009).asDiagonal();
+  physics.spin_up = {Eigen::Vector3d(0.004, -0.002, 0.006), 0.05, 0.06};
+  std::vector<FlightState> states;
+  CHECK(momentum_drift(PerturbedRigidBody(physics), states) < 1e-9);
   // Before the motor starts nothing turns the rate; after it, the reaction torque does.
   CHECK(physics.spin_up.momentum(0.049).norm() == 0.0);
   CHECK(physics.spin_up.momentum(1.0).isApprox(physics.spin_up.final_momentum_N_m_s *
                                                (1.0 - std::exp(-0.95 / 0.06))));
-  CHECK((states[100].omega_body - start.omega_body).norm() > 0.1);
+  CHECK((states[100].omega_body - states[0].omega_body).norm() > 0.1);
+
+  // A ramp (a motor at its current limit): its torque steps at the start and at the ramp's
+  // end, 0.05 + 0.1805 s, between samples; L stays fixed through both. A smooth step too.
+  physics.spin_up.rise_s = 0.1805;
+  for (const SpinUpShape shape : {SpinUpShape::ramp, SpinUpShape::smooth_step}) {
+    physics.spin_up.shape = shape;
+    CHECK(momentum_drift(PerturbedRigidBody(physics), states) < 1e-9);
+    CHECK(physics.spin_up.momentum(0.05 + 0.1805 / 2).isApprox(physics.spin_up.final_momentum_N_m_s / 2));
+    CHECK(physics.spin_up.momentum(0.3).isApprox(physics.spin_up.final_momentum_N_m_s));
+    CHECK(physics.spin_up.momentum_rate(0.3).norm() == 0.0);
+  }
+  CHECK(physics.spin_up.momentum_rate(0.05).norm() == 0.0);  // the smooth step's torque starts at zero
 }
 
 TEST_CASE("a generated spin-up flight: h at the end, its profile, and L fixed in space",
