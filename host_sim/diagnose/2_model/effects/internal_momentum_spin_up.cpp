@@ -78,12 +78,16 @@ std::string unphysical(const FittedSlice& fit) {
 
 // How closely the model resolves a wheel's axis, whatever the noise: a flight's own fit of
 // it is read as no better than this. Measured on the generated flight-controller spin-up
-// sessions (withheld seeds, the racquet at 1 kHz behind a 53 Hz PT1): its four flights' own
-// axes lie within 0.03 degrees of each other where their noise alone puts them within
-// 0.001 (the filter's distortion of the signal and the 1/16.4 deg/s steps, which the model
-// leaves out), so their scatter read 3.45 against the bar of 3. A tenth of a degree is three
-// times that; a wheel mounted anew, or a look-alike's rotor, moves by degrees.
-constexpr double kAxisResolution_rad = 0.1 / 180.0 * 3.141592653589793;
+// sessions (docs/validation/diagnose-accuracy.md): where the wheel spins up as the model's
+// first-order step, the flights' own axes lie 0.004-0.09 degrees off their mean (the
+// filter's distortion of the signal and the 1/16.4 deg/s steps, which the model leaves out);
+// where it spins up as a ramp or a smooth step (a motor at its current limit; the shape
+// tests/core spins its wheels with), 0.36-2.9 degrees, the profile's misfit: at 0.1 degrees
+// 1 of those 10 fresh sessions named the rotor (a cylinder's would have shrunk the held-out
+// gap by 97 %), at half a degree 9 (the racquet's ramp, 2.9, still not). A look-alike's own
+// spin-up axes lay 2.4 degrees off (a knock on the racquet); no look-alike session of five
+// seed sets names a rotor.
+constexpr double kAxisResolution_rad = 0.5 / 180.0 * 3.141592653589793;
 
 // The wheel's axis: theta's h part as a unit vector, its covariance the projection's
 // (rank 2) with the model's resolution added across the axis: what a session's flights
