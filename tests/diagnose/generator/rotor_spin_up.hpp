@@ -2,8 +2,8 @@
 // or a propeller started a few tens of milliseconds into the flight. Its angular momentum
 // relative to the body, fixed along a body axis, is h(t) = h_final s(t - t0), s(u) = 0 for
 // u < 0; the body feels -w x h and the motor's reaction torque -dh/dt:
-// I dw/dt + w x (I w + h) = -dh/dt (SPEC §2, `rotor`; §4, internal_momentum). Two shapes
-// of s:
+// I dw/dt + w x (I w + h) = -dh/dt (SPEC §2, `rotor`; §4, internal_momentum). The shape
+// s (`SpinUpShape`):
 //   - a first-order step, s(u) = 1 - exp(-u / tau): a speed loop's response, the shape
 //     diagnose's spin-up model assumes;
 //   - over a rise of `rise_s` (v = u / rise_s, s = 1 from v = 1 on), shapes the model does
