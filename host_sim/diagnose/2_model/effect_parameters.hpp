@@ -49,6 +49,12 @@ struct EffectParameters {
   };
   std::vector<SpinUpFlight> spin_up_flights;
 
+  // Whether a spin-up from `start_s` (after the first sample) with `time_constant_s` is
+  // within 1e-6 of its speed at the first sample: the readings then see a steady rotor, not
+  // the spin-up, and its time constant is not measured.
+  static bool spin_up_before_data(double start_s, double time_constant_s) {
+    return start_s <= -std::log(1e6) * time_constant_s;
+  }
   // h of a first-order spin-up to `final_h` from `start_s` with `time_constant_s`, at `end_s`
   // (0: unknown, read as the final h).
   static Eigen::Vector3d spin_up_h_at(const Eigen::Vector3d& final_h, double start_s, double time_constant_s,

@@ -143,17 +143,27 @@ nlohmann::json internal_momentum_json(const EffectParameters& p) { return {{"h_N
 // flight's above, then each flight's.
 std::string internal_momentum_spin_up_text(const EffectParameters& p) {
   const Eigen::Vector3d end = p.spin_up_h_at_end();
-  std::string out = printf_text(
-      "%sa wheel spun up %.0f ms after the first sample, time constant %.0f ms, to h = (%.3g, %.3g, "
-      "%.3g) N m s in body axes (|h| %.3g N m s; %.3g N m s at the end of the data)",
-      p.spin_up_flights.empty() ? "" : "in the longest flight, ", 1000.0 * p.spin_up_start_s,
-      1000.0 * p.spin_up_time_constant_s, p.vector(0), p.vector(1), p.vector(2), p.vector.norm(), end.norm());
+  const std::string profile =
+      EffectParameters::spin_up_before_data(p.spin_up_start_s, p.spin_up_time_constant_s)
+          ? std::string("a wheel at speed from the first sample, ")
+          : printf_text("a wheel spun up %.0f ms after the first sample, time constant %.0f ms, to ",
+                        1000.0 * p.spin_up_start_s, 1000.0 * p.spin_up_time_constant_s);
+  std::string out = std::string(p.spin_up_flights.empty() ? "" : "in the longest flight, ") + profile +
+                    printf_text(
+                        "h = (%.3g, %.3g, %.3g) N m s in body axes (|h| %.3g N m s; %.3g N m s at the "
+                        "end of the data)",
+                        p.vector(0), p.vector(1), p.vector(2), p.vector.norm(), end.norm());
   if (p.spin_up_flights.empty()) return out;
   const Eigen::Vector3d axis = p.vector.normalized();
   out += printf_text("; the flights share its axis (%.3f, %.3f, %.3f), each its own profile:", axis(0),
                      axis(1), axis(2));
   for (std::size_t j = 0; j < p.spin_up_flights.size(); ++j) {
     const EffectParameters::SpinUpFlight& f = p.spin_up_flights[j];
+    if (EffectParameters::spin_up_before_data(f.start_s, f.time_constant_s)) {
+      out +=
+          printf_text(" flight %zu at speed from its first sample, |h| %.3g N m s;", j + 1, f.final_h.norm());
+      continue;
+    }
     out += printf_text(
         " flight %zu from %.0f ms, time constant %.0f ms, |h| %.3g N m s, %.3g N m s at its end;", j + 1,
         1000.0 * f.start_s, 1000.0 * f.time_constant_s, f.final_h.norm(), f.h_at_end().norm());

@@ -10,7 +10,9 @@
 //                                                    flights are in segments.csv)
 //   aloft_generate_flights --out DIR --flight-controller   flight-controller sessions, one
 //                                                    of each kind (a spin-up rotor and its
-//                                                    look-alikes), laid out as --phone's
+//                                                    look-alikes), laid out as --phone's;
+//                                                    --sessions N of each, --spin-up-shape
+//                                                    ramp or smooth_step for the wheels
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <cstdio>
@@ -79,8 +81,8 @@ void write_phone_like(const std::string& out, nlohmann::json& all) {
 // kBetweenFlights_s after the last one's end (the log has no samples there, as a flight
 // controller's log between two armings), with a segments file naming each.
 constexpr double kBetweenFlights_s = 1.0;
-void write_flight_controller(const std::string& out, SpinUpShape shape, nlohmann::json& all) {
-  for (const SessionCase& c : flight_controller_session_cases(RotorSeeds::fresh, 1, 4, shape)) {
+void write_flight_controller(const std::string& out, int per_kind, SpinUpShape shape, nlohmann::json& all) {
+  for (const SessionCase& c : flight_controller_session_cases(RotorSeeds::fresh, per_kind, 4, shape)) {
     GeneratedFlight joined;
     std::string segments = kSegmentsHeader;
     double offset = 0.0;
@@ -114,6 +116,7 @@ int main(int argc, char** argv) {
   bool compound = false;
   bool flight_controller = false;
   std::string spin_up_shape = "first_order";
+  int sessions_per_kind = 1;
   app.add_option("--out", out_dir, "folder to write into")->required();
   app.add_flag("--compound", compound, "write the compound flights, two effects each (issue 8)");
   app.add_flag("--phone", phone, "write the phone-like flights and sessions (issue 8)");
@@ -124,6 +127,9 @@ int main(int argc, char** argv) {
                  "with --flight-controller: how the wheels spin up (first_order, ramp: a motor at its "
                  "current limit, smooth_step)")
       ->check(CLI::IsMember({"first_order", "ramp", "smooth_step"}));
+  app.add_option("--sessions", sessions_per_kind,
+                 "with --flight-controller: sessions of each kind (the fresh seeds of the spin-up test)")
+      ->check(CLI::Range(1, 100));
   app.add_option("--random", random_count,
                  "write this many random flights instead of the "
                  "withheld-effect cases")
@@ -136,7 +142,8 @@ int main(int argc, char** argv) {
     if (phone || flight_controller) {
       nlohmann::json all = nlohmann::json::object();
       if (phone) write_phone_like(out_dir, all);
-      if (flight_controller) write_flight_controller(out_dir, spin_up_shape_named(spin_up_shape), all);
+      if (flight_controller)
+        write_flight_controller(out_dir, sessions_per_kind, spin_up_shape_named(spin_up_shape), all);
       aloft::host::write_file_atomically((std::filesystem::path(out_dir) / "truth.json").string(),
                                          [&](std::ostream& o) { o << all.dump(1) << '\n'; });
       return 0;

@@ -65,13 +65,23 @@ std::string unphysical_time_constant(double tau) {
   return {};
 }
 
+// A profile judged by its time constant only where the readings see it: a wheel at speed
+// from the flight's first sample on (EffectParameters::spin_up_before_data) is a steady
+// rotor there, whatever its fitted tau. (A fresh racquet session's flight fitted its own
+// spin-up 205 ms before the data with tau 0.6 ms, h at its end 1.02 of the truth, and the
+// rule had called the whole session's rotor a knock.)
+std::string unphysical_profile(double start_s, double tau) {
+  if (EffectParameters::spin_up_before_data(start_s, tau)) return {};
+  return unphysical_time_constant(tau);
+}
+
 // Of the fit's theta, and of each flight's own profile where a session's flights have one.
 std::string unphysical(const FittedSlice& fit) {
   if (fit.theta.size() < kSpinUpParameters) return {};
-  std::string why = unphysical_time_constant(time_constant_of(fit.theta));
+  std::string why = unphysical_profile(start_of(fit.theta), time_constant_of(fit.theta));
   if (fit.added == nullptr) return why;
   for (const EffectParameters::SpinUpFlight& own : fit.added->spin_up_flights) {
-    if (why.empty()) why = unphysical_time_constant(own.time_constant_s);
+    if (why.empty()) why = unphysical_profile(own.start_s, own.time_constant_s);
   }
   return why;
 }
