@@ -12,7 +12,9 @@
 //                                                    of each kind (a spin-up rotor and its
 //                                                    look-alikes), laid out as --phone's;
 //                                                    --sessions N of each, --spin-up-shape
-//                                                    ramp or smooth_step for the wheels
+//                                                    ramp or smooth_step for the wheels,
+//                                                    --seed the first of a new set (as the
+//                                                    spin-up test's ALOFT_SPIN_UP_SEEDS)
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <cstdio>
@@ -81,8 +83,13 @@ void write_phone_like(const std::string& out, nlohmann::json& all) {
 // kBetweenFlights_s after the last one's end (the log has no samples there, as a flight
 // controller's log between two armings), with a segments file naming each.
 constexpr double kBetweenFlights_s = 1.0;
-void write_flight_controller(const std::string& out, int per_kind, SpinUpShape shape, nlohmann::json& all) {
-  for (const SessionCase& c : flight_controller_session_cases(RotorSeeds::fresh, per_kind, 4, shape)) {
+// `first_seed`: 0 for the fresh set.
+void write_flight_controller(const std::string& out, int per_kind, SpinUpShape shape,
+                             std::uint64_t first_seed, nlohmann::json& all) {
+  const std::vector<SessionCase> cases =
+      first_seed == 0 ? flight_controller_session_cases(RotorSeeds::fresh, per_kind, 4, shape)
+                      : flight_controller_session_cases(first_seed, per_kind, 4, shape);
+  for (const SessionCase& c : cases) {
     GeneratedFlight joined;
     std::string segments = kSegmentsHeader;
     double offset = 0.0;
@@ -134,7 +141,10 @@ int main(int argc, char** argv) {
                  "write this many random flights instead of the "
                  "withheld-effect cases")
       ->check(CLI::PositiveNumber);
-  app.add_option("--seed", seed, "seed of the random flights");
+  app.add_option(
+      "--seed", seed,
+      "seed of the random flights; with --flight-controller, the first seed of a new set (default: "
+      "the fresh set)");
   app.add_option("--limit", limit, "write only the first N flights")->check(CLI::NonNegativeNumber);
   CLI11_PARSE(app, argc, argv);
 
@@ -143,7 +153,8 @@ int main(int argc, char** argv) {
       nlohmann::json all = nlohmann::json::object();
       if (phone) write_phone_like(out_dir, all);
       if (flight_controller)
-        write_flight_controller(out_dir, sessions_per_kind, spin_up_shape_named(spin_up_shape), all);
+        write_flight_controller(out_dir, sessions_per_kind, spin_up_shape_named(spin_up_shape),
+                                app.count("--seed") > 0 ? seed : 0, all);
       aloft::host::write_file_atomically((std::filesystem::path(out_dir) / "truth.json").string(),
                                          [&](std::ostream& o) { o << all.dump(1) << '\n'; });
       return 0;
