@@ -41,7 +41,7 @@ int sessions_per_kind() {
 std::vector<gen::SessionCase> spin_up_cases() {
   const char* set = std::getenv("ALOFT_SPIN_UP_SEEDS");
   const char* shape_name = std::getenv("ALOFT_SPIN_UP_SHAPE");
-  const gen::SpinUpShape shape = gen::spin_up_shape_named(shape_name != nullptr ? shape_name : "");
+  const gen::SpinUpShape shape = gen::spin_up_shape_named(shape_name != nullptr ? shape_name : "first_order");
   const std::string name = set != nullptr ? set : "";
   if (!name.empty() && std::isdigit(static_cast<unsigned char>(name.front())))
     return gen::flight_controller_session_cases(std::stoull(name), sessions_per_kind(), 4, shape);

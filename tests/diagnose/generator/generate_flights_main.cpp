@@ -20,6 +20,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "body_catalogue.hpp"
 #include "compound_effect_cases.hpp"
@@ -83,12 +87,12 @@ void write_phone_like(const std::string& out, nlohmann::json& all) {
 // kBetweenFlights_s after the last one's end (the log has no samples there, as a flight
 // controller's log between two armings), with a segments file naming each.
 constexpr double kBetweenFlights_s = 1.0;
-// `first_seed`: 0 for the fresh set.
+// `first_seed`: none for the fresh set.
 void write_flight_controller(const std::string& out, int per_kind, SpinUpShape shape,
-                             std::uint64_t first_seed, nlohmann::json& all) {
+                             std::optional<std::uint64_t> first_seed, nlohmann::json& all) {
   const std::vector<SessionCase> cases =
-      first_seed == 0 ? flight_controller_session_cases(RotorSeeds::fresh, per_kind, 4, shape)
-                      : flight_controller_session_cases(first_seed, per_kind, 4, shape);
+      first_seed ? flight_controller_session_cases(*first_seed, per_kind, 4, shape)
+                 : flight_controller_session_cases(RotorSeeds::fresh, per_kind, 4, shape);
   for (const SessionCase& c : cases) {
     GeneratedFlight joined;
     std::string segments = kSegmentsHeader;
@@ -133,7 +137,8 @@ int main(int argc, char** argv) {
   app.add_option("--spin-up-shape", spin_up_shape,
                  "with --flight-controller: how the wheels spin up (first_order, ramp: a motor at its "
                  "current limit, smooth_step)")
-      ->check(CLI::IsMember({"first_order", "ramp", "smooth_step"}));
+      ->check(CLI::IsMember(
+          std::vector<std::string>(std::begin(kSpinUpShapeNames), std::end(kSpinUpShapeNames))));
   app.add_option("--sessions", sessions_per_kind,
                  "with --flight-controller: sessions of each kind (the fresh seeds of the spin-up test)")
       ->check(CLI::Range(1, 100));
@@ -154,7 +159,8 @@ int main(int argc, char** argv) {
       if (phone) write_phone_like(out_dir, all);
       if (flight_controller)
         write_flight_controller(out_dir, sessions_per_kind, spin_up_shape_named(spin_up_shape),
-                                app.count("--seed") > 0 ? seed : 0, all);
+                                app.count("--seed") > 0 ? std::optional<std::uint64_t>(seed) : std::nullopt,
+                                all);
       aloft::host::write_file_atomically((std::filesystem::path(out_dir) / "truth.json").string(),
                                          [&](std::ostream& o) { o << all.dump(1) << '\n'; });
       return 0;

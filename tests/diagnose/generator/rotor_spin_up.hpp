@@ -18,22 +18,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace aloft::generator {
 
 enum class SpinUpShape { first_order, ramp, smooth_step };
+// Each shape's name, in the enum's order (truth files, aloft_generate_flights
+// --spin-up-shape, the spin-up test's ALOFT_SPIN_UP_SHAPE).
+constexpr const char* kSpinUpShapeNames[] = {"first_order", "ramp", "smooth_step"};
 inline const char* spin_up_shape_name(SpinUpShape shape) {
-  return shape == SpinUpShape::ramp          ? "ramp"
-         : shape == SpinUpShape::smooth_step ? "smooth_step"
-                                             : "first_order";
+  return kSpinUpShapeNames[static_cast<int>(shape)];
 }
-// The shape of that name; first_order for any other.
+// The shape of that name; throws std::invalid_argument for any other.
 inline SpinUpShape spin_up_shape_named(const std::string& name) {
-  return name == "ramp"          ? SpinUpShape::ramp
-         : name == "smooth_step" ? SpinUpShape::smooth_step
-                                 : SpinUpShape::first_order;
+  for (int i = 0; i < static_cast<int>(std::size(kSpinUpShapeNames)); ++i) {
+    if (name == kSpinUpShapeNames[i]) return static_cast<SpinUpShape>(i);
+  }
+  throw std::invalid_argument("unknown spin-up shape '" + name + "' (first_order, ramp or smooth_step)");
 }
 
 struct RotorSpinUp {
