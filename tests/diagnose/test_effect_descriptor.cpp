@@ -133,10 +133,9 @@ TEST_CASE("each effect's JSON has its SPEC §4 keys, and none has none; its text
 TEST_CASE("a session's spin-up is worded flight by flight", "[effect_descriptor]") {
   EffectParameters p;
   p.vector = Eigen::Vector3d(0.0, 0.0, 0.06);
-  p.spin_up_start_s = 0.065;
-  p.spin_up_time_constant_s = 0.040;
-  p.spin_up_flights = {{Eigen::Vector3d(0.0, 0.0, 0.05), 0.046, 0.059, 0.0},
-                       {Eigen::Vector3d(0.0, 0.0, 0.06), 0.065, 0.040, 0.0}};
+  p.spin_up_profile = {0.065, 0.040};
+  p.spin_up_flights = {{Eigen::Vector3d(0.0, 0.0, 0.05), {0.046, 0.059}, 0.0},
+                       {Eigen::Vector3d(0.0, 0.0, 0.06), {0.065, 0.040}, 0.0}};
   const std::string text = params_text(Effect::internal_momentum_spin_up, p);
   CAPTURE(text);
   CHECK(text.rfind("in the longest flight, a wheel spun up 65 ms after the first sample", 0) == 0);
@@ -144,14 +143,12 @@ TEST_CASE("a session's spin-up is worded flight by flight", "[effect_descriptor]
   CHECK(text.find("flight 2 from 65 ms, time constant 40 ms, |h| 0.06 N m s") != std::string::npos);
   // A flight whose own spin-up the fit put before its data (at speed from its first sample,
   // e^(-205/0.6) of the way): a steady rotor there, worded so, its time constant unmeasured.
-  p.spin_up_flights.front().start_s = -0.205;
-  p.spin_up_flights.front().time_constant_s = 0.0006;
+  p.spin_up_flights.front().profile = {-0.205, 0.0006};
   const std::string steady = params_text(Effect::internal_momentum_spin_up, p);
   CAPTURE(steady);
   CHECK(steady.find("flight 1 at speed from its first sample, |h| 0.05 N m s;") != std::string::npos);
   CHECK(steady.find("-205 ms") == std::string::npos);
-  p.spin_up_start_s = -0.205;
-  p.spin_up_time_constant_s = 0.0006;
+  p.spin_up_profile = {-0.205, 0.0006};
   CHECK(params_text(Effect::internal_momentum_spin_up, p)
             .rfind("in the longest flight, a wheel at speed from the first sample, h = (0, 0, 0.06) N m s",
                    0) == 0);

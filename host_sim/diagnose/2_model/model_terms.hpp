@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 
 #include "diagnose/2_model/nominal_inertia.hpp"
+#include "diagnose/2_model/spin_up_profile.hpp"
 
 namespace aloft::host::diagnose {
 
@@ -24,12 +25,11 @@ struct ModelTerms {
   // I·dw/dt + w × (I·w + momentum) = 0.
   Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
   // A rotor a motor spins up during the flight, about a body-fixed axis: h(t) =
-  // spin_up_momentum (1 - exp(-(t - t0) / spin_up_time_constant_s)) from t0 =
-  // spin_up_start_s after the flight's first sample (0 before), adding h(t) x w and the
-  // motor's reaction -dh/dt to the torque (spin_up_walk.hpp). Zero: none.
+  // spin_up_momentum s(t) with the profile's s (its start after the flight's first sample),
+  // adding h(t) x w and the motor's reaction -dh/dt to the torque (spin_up_walk.hpp).
+  // Zero: none.
   Eigen::Vector3d spin_up_momentum = Eigen::Vector3d::Zero();
-  double spin_up_start_s = 0.0;
-  double spin_up_time_constant_s = 0.05;
+  SpinUpProfile spin_up_profile;
   bool has_jump = false;                           // an impulse at the model's impulse_time_s
   Eigen::Vector3d jump = Eigen::Vector3d::Zero();  // rad/s; angular impulse I_nom * jump
   bool misaligned = false;                         // sensor->body becomes q_imu * misalignment

@@ -57,16 +57,16 @@ struct Solved {
 };
 
 // h_inf for (t0, tau) by least squares over every flight's balance, and what it leaves.
-Solved solve(const std::vector<std::vector<Balance>>& flights, double t0, double tau) {
+Solved solve(const std::vector<std::vector<Balance>>& flights, const SpinUpProfile& profile) {
   Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
   Eigen::Vector3d b = Eigen::Vector3d::Zero();
   double total = 0.0;
   for (const std::vector<Balance>& samples : flights) {
     for (const Balance& s : samples) {
       total += s.torque.squaredNorm();
-      const double u = s.t - t0;
+      const double u = s.t - profile.start_s;
       if (u <= 0.0) continue;
-      const double decay = std::exp(-u / tau), f = 1.0 - decay, rate = decay / tau;
+      const double f = profile.level(u), rate = profile.slope(u);
       // torque = (f [w]x + rate I) h
       Eigen::Matrix3d m;
       m << rate, -f * s.w.z(), f * s.w.y(), f * s.w.z(), rate, -f * s.w.x(), -f * s.w.y(), f * s.w.x(), rate;
@@ -98,7 +98,7 @@ Eigen::VectorXd spin_up_theta_from_readings(const std::vector<const Flight*>& fl
   bool any = false;
   for (double t0 = kEarliestStart_s; t0 <= 0.5 * shortest; t0 += kStartStep_s) {
     for (double tau : kTimeConstants_s) {
-      const Solved s = solve(samples, t0, tau);
+      const Solved s = solve(samples, SpinUpProfile{t0, tau, 0.0});
       if (!any || s.misfit < best.misfit) {
         best = s;
         best_t0 = t0;

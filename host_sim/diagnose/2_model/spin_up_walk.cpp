@@ -16,20 +16,19 @@ using State = DynamicsState;
 struct SpinUpBody {
   const FlightDynamics& dynamics;
   Vec3 final_momentum;
-  double start = 0.0;  // t0 on the walk's clock
-  double time_constant = 0.05;
+  SpinUpProfile profile;  // its start on the walk's clock
 
   State rate(double t, const State& x, bool running) const {
     State dx = dynamics.rate(x);
     if (!running) return dx;
-    const double decay = std::exp(-std::max(t - start, 0.0) / time_constant);
-    const Vec3 h = (1.0 - decay) * final_momentum, h_rate = (decay / time_constant) * final_momentum;
+    const double u = std::max(t - profile.start_s, 0.0);
+    const Vec3 h = profile.level(u) * final_momentum, h_rate = profile.slope(u) * final_momentum;
     dx.head<3>() += dynamics.shell_inverse() * (h.cross(Vec3(x.head<3>())) - h_rate);
     return dx;
   }
   // One RK4 step of signed length h from t; the motor's side from the step's middle.
   void step(double t, double h, State& x) const {
-    const bool running = t + 0.5 * h > start;
+    const bool running = t + 0.5 * h > profile.start_s;
     const State k1 = rate(t, x, running);
     const State k2 = rate(t + 0.5 * h, x + 0.5 * h * k1, running);
     const State k3 = rate(t + 0.5 * h, x + 0.5 * h * k2, running);
@@ -45,12 +44,15 @@ struct SpinUpBody {
   }
 };
 
-// From t to u, stopping at the motor's start and at an impulse's instant (applied forwards
-// with +1, backwards with -1) where they lie strictly between.
+// From t to u, stopping at the motor's start, the end of its set-point's ramp and an
+// impulse's instant (applied forwards with +1, backwards with -1) where they lie strictly
+// between.
 void advance_across(const SpinUpBody& body, double t, double u, double jump_time, bool has_jump, Motion& m) {
   std::vector<double> stops;
   const auto between = [&](double s) { return (s - t) * (u - s) > 0.0; };
-  if (between(body.start)) stops.push_back(body.start);
+  const double start = body.profile.start_s, ramp_end = start + body.profile.rise_s;
+  if (between(start)) stops.push_back(start);
+  if (ramp_end > start && between(ramp_end)) stops.push_back(ramp_end);
   if (has_jump && between(jump_time)) stops.push_back(jump_time);
   std::sort(stops.begin(), stops.end(), [&](double a, double b) { return (a - b) * (u - t) < 0.0; });
   double at = t;
@@ -72,9 +74,9 @@ void predict_spin_up_readings(const FlightDynamics& dynamics, const ModelTerms& 
   if (n == 0) return;
   const double t_ref = flight.time_s[ref], factor = dynamics.time_factor();
   const auto walk_time = [&](double t) { return t_ref + (t - t_ref) * factor; };
-  const SpinUpBody body{dynamics, terms.spin_up_momentum,
-                        walk_time(flight.time_s.front() + terms.spin_up_start_s),
-                        terms.spin_up_time_constant_s};
+  SpinUpProfile profile = terms.spin_up_profile;
+  profile.start_s = walk_time(flight.time_s.front() + profile.start_s);
+  const SpinUpBody body{dynamics, terms.spin_up_momentum, profile};
   Motion start;
   start.x.head<3>() = omega_ref;
   start.x.tail<3>() = omega_ref;  // a damping rotor co-rotating at the reference

@@ -1,11 +1,11 @@
 // The readings of a model whose rotor a motor spins up during the flight
 // (ModelTerms::spin_up_momentum; effects/internal_momentum_spin_up.cpp):
-//   I dw/dt + w x (I w + h(t)) = -dh/dt,  h(t) = h_inf s(t - t0),  s(u) = 1 - exp(-u / tau)
-// for u >= 0 and 0 before. The torque depends on time, which the shared-step walks of
-// reading_walks.hpp do not carry, so this walk steps RK4 a sample at a time (at most
-// kMaxStep, the walks' longest step, per step) from the reference both ways, the motor's
-// start and an impulse's instant as step boundaries; each step takes the motor's side from
-// its middle (the reaction torque steps from 0 to h_inf / tau at t0). The rest of the model
+//   I dw/dt + w x (I w + h(t)) = -dh/dt,  h(t) = h_inf s(t - t0)  (spin_up_profile.hpp).
+// The torque depends on time, which the shared-step walks of reading_walks.hpp do not
+// carry, so this walk steps RK4 a sample at a time (at most kMaxStep, the walks' longest
+// step, per step) from the reference both ways, the motor's start, the end of its
+// set-point's ramp and an impulse's instant as step boundaries; each step takes the motor's
+// side from its middle (a step's reaction torque jumps from 0 to h_inf / tau at t0). The rest of the model
 // (tensor, drag, a steady rotor, a damping rotor, an impulse, the sensor, the clock) is
 // FlightDynamics'.
 #pragma once

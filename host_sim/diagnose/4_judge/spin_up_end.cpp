@@ -16,8 +16,7 @@ void set_end(EffectParameters& p, const std::vector<double>& ends_s) {
   const EffectParameters::SpinUpFlight& own =
       p.spin_up_flights[static_cast<std::size_t>(longest - ends_s.begin())];
   p.vector = own.final_h;
-  p.spin_up_start_s = own.start_s;
-  p.spin_up_time_constant_s = own.time_constant_s;
+  p.spin_up_profile = own.profile;
 }
 
 void set_end(Candidate& c, const std::vector<double>& ends_s) {

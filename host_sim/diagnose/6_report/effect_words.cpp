@@ -144,10 +144,10 @@ nlohmann::json internal_momentum_json(const EffectParameters& p) { return {{"h_N
 std::string internal_momentum_spin_up_text(const EffectParameters& p) {
   const Eigen::Vector3d end = p.spin_up_h_at_end();
   const std::string profile =
-      EffectParameters::spin_up_before_data(p.spin_up_start_s, p.spin_up_time_constant_s)
+      p.spin_up_profile.at_speed_before_data()
           ? std::string("a wheel at speed from the first sample, ")
           : printf_text("a wheel spun up %.0f ms after the first sample, time constant %.0f ms, to ",
-                        1000.0 * p.spin_up_start_s, 1000.0 * p.spin_up_time_constant_s);
+                        1000.0 * p.spin_up_profile.start_s, 1000.0 * p.spin_up_profile.time_constant_s);
   std::string out = std::string(p.spin_up_flights.empty() ? "" : "in the longest flight, ") + profile +
                     printf_text(
                         "h = (%.3g, %.3g, %.3g) N m s in body axes (|h| %.3g N m s; %.3g N m s at the "
@@ -159,31 +159,35 @@ std::string internal_momentum_spin_up_text(const EffectParameters& p) {
                      axis(1), axis(2));
   for (std::size_t j = 0; j < p.spin_up_flights.size(); ++j) {
     const EffectParameters::SpinUpFlight& f = p.spin_up_flights[j];
-    if (EffectParameters::spin_up_before_data(f.start_s, f.time_constant_s)) {
+    if (f.profile.at_speed_before_data()) {
       out +=
           printf_text(" flight %zu at speed from its first sample, |h| %.3g N m s;", j + 1, f.final_h.norm());
       continue;
     }
-    out += printf_text(
-        " flight %zu from %.0f ms, time constant %.0f ms, |h| %.3g N m s, %.3g N m s at its end;", j + 1,
-        1000.0 * f.start_s, 1000.0 * f.time_constant_s, f.final_h.norm(), f.h_at_end().norm());
+    out +=
+        printf_text(" flight %zu from %.0f ms, time constant %.0f ms, |h| %.3g N m s, %.3g N m s at its end;",
+                    j + 1, 1000.0 * f.profile.start_s, 1000.0 * f.profile.time_constant_s, f.final_h.norm(),
+                    f.h_at_end().norm());
   }
   out.pop_back();
   return out;
 }
 
 nlohmann::json internal_momentum_spin_up_json(const EffectParameters& p) {
-  nlohmann::json out = {{"h_N_m_s", json_vec(p.spin_up_h_at_end())},    {"profile", "first_order_spin_up"},
-                        {"final_h_N_m_s", json_vec(p.vector)},          {"start_s", p.spin_up_start_s},
-                        {"time_constant_s", p.spin_up_time_constant_s}, {"end_s", p.spin_up_end_s}};
+  nlohmann::json out = {{"h_N_m_s", json_vec(p.spin_up_h_at_end())},
+                        {"profile", "first_order_spin_up"},
+                        {"final_h_N_m_s", json_vec(p.vector)},
+                        {"start_s", p.spin_up_profile.start_s},
+                        {"time_constant_s", p.spin_up_profile.time_constant_s},
+                        {"end_s", p.spin_up_end_s}};
   if (p.spin_up_flights.empty()) return out;
   out["axis"] = json_vec(p.vector.normalized());
   nlohmann::json flights = nlohmann::json::array();
   for (const EffectParameters::SpinUpFlight& f : p.spin_up_flights) {
     flights.push_back({{"h_N_m_s", json_vec(f.h_at_end())},
                        {"final_h_N_m_s", json_vec(f.final_h)},
-                       {"start_s", f.start_s},
-                       {"time_constant_s", f.time_constant_s},
+                       {"start_s", f.profile.start_s},
+                       {"time_constant_s", f.profile.time_constant_s},
                        {"end_s", f.end_s}});
   }
   out["flights"] = flights;

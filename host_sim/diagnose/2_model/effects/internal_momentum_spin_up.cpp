@@ -24,23 +24,23 @@ namespace {
 // unit (0.1 s, a factor e).
 double tolerance(double mean_speed, double) { return 0.01 * mean_speed; }
 
-double start_of(const Eigen::VectorXd& theta) { return kSpinUpStartUnit_s * theta(3); }
-double time_constant_of(const Eigen::VectorXd& theta) {
-  return kSpinUpTimeConstantUnit_s * std::exp(theta(4));
+SpinUpProfile profile_of(const Eigen::VectorXd& theta) {
+  SpinUpProfile profile;
+  profile.start_s = kSpinUpStartUnit_s * theta(3);
+  profile.time_constant_s = kSpinUpTimeConstantUnit_s * std::exp(theta(4));
+  return profile;
 }
 
 void apply(const Eigen::VectorXd& theta, const NominalInertia& nominal, ModelTerms& terms) {
   terms.spin_up_momentum = nominal.tensor * theta.head<3>();
-  terms.spin_up_start_s = start_of(theta);
-  terms.spin_up_time_constant_s = time_constant_of(theta);
+  terms.spin_up_profile = profile_of(theta);
 }
 
 EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& nominal, double) {
   EffectParameters p;
   p.vector = nominal.tensor * theta.head<3>();
   p.spin_up = true;
-  p.spin_up_start_s = start_of(theta);
-  p.spin_up_time_constant_s = time_constant_of(theta);
+  p.spin_up_profile = profile_of(theta);
   return p;
 }
 
@@ -57,31 +57,31 @@ std::string too_small(const EffectParameters& p, const SignificanceScale& scale)
 // second tells from a steady rotor. kQuickestSpinUp_s: a quarter of the 40 ms the
 // quickest generated wheels take; the real wheels of issue 44 take about 200 ms to speed.
 constexpr double kQuickestSpinUp_s = 0.01, kSlowestSpinUp_s = 2.0;
-std::string unphysical_time_constant(double tau) {
-  if (tau < kQuickestSpinUp_s)
+std::string unphysical_rise(double rise_s) {
+  if (rise_s < kQuickestSpinUp_s)
     return printf_text("its wheel reaches speed in %.1f ms, quicker than a motor spins one up (a knock)",
-                       1000.0 * tau);
-  if (tau > kSlowestSpinUp_s) return printf_text("its wheel takes %.1f s to reach speed", tau);
+                       1000.0 * rise_s);
+  if (rise_s > kSlowestSpinUp_s) return printf_text("its wheel takes %.1f s to reach speed", rise_s);
   return {};
 }
 
-// A profile judged by its time constant only where the readings see it: a wheel at speed
-// from the flight's first sample on (EffectParameters::spin_up_before_data) is a steady
-// rotor there, whatever its fitted tau. (A fresh racquet session's flight fitted its own
-// spin-up 205 ms before the data with tau 0.6 ms, h at its end 1.02 of the truth, and the
-// rule had called the whole session's rotor a knock.)
-std::string unphysical_profile(double start_s, double tau) {
-  if (EffectParameters::spin_up_before_data(start_s, tau)) return {};
-  return unphysical_time_constant(tau);
+// A profile judged by its rise only where the readings see it: a wheel at speed from the
+// flight's first sample on (SpinUpProfile::at_speed_before_data) is a steady rotor there,
+// whatever its fitted timing. (A fresh racquet session's flight fitted its own spin-up
+// 205 ms before the data with tau 0.6 ms, h at its end 1.02 of the truth, and the rule had
+// called the whole session's rotor a knock.)
+std::string unphysical_profile(const SpinUpProfile& profile) {
+  if (profile.at_speed_before_data()) return {};
+  return unphysical_rise(profile.rise_time_s());
 }
 
 // Of the fit's theta, and of each flight's own profile where a session's flights have one.
 std::string unphysical(const FittedSlice& fit) {
   if (fit.theta.size() < kSpinUpParameters) return {};
-  std::string why = unphysical_profile(start_of(fit.theta), time_constant_of(fit.theta));
+  std::string why = unphysical_profile(profile_of(fit.theta));
   if (fit.added == nullptr) return why;
   for (const EffectParameters::SpinUpFlight& own : fit.added->spin_up_flights) {
-    if (why.empty()) why = unphysical_profile(own.start_s, own.time_constant_s);
+    if (why.empty()) why = unphysical_profile(own.profile);
   }
   return why;
 }
