@@ -139,8 +139,10 @@ TEST_CASE("a session's spin-up is worded flight by flight", "[effect_descriptor]
   const std::string text = params_text(Effect::internal_momentum_spin_up, p);
   CAPTURE(text);
   CHECK(text.rfind("in the longest flight, a wheel spun up 65 ms after the first sample", 0) == 0);
-  CHECK(text.find("flight 1 from 46 ms, time constant 59 ms, |h| 0.05 N m s") != std::string::npos);
-  CHECK(text.find("flight 2 from 65 ms, time constant 40 ms, |h| 0.06 N m s") != std::string::npos);
+  CHECK(text.find("flight 1 from 46 ms, ramp 0 ms, time constant 59 ms, |h| 0.05 N m s") !=
+        std::string::npos);
+  CHECK(text.find("flight 2 from 65 ms, ramp 0 ms, time constant 40 ms, |h| 0.06 N m s") !=
+        std::string::npos);
   // A flight whose own spin-up the fit put before its data (at speed from its first sample,
   // e^(-205/0.6) of the way): a steady rotor there, worded so, its time constant unmeasured.
   p.spin_up_flights.front().profile = {-0.205, 0.0006};

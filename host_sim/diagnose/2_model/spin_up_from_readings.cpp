@@ -19,6 +19,9 @@ constexpr double kDerivativeHalfSpan_s = 0.002;
 constexpr std::size_t kMostSamples = 1000;
 constexpr double kStartStep_s = 0.01, kEarliestStart_s = -0.1;
 constexpr double kTimeConstants_s[] = {0.02, 0.04, 0.08, 0.16};
+// Set-point ramps: 5 ms, next to a first-order step (the fit lowers it where the data ask,
+// R = 0 itself lies at ln R = -infinity), to 200 ms, the real wheels' rise (issue 44).
+constexpr double kRises_s[] = {0.005, 0.05, 0.1, 0.2};
 
 // One sample of the balance: the body rate, and the torque the Euler equations leave.
 struct Balance {
@@ -94,24 +97,27 @@ Eigen::VectorXd spin_up_theta_from_readings(const std::vector<const Flight*>& fl
     if (f->size() > 1) shortest = std::min(shortest, f->time_s.back() - f->time_s.front());
   }
   Solved best;
-  double best_t0 = 0.0, best_tau = kTimeConstants_s[1];
+  SpinUpProfile best_profile;
   bool any = false;
   for (double t0 = kEarliestStart_s; t0 <= 0.5 * shortest; t0 += kStartStep_s) {
     for (double tau : kTimeConstants_s) {
-      const Solved s = solve(samples, SpinUpProfile{t0, tau, 0.0});
-      if (!any || s.misfit < best.misfit) {
-        best = s;
-        best_t0 = t0;
-        best_tau = tau;
-        any = true;
+      for (double rise : kRises_s) {
+        const SpinUpProfile profile{t0, tau, rise};
+        const Solved s = solve(samples, profile);
+        if (!any || s.misfit < best.misfit) {
+          best = s;
+          best_profile = profile;
+          any = true;
+        }
       }
     }
   }
   Eigen::VectorXd theta = Eigen::VectorXd::Zero(kSpinUpParameters);
   if (!any) return theta;
   theta.head<3>() = nominal.tensor.ldlt().solve(best.h);
-  theta(3) = best_t0 / kSpinUpStartUnit_s;
-  theta(4) = std::log(best_tau / kSpinUpTimeConstantUnit_s);
+  theta(3) = best_profile.start_s / kSpinUpStartUnit_s;
+  theta(4) = std::log(best_profile.time_constant_s / kSpinUpTimeConstantUnit_s);
+  theta(5) = std::log(best_profile.rise_s / kSpinUpTimeConstantUnit_s);
   return theta;
 }
 

@@ -11,15 +11,16 @@
 //
 // theta's layout (I_nom^-1 h_inf [3], rad/s: the body rate that would carry the wheel's final
 // momentum; t0 / kSpinUpStartUnit_s, the motor's start after the flight's first sample;
-// ln(tau / kSpinUpTimeConstantUnit_s)), each scaled so that a unit change moves the readings
-// by about a rad/s or less.
+// ln(tau / kSpinUpTimeConstantUnit_s); ln(R / kSpinUpTimeConstantUnit_s)), each scaled so
+// that a unit change moves the readings by about a rad/s or less. Both shapes are limits of
+// the logarithms (R or tau -> 0), which a fit approaches until the readings no longer move.
 #pragma once
 
 #include <cmath>
 
 namespace aloft::host::diagnose {
 
-constexpr int kSpinUpParameters = 5;
+constexpr int kSpinUpParameters = 6;
 constexpr double kSpinUpStartUnit_s = 0.1;
 constexpr double kSpinUpTimeConstantUnit_s = 0.05;
 

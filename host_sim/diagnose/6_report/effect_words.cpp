@@ -146,8 +146,11 @@ std::string internal_momentum_spin_up_text(const EffectParameters& p) {
   const std::string profile =
       p.spin_up_profile.at_speed_before_data()
           ? std::string("a wheel at speed from the first sample, ")
-          : printf_text("a wheel spun up %.0f ms after the first sample, time constant %.0f ms, to ",
-                        1000.0 * p.spin_up_profile.start_s, 1000.0 * p.spin_up_profile.time_constant_s);
+          : printf_text(
+                "a wheel spun up %.0f ms after the first sample, set-point ramp %.0f ms, time constant "
+                "%.0f ms, to ",
+                1000.0 * p.spin_up_profile.start_s, 1000.0 * p.spin_up_profile.rise_s,
+                1000.0 * p.spin_up_profile.time_constant_s);
   std::string out = std::string(p.spin_up_flights.empty() ? "" : "in the longest flight, ") + profile +
                     printf_text(
                         "h = (%.3g, %.3g, %.3g) N m s in body axes (|h| %.3g N m s; %.3g N m s at the "
@@ -164,10 +167,11 @@ std::string internal_momentum_spin_up_text(const EffectParameters& p) {
           printf_text(" flight %zu at speed from its first sample, |h| %.3g N m s;", j + 1, f.final_h.norm());
       continue;
     }
-    out +=
-        printf_text(" flight %zu from %.0f ms, time constant %.0f ms, |h| %.3g N m s, %.3g N m s at its end;",
-                    j + 1, 1000.0 * f.profile.start_s, 1000.0 * f.profile.time_constant_s, f.final_h.norm(),
-                    f.h_at_end().norm());
+    out += printf_text(
+        " flight %zu from %.0f ms, ramp %.0f ms, time constant %.0f ms, |h| %.3g N m s, %.3g N m s "
+        "at its end;",
+        j + 1, 1000.0 * f.profile.start_s, 1000.0 * f.profile.rise_s, 1000.0 * f.profile.time_constant_s,
+        f.final_h.norm(), f.h_at_end().norm());
   }
   out.pop_back();
   return out;
@@ -175,10 +179,11 @@ std::string internal_momentum_spin_up_text(const EffectParameters& p) {
 
 nlohmann::json internal_momentum_spin_up_json(const EffectParameters& p) {
   nlohmann::json out = {{"h_N_m_s", json_vec(p.spin_up_h_at_end())},
-                        {"profile", "first_order_spin_up"},
+                        {"profile", "ramped_first_order_spin_up"},
                         {"final_h_N_m_s", json_vec(p.vector)},
                         {"start_s", p.spin_up_profile.start_s},
                         {"time_constant_s", p.spin_up_profile.time_constant_s},
+                        {"rise_s", p.spin_up_profile.rise_s},
                         {"end_s", p.spin_up_end_s}};
   if (p.spin_up_flights.empty()) return out;
   out["axis"] = json_vec(p.vector.normalized());
@@ -188,6 +193,7 @@ nlohmann::json internal_momentum_spin_up_json(const EffectParameters& p) {
                        {"final_h_N_m_s", json_vec(f.final_h)},
                        {"start_s", f.profile.start_s},
                        {"time_constant_s", f.profile.time_constant_s},
+                       {"rise_s", f.profile.rise_s},
                        {"end_s", f.end_s}});
   }
   out["flights"] = flights;

@@ -1,15 +1,16 @@
 // `internal_momentum` whose rotor a motor spins up during the flight: a reaction wheel or a
 // propeller started after release, about a body-fixed axis, its speed rising to its final
-// value as a first-order step: h(t) = h_inf (1 - exp(-(t - t0) / tau)) after t0, 0 before;
+// value as a speed loop's response to a set-point ramp: h(t) = h_inf s(t), from a
+// first-order step (a ramp over R = 0) to a ramp (tau -> 0; spin_up_profile.hpp);
 // I dw/dt + w x (I w + h) = -dh/dt (SPEC §4; the walk: spin_up_walk.hpp). A variant of the
 // steady rotor, reported under its name with the profile's parameters and h at the end of
-// the data. theta (spin_up_profile.hpp) = (I_nom^-1 h_inf, t0 / 0.1 s, ln(tau / 50 ms)).
+// the data. theta = (I_nom^-1 h_inf, t0 / 0.1 s, ln(tau / 50 ms), ln(R / 50 ms)).
 //
 // Tried only where the steady rotor already fits as well as the best of the rest
 // (variant_candidates.hpp), and, like it, named only where told apart: in a session the
 // flights' own fits must agree on the wheel's axis (`shared_part`), not on its timing or
 // final speed, which each throw sets its own way: the pooled fit shares the axis only, each
-// flight's start, time constant and final speed are its own (`flight_own`).
+// flight's start, time constant, rise and final speed are its own (`flight_own`).
 #include <cmath>
 
 #include "diagnose/2_model/effect_descriptor.hpp"
@@ -28,6 +29,7 @@ SpinUpProfile profile_of(const Eigen::VectorXd& theta) {
   SpinUpProfile profile;
   profile.start_s = kSpinUpStartUnit_s * theta(3);
   profile.time_constant_s = kSpinUpTimeConstantUnit_s * std::exp(theta(4));
+  profile.rise_s = kSpinUpTimeConstantUnit_s * std::exp(theta(5));
   return profile;
 }
 
@@ -118,18 +120,21 @@ int axis_part(const Eigen::VectorXd& theta, const Eigen::MatrixXd& covariance, E
 
 // In a pooled fit the flights share the wheel's axis only: the shared part is the first
 // flight's I_nom^-1 h_inf, and each flight has its own (ln of its final speed over the first
-// flight's, start, ln time constant), so that its h_inf is exp(own(0)) times the shared part.
+// flight's, start, ln time constant, ln rise), so that its h_inf is exp(own(0)) times the
+// shared part.
+constexpr int kOwnParameters = kSpinUpParameters - 2;
+
 Eigen::VectorXd flight_theta(const Eigen::VectorXd& shared, const Eigen::VectorXd& own) {
   Eigen::VectorXd theta(kSpinUpParameters);
-  theta << std::exp(own(0)) * shared.head<3>(), own(1), own(2);
+  theta << std::exp(own(0)) * shared.head<3>(), own.tail<kOwnParameters - 1>();
   return theta;
 }
 
 Eigen::VectorXd own_of(const Eigen::VectorXd& theta, const Eigen::VectorXd& shared) {
   const Eigen::Vector3d u = shared.head<3>();
   const double along = u.norm() > 0.0 ? theta.head<3>().dot(u) / u.squaredNorm() : 0.0;
-  Eigen::VectorXd own(3);
-  own << (along > 0.0 ? std::log(along) : 0.0), theta(3), theta(4);
+  Eigen::VectorXd own(kOwnParameters);
+  own << (along > 0.0 ? std::log(along) : 0.0), theta.tail<kOwnParameters - 1>();
   return own;
 }
 
@@ -143,7 +148,7 @@ constexpr EffectDescriptor internal_momentum_spin_up_effect = [] {
   d.variant_of = Effect::internal_momentum;
   d.shared_part = axis_part;
   d.start_from_readings = spin_up_theta_from_readings;
-  d.flight_own = {3, 3, flight_theta, own_of};
+  d.flight_own = {kOwnParameters, 3, flight_theta, own_of};
   d.hooks = {tolerance, apply, parameters, too_small, no_objection, unphysical};
   return d;
 }();
