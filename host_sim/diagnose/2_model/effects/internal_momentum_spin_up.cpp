@@ -94,7 +94,8 @@ std::string unphysical(const FittedSlice& fit) {
 // first-order step, the flights' own axes lie 0.004-0.09 degrees off their mean (the
 // filter's distortion of the signal and the 1/16.4 deg/s steps, which the model leaves out);
 // where it spins up as a ramp or a smooth step (a motor at its current limit; the shape
-// tests/core spins its wheels with), 0.36-2.9 degrees, the profile's misfit: at 0.1 degrees
+// tests/core spins its wheels with) and the profile was a first-order step only (before R
+// joined it), 0.36-2.9 degrees, the profile's misfit: at 0.1 degrees
 // 1 of those 10 fresh sessions named the rotor (a cylinder's would have shrunk the held-out
 // gap by 97 %), at half a degree 9 (the racquet's ramp, 2.9, still not). A look-alike's own
 // spin-up axes lay 2.4 degrees off (a knock on the racquet); no look-alike session of five
