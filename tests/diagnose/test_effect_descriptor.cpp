@@ -9,6 +9,7 @@
 
 #include "diagnose/2_model/effect_descriptor.hpp"
 #include "diagnose/2_model/flight_model.hpp"
+#include "diagnose/2_model/spin_up_profile.hpp"
 #include "diagnose/6_report/effect_words.hpp"
 
 using namespace aloft::host::diagnose;
@@ -250,4 +251,22 @@ TEST_CASE("physical parameters: the impulse keeps its time, drag is p times the 
   Eigen::VectorXd p(1);
   p << 2.0;
   CHECK(describe(Effect::aero_torque).hooks.parameters(p, body, 0.0).k_N_m_s2 == Approx(2.0 * 0.011 / 3.0));
+}
+
+// A spun-up wheel's rise and time constant are judged pinned by their sizes' errors, not
+// their logarithms': a rise fitted at 2.5 ms whose logarithm is loose by 2 is pinned to 5 ms.
+TEST_CASE("a spin-up's rise and time constant are pinned as sizes", "[effect_descriptor]") {
+  const EffectDescriptor& d = describe(Effect::internal_momentum_spin_up);
+  REQUIRE(d.pinned_errors != nullptr);
+  Eigen::VectorXd theta(kSpinUpParameters), se(kSpinUpParameters);
+  theta << 1.0, 2.0, 3.0, 0.6, std::log(0.04 / kSpinUpTimeConstantUnit_s),
+      std::log(0.0025 / kSpinUpTimeConstantUnit_s);
+  se << 0.1, 0.2, 0.3, 0.01, 0.5, 2.0;
+  const Eigen::VectorXd pinned = d.pinned_errors(theta, se);
+  CHECK(pinned.head<4>() == se.head<4>());
+  CHECK(pinned(4) * kSpinUpTimeConstantUnit_s == Approx(0.5 * 0.04));
+  CHECK(pinned(5) * kSpinUpTimeConstantUnit_s == Approx(2.0 * 0.0025));
+  for (Effect e : registered_effects()) {
+    if (e != Effect::internal_momentum_spin_up) CHECK(describe(e).pinned_errors == nullptr);
+  }
 }

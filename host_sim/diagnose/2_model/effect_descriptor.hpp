@@ -127,6 +127,13 @@ struct EffectDescriptor {
   // (3_fit/effect_fit.cpp, lower_from_readings; nullptr: none). Its flights, their
   // nominal tensor; returns the effect's theta.
   Eigen::VectorXd (*start_from_readings)(const std::vector<const Flight*>&, const NominalInertia&) = nullptr;
+  // The standard errors the identifiability rule (4_judge/candidate_ranking.cpp) weighs
+  // against `tolerance`, from theta and its own (nullptr: theta's own). For a parameter that
+  // is the logarithm of a size whose fit may tend to 0 (a spin-up's rise or time constant,
+  // where the wheel spins up as a step or a ramp), the size's error in the logarithm's unit:
+  // a rise of 2 ms whose logarithm the data leave loose is still a rise of 0-10 ms.
+  Eigen::VectorXd (*pinned_errors)(const Eigen::VectorXd& theta,
+                                   const Eigen::VectorXd& standard_error) = nullptr;
   // Named only where the data tell it from its look-alikes (4_judge/told_apart.hpp): it
   // beats every other candidate beyond a tie, and in a session the flights' own fits of it
   // agree. For an effect whose few free parameters mimic several others within a flight.

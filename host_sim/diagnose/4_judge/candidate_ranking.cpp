@@ -66,12 +66,18 @@ bool identifiable(const Candidate& c, double mean_speed, double duration_s) {
   Eigen::Index offset = 0;
   bool informed = false;
   for (Effect e : effects) {
-    const double tol = describe(e).hooks.tolerance(mean_speed, duration_s);
-    const bool gauge = describe(e).rotation_gauge;
-    for (int i = 0; i < effect_parameter_count(e) && offset < se.size(); ++i, ++offset) {
-      if (!std::isfinite(se(offset)) && gauge) continue;
-      informed = informed || std::isfinite(se(offset));
-      if (!(se(offset) <= tol)) return false;
+    const EffectDescriptor& d = describe(e);
+    const double tol = d.hooks.tolerance(mean_speed, duration_s);
+    const Eigen::Index count = std::min<Eigen::Index>(effect_parameter_count(e), se.size() - offset);
+    Eigen::VectorXd errors = se.segment(offset, count);
+    if (d.pinned_errors != nullptr && count == effect_parameter_count(e) &&
+        offset + count <= c.fit.theta.size())
+      errors = d.pinned_errors(c.fit.theta.segment(offset, count), errors);
+    offset += count;
+    for (Eigen::Index i = 0; i < count; ++i) {
+      if (!std::isfinite(errors(i)) && d.rotation_gauge) continue;
+      informed = informed || std::isfinite(errors(i));
+      if (!(errors(i) <= tol)) return false;
     }
   }
   return informed;

@@ -119,6 +119,17 @@ int axis_part(const Eigen::VectorXd& theta, const Eigen::MatrixXd& covariance, E
   return 2;
 }
 
+// The time constant's and the rise's errors as sizes (in kSpinUpTimeConstantUnit_s) rather
+// than logarithms: where the wheel spins up as a step the fitted rise tends to 0 (where a
+// ramp, the time constant), and its logarithm, loose, would call the whole spin-up poorly
+// determined though the rise is pinned near 0 (every first-order session of the fresh and
+// new seeds had said so).
+Eigen::VectorXd pinned_errors(const Eigen::VectorXd& theta, const Eigen::VectorXd& standard_error) {
+  Eigen::VectorXd errors = standard_error;
+  for (int i : {4, 5}) errors(i) = std::exp(theta(i)) * standard_error(i);
+  return errors;
+}
+
 // In a pooled fit the flights share the wheel's axis only: the shared part is the first
 // flight's I_nom^-1 h_inf, and each flight has its own (ln of its final speed over the first
 // flight's, start, ln time constant, ln rise), so that its h_inf is exp(own(0)) times the
@@ -149,6 +160,7 @@ constexpr EffectDescriptor internal_momentum_spin_up_effect = [] {
   d.variant_of = Effect::internal_momentum;
   d.shared_part = axis_part;
   d.start_from_readings = spin_up_theta_from_readings;
+  d.pinned_errors = pinned_errors;
   d.flight_own = {kOwnParameters, 3, flight_theta, own_of};
   d.hooks = {tolerance, apply, parameters, too_small, no_objection, unphysical};
   return d;
