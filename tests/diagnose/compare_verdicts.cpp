@@ -9,9 +9,10 @@
 //     the ranking's kScoreRoundingTolerance) and the verdict's held-out errors (relative;
 //     default 1e-4: a spun-up wheel's rise and start are nearly one direction where it spins
 //     up as a step, and where the fit stops along it moved a session's held-out errors by
-//     2.75e-5 between SSE2 and FMA libm; every other verdict's agreed within 1e-11). Prints each difference,
-//     then the largest differences measured. A candidate is its effect and, where it has one, its profile (a
-//     steady rotor and a spun-up one are both `internal_momentum`). A candidate the report marks not
+//     2.75e-5 between SSE2 and FMA libm; every other verdict's agreed within 1e-11). Prints
+//     each difference, then the largest differences measured. A candidate is its effect and,
+//     where it has one, its profile (a steady rotor and a spun-up one are both
+//     `internal_momentum`). A candidate the report marks not
 //     identifiable is left out of the scores: the data leave a direction of its parameters
 //     unpinned, so where each fold's fit stops along it, and so its held-out score, rests
 //     on the last bits. What such a score changes of the outcome is still compared: the

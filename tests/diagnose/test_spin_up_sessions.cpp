@@ -127,16 +127,16 @@ SessionDiagnosis judge(const gen::SessionCase& c, std::vector<gen::GeneratedFlig
   return diagnose_session(flights, NominalInertia::of(generated.front().body.inertia), 2);
 }
 
-}  // namespace
+// The body the walk tests throw.
+const Eigen::Matrix3d kWalkTensor = Eigen::Vector3d(0.0017, 0.0042, 0.0054).asDiagonal();
 
 // A body with a wheel spun up 0.23 s into a 1 s flight at 1 kHz, noise-free, from the
 // generator's integrator, with `spin_up`; and the diagnosis's walk of the model's `theta`
 // from the middle sample's true rate: the largest difference, rad/s. `flight` gets the
 // generator's readings.
 double walk_against_generator(const gen::RotorSpinUp& spin_up, const Eigen::VectorXd& theta, Flight& flight) {
-  const Eigen::Matrix3d tensor = Eigen::Vector3d(0.0017, 0.0042, 0.0054).asDiagonal();
   gen::FlightPhysics physics;
-  physics.inertia_kg_m2 = tensor;
+  physics.inertia_kg_m2 = kWalkTensor;
   physics.spin_up = spin_up;
   gen::FlightState start;
   start.omega_body = Eigen::Vector3d(4.0, -6.0, 7.0);
@@ -145,8 +145,8 @@ double walk_against_generator(const gen::RotorSpinUp& spin_up, const Eigen::Vect
     flight.omega.push_back(state.omega_body);
   flight.usable.assign(flight.size(), 1);
   std::vector<Eigen::Vector3d> predicted;
-  predict_readings(EffectModel(Effect::internal_momentum_spin_up, NominalInertia::of_tensor(tensor)), flight,
-                   500, flight.omega[500], theta, predicted);
+  predict_readings(EffectModel(Effect::internal_momentum_spin_up, NominalInertia::of_tensor(kWalkTensor)),
+                   flight, 500, flight.omega[500], theta, predicted);
   double worst = 0.0, moved = 0.0;
   for (std::size_t k = 0; k < flight.size(); ++k) {
     worst = std::max(worst, (predicted[k] - flight.omega[k]).norm());
@@ -155,8 +155,6 @@ double walk_against_generator(const gen::RotorSpinUp& spin_up, const Eigen::Vect
   CHECK(moved > 1.0);
   return worst;
 }
-
-const Eigen::Matrix3d kWalkTensor = Eigen::Vector3d(0.0017, 0.0042, 0.0054).asDiagonal();
 
 // The model's theta of a wheel of final momentum `h`, from `start_s`, time constant `tau_s`
 // and set-point ramp `rise_s` (0: none, a first-order step).
@@ -169,6 +167,8 @@ Eigen::VectorXd spin_up_theta(const Eigen::Vector3d& h, double start_s, double t
       rise_s > 0.0 ? std::log(rise_s / kSpinUpTimeConstantUnit_s) : -std::numeric_limits<double>::infinity();
   return theta;
 }
+
+}  // namespace
 
 TEST_CASE("the spin-up model moves as the generator's independent integrator does",
           "[rotor][spin_up_model]") {

@@ -46,10 +46,11 @@ struct SpinUpBody {
     for (int i = 0; i < steps; ++i) step(t + i * h, h, x);
   }
   // The loop's transients, where ds/dt moves on the scale of tau: kTransientSpan time
-  // constants after the start and after the ramp's end. Walked in finer steps only where tau
-  // is shorter than two of the walk's longest steps: RK4 across one such a step misses the
-  // torque's rise (the generator's ramp, walked with tau = 1 ns, came out 2.6e-3 rad/s off
-  // over a second in 1 ms steps, 1.2e-7 with these: tests/diagnose/test_spin_up_sessions.cpp).
+  // constants after the start and after the ramp's end (the start twice for a step). Walked
+  // in finer steps only where tau is shorter than two of the walk's longest steps: RK4
+  // across one such step misses the torque's rise (the generator's ramp, walked with
+  // tau = 1 ns, came out 2.6e-3 rad/s off over a second in 1 ms steps, 1.2e-7 with these:
+  // tests/diagnose/test_spin_up_sessions.cpp).
   static constexpr double kTransientSpan = 10.0;
   bool fast() const { return profile.time_constant_s < 2.0 * kMaxStep; }
   std::array<double, 2> transient_starts() const {
@@ -64,23 +65,21 @@ struct SpinUpBody {
   }
 };
 
-// From t to u, stopping at the motor's start, the end of its set-point's ramp, the ends of
-// the loop's fast transients and an impulse's instant (applied forwards with +1, backwards with -1) where
-// they lie strictly between.
+// From t to u, stopping where they lie strictly between: at the motor's start and the end of
+// its set-point's ramp (the same instant for a step), at the ends of the loop's fast
+// transients after them, and at an impulse's instant (applied forwards with +1, backwards
+// with -1), each once.
 void advance_across(const SpinUpBody& body, double t, double u, double jump_time, bool has_jump, Motion& m) {
   std::vector<double> stops;
   const auto between = [&](double s) { return (s - t) * (u - s) > 0.0; };
-  const double start = body.profile.start_s, ramp_end = start + body.profile.rise_s;
-  if (between(start)) stops.push_back(start);
-  if (ramp_end > start && between(ramp_end)) stops.push_back(ramp_end);
-  if (body.fast()) {
-    for (double from : body.transient_starts()) {
-      const double end = from + SpinUpBody::kTransientSpan * body.profile.time_constant_s;
-      if (between(end)) stops.push_back(end);
-    }
+  for (double from : body.transient_starts()) {
+    if (between(from)) stops.push_back(from);
+    const double settled = from + SpinUpBody::kTransientSpan * body.profile.time_constant_s;
+    if (body.fast() && between(settled)) stops.push_back(settled);
   }
   if (has_jump && between(jump_time)) stops.push_back(jump_time);
   std::sort(stops.begin(), stops.end(), [&](double a, double b) { return (a - b) * (u - t) < 0.0; });
+  stops.erase(std::unique(stops.begin(), stops.end()), stops.end());
   double at = t;
   for (double s : stops) {
     body.advance(at, s, m.x);

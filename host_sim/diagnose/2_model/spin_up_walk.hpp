@@ -5,9 +5,9 @@
 // carry, so this walk steps RK4 a sample at a time (at most kMaxStep, the walks' longest
 // step, per step) from the reference both ways, the motor's start, the end of its
 // set-point's ramp and an impulse's instant as step boundaries; each step takes the motor's
-// side from its middle (a step's reaction torque jumps from 0 to h_inf / tau at t0). The rest of the model
-// (tensor, drag, a steady rotor, a damping rotor, an impulse, the sensor, the clock) is
-// FlightDynamics'.
+// side from its middle (a step's reaction torque jumps from 0 to h_inf / tau at t0). The
+// rest of the model (tensor, drag, a steady rotor, a damping rotor, an impulse, the sensor,
+// the clock) is FlightDynamics'.
 #pragma once
 
 #include <Eigen/Core>
