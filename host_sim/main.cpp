@@ -26,13 +26,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", unknown->c_str());
     return 2;
   }
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::Success& e) {  // --help, --version
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "%s\n", aloft::host::usage_error_line(app, e).c_str());
-    return 2;
+  try {  // the commands run inside the parse
+    if (const auto code = aloft::host::parse_command_line(app, argc, argv)) return *code;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "aloft: %s\n", e.what());
     return 2;

@@ -1,6 +1,7 @@
 #include "common/usage_error.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <vector>
 
 namespace aloft::host {
@@ -107,10 +108,22 @@ std::string usage_error_line(const CLI::App& app, const CLI::ParseError& error) 
   if (!unused.empty()) {
     return who + ": unexpected argument " + unused + "; options: " + join(option_names(command)) + help;
   }
-  if (command == &app) {
+  if (command == &app && !command_names(app).empty()) {
     return who + ": no command given; commands: " + join(command_names(app)) + help;
   }
   return who + ": " + error.what() + help;
+}
+
+std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const* argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "%s\n", usage_error_line(app, e).c_str());
+    return 2;
+  }
+  return std::nullopt;
 }
 
 }  // namespace aloft::host

@@ -19,4 +19,8 @@ std::string usage_error_line(const CLI::App& app, const CLI::ParseError& error);
 // --help` with the program's help and exit 0, so a typo would pass for success.
 std::optional<std::string> unknown_command(const CLI::App& app, int argc, const char* const* argv);
 
+// Parses the command line under that contract: nothing when the program goes on, else the
+// code to exit with (0 after --help or --version, 2 after the one line on stderr).
+std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const* argv);
+
 }  // namespace aloft::host

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <chrono>
 #include <cmath>
@@ -219,8 +220,10 @@ std::vector<std::string> stray_files(const fs::path& dir, const std::vector<pid_
   std::vector<std::string> out;
   auto foreign = [&](const std::string& name) {
     for (pid_t pid : allowed) {
-      const std::string mine = std::to_string(pid);
-      if (name.size() >= mine.size() && name.compare(name.size() - mine.size(), mine.size(), mine) == 0)
+      const std::string mine = std::to_string(pid);  // the whole last number: 23 is not 123's
+      const std::size_t at = name.size() - std::min(name.size(), mine.size());
+      if (at > 0 && name.compare(at, mine.size(), mine) == 0 &&
+          !std::isdigit(static_cast<unsigned char>(name[at - 1])))
         return false;
     }
     return true;

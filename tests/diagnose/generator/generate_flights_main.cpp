@@ -30,6 +30,7 @@
 #include "flight_controller_cases.hpp"
 #include "common/atomic_file.hpp"
 #include "common/commands.hpp"
+#include "common/usage_error.hpp"
 #include "flight_files.hpp"
 #include "phone_like_cases.hpp"
 #include "phone_like_flights.hpp"
@@ -151,7 +152,7 @@ int main(int argc, char** argv) {
       "seed of the random flights; with --flight-controller, the first seed of a new set (default: "
       "the fresh set)");
   app.add_option("--limit", limit, "write only the first N flights")->check(CLI::NonNegativeNumber);
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = aloft::host::parse_command_line(app, argc, argv)) return *code;
 
   try {
     if (phone || flight_controller) {

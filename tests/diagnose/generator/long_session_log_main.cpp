@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <iostream>
 
+#include "common/usage_error.hpp"
 #include "long_session_log.hpp"
 
 int main(int argc, char** argv) {
@@ -19,7 +20,7 @@ int main(int argc, char** argv) {
   app.add_option("--flights", spec.flights, "throws in the log (default 200)")->check(CLI::PositiveNumber);
   app.add_option("--effect", spec.effect, "every throw's withheld effect (default aero_torque)");
   app.add_option("--seed", seed, "seed of the first throw (throw i: seed + i)");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = aloft::host::parse_command_line(app, argc, argv)) return *code;
   try {
     const LongSessionLog session = make_long_session_log(spec, seed);
     write_long_session_log(session, out_dir);
