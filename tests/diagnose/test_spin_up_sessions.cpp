@@ -161,10 +161,7 @@ double walk_against_generator(const gen::RotorSpinUp& spin_up, const Eigen::Vect
 Eigen::VectorXd spin_up_theta(const Eigen::Vector3d& h, double start_s, double tau_s, double rise_s) {
   Eigen::VectorXd theta(kSpinUpParameters);
   theta.head<3>() = kWalkTensor.inverse() * h;
-  theta(3) = start_s / kSpinUpStartUnit_s;
-  theta(4) = std::log(tau_s / kSpinUpTimeConstantUnit_s);
-  theta(5) =
-      rise_s > 0.0 ? std::log(rise_s / kSpinUpTimeConstantUnit_s) : -std::numeric_limits<double>::infinity();
+  write_spin_up_profile({start_s, tau_s, rise_s}, theta);  // rise 0: ln 0 = -inf, a step
   return theta;
 }
 
@@ -181,7 +178,7 @@ TEST_CASE("the spin-up model moves as the generator's independent integrator doe
   // The start read off the readings lands near the truth: the motor's start within 10 ms
   // (its grid's step), the final h within 10 %.
   const Eigen::VectorXd read = spin_up_theta_from_readings({&flight}, NominalInertia::of_tensor(kWalkTensor));
-  CHECK(std::abs(kSpinUpStartUnit_s * read(3) - step.start_s) <= 0.0101);
+  CHECK(std::abs(spin_up_profile_of(read).start_s - step.start_s) <= 0.0101);
   CHECK((kWalkTensor * read.head<3>() - h).norm() < 0.1 * h.norm());
   // A ramp over 150 ms (the generator's, a motor at its current limit) is the model's
   // ramped set-point behind a loop of time constant -> 0 (1 ns here; 0.1 us: 6.1e-6 rad/s,

@@ -115,9 +115,7 @@ Eigen::VectorXd spin_up_theta_from_readings(const std::vector<const Flight*>& fl
   Eigen::VectorXd theta = Eigen::VectorXd::Zero(kSpinUpParameters);
   if (!any) return theta;
   theta.head<3>() = nominal.tensor.ldlt().solve(best.h);
-  theta(3) = best_profile.start_s / kSpinUpStartUnit_s;
-  theta(4) = std::log(best_profile.time_constant_s / kSpinUpTimeConstantUnit_s);
-  theta(5) = std::log(best_profile.rise_s / kSpinUpTimeConstantUnit_s);
+  write_spin_up_profile(best_profile, theta);
   return theta;
 }
 

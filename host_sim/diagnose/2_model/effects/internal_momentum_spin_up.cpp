@@ -25,24 +25,16 @@ namespace {
 // unit (0.1 s, a factor e).
 double tolerance(double mean_speed, double) { return 0.01 * mean_speed; }
 
-SpinUpProfile profile_of(const Eigen::VectorXd& theta) {
-  SpinUpProfile profile;
-  profile.start_s = kSpinUpStartUnit_s * theta(3);
-  profile.time_constant_s = kSpinUpTimeConstantUnit_s * std::exp(theta(4));
-  profile.rise_s = kSpinUpTimeConstantUnit_s * std::exp(theta(5));
-  return profile;
-}
-
 void apply(const Eigen::VectorXd& theta, const NominalInertia& nominal, ModelTerms& terms) {
   terms.spin_up_momentum = nominal.tensor * theta.head<3>();
-  terms.spin_up_profile = profile_of(theta);
+  terms.spin_up_profile = spin_up_profile_of(theta);
 }
 
 EffectParameters parameters(const Eigen::VectorXd& theta, const NominalInertia& nominal, double) {
   EffectParameters p;
   p.vector = nominal.tensor * theta.head<3>();
   p.spin_up = true;
-  p.spin_up_profile = profile_of(theta);
+  p.spin_up_profile = spin_up_profile_of(theta);
   return p;
 }
 
@@ -80,7 +72,7 @@ std::string unphysical_profile(const SpinUpProfile& profile) {
 // Of the fit's theta, and of each flight's own profile where a session's flights have one.
 std::string unphysical(const FittedSlice& fit) {
   if (fit.theta.size() < kSpinUpParameters) return {};
-  std::string why = unphysical_profile(profile_of(fit.theta));
+  std::string why = unphysical_profile(spin_up_profile_of(fit.theta));
   if (fit.added == nullptr) return why;
   for (const EffectParameters::SpinUpFlight& own : fit.added->spin_up_flights) {
     if (why.empty()) why = unphysical_profile(own.profile);
