@@ -135,15 +135,23 @@ TEST_CASE("a session's spin-up is worded flight by flight", "[effect_descriptor]
   EffectParameters p;
   p.vector = Eigen::Vector3d(0.0, 0.0, 0.06);
   p.spin_up_profile = {0.065, 0.040};
-  p.spin_up_flights = {{Eigen::Vector3d(0.0, 0.0, 0.05), {0.046, 0.059}, 0.0},
-                       {Eigen::Vector3d(0.0, 0.0, 0.06), {0.065, 0.040}, 0.0}};
+  // The second flight's log gives its rotor (a body file's rotor and rotor_rad_s): 3-4-5,
+  // 36.9 degrees off the found h, which is 1.2 times its size.
+  p.spin_up_flights = {
+      {Eigen::Vector3d(0.0, 0.0, 0.05), {0.046, 0.059}, 0.0, std::nullopt},
+      {Eigen::Vector3d(0.0, 0.0, 0.06), {0.065, 0.040}, 0.0, Eigen::Vector3d(0.0, 0.03, 0.04)}};
   const std::string text = params_text(Effect::internal_momentum_spin_up, p);
   CAPTURE(text);
   CHECK(text.rfind("in the longest flight, a wheel spun up 65 ms after the first sample", 0) == 0);
   CHECK(text.find("flight 1 from 46 ms, ramp 0 ms, time constant 59 ms, |h| 0.05 N m s") !=
         std::string::npos);
-  CHECK(text.find("flight 2 from 65 ms, ramp 0 ms, time constant 40 ms, |h| 0.06 N m s") !=
-        std::string::npos);
+  CHECK(
+      text.find("flight 2 from 65 ms, ramp 0 ms, time constant 40 ms, |h| 0.06 N m s, 0.06 N m s at its end, "
+                "the log's rotor 0.05 N m s there: found 1.20 x it, 36.9 deg apart") != std::string::npos);
+  CHECK(text.find("log's rotor") == text.rfind("log's rotor"));  // flight 2's only
+  const nlohmann::json json = params_json(Effect::internal_momentum_spin_up, p);
+  CHECK(!json["flights"][0].contains("logged_h_N_m_s"));
+  CHECK(json["flights"][1]["logged_h_N_m_s"] == nlohmann::json::array({0.0, 0.03, 0.04}));
   // A flight whose own spin-up the fit put before its data (at speed from its first sample,
   // e^(-205/0.6) of the way): a steady rotor there, worded so, its time constant unmeasured.
   p.spin_up_flights.front().profile = {-0.205, 0.0006};

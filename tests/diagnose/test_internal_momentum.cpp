@@ -117,6 +117,25 @@ TEST_CASE("a rotor's h read off the readings by the balance of the Euler equatio
   CHECK(still.norm() < 1e-6);
 }
 
+// The body file's rotor (SPEC §2) and the log's rotor_rad_s (§3) give the flight the wheel's h
+// at its last sample, which the report sets beside a rotor it finds; without either, nothing.
+TEST_CASE("a flight carries the log's rotor at its end", "[rotor]") {
+  ImuLog log;
+  for (int k = 0; k < 10; ++k) {
+    log.time_s.push_back(0.001 * k);
+    log.gyro_rad_s.push_back(Eigen::Vector3d(1.0, 2.0, 3.0));
+    log.rotor_rad_s.push_back(20.0 * k);  // rad/s, spinning up
+  }
+  Body body;
+  body.rotor = BodyRotor{2e-4, Eigen::Vector3d(0.0, 0.6, 0.8)};
+  const Flight flight = flight_from_imu(log, body, 0.0, 0.0065, "f");  // samples 0-6
+  REQUIRE(flight.logged_rotor_h_N_m_s);
+  CHECK((*flight.logged_rotor_h_N_m_s - 2e-4 * 120.0 * Eigen::Vector3d(0.0, 0.6, 0.8)).norm() < 1e-15);
+  CHECK_FALSE(flight_from_imu(log, Body(), 0.0, 1.0, "no rotor").logged_rotor_h_N_m_s);
+  log.rotor_rad_s.clear();
+  CHECK_FALSE(flight_from_imu(log, body, 0.0, 1.0, "no speed").logged_rotor_h_N_m_s);
+}
+
 TEST_CASE("on a body of revolution, a rotor along the axis is an axial moment change within a flight",
           "[rotor][equivalence]") {
   const NominalInertia nominal = NominalInertia::of_tensor(kDisc);

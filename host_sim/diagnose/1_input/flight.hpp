@@ -55,6 +55,10 @@ struct Flight {
   // second order to hold: noise_floor.cpp). Set by diagnose_flight once the noise floor is known
   // (diagnosis.hpp); the prediction bends its readings by it (gyro_filter_bend.hpp).
   double gyro_filter_bend_s2 = 0.0;
+  // The body file's rotor's angular momentum at the flight's last sample, from the log's
+  // rotor_rad_s (J speed axis, body axes, N·m·s); unset without both. Never in the model:
+  // diagnose finds a rotor as `internal_momentum`, and the report sets this beside it.
+  std::optional<Eigen::Vector3d> logged_rotor_h_N_m_s;
   // What of the given segment was contact, not flight (empty when nothing was cut).
   std::vector<Contact> contacts;
 

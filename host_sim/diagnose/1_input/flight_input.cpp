@@ -22,6 +22,8 @@ Flight cut_flight(const ImuLog& log, const Body& body, const std::vector<RestPer
     flight.time_s.push_back(log.time_s[k]);
     flight.omega.push_back(log.gyro_rad_s[k]);
     if (log.accel_m_s2.size() == log.time_s.size()) flight.accel_m_s2.push_back(log.accel_m_s2[k]);
+    if (body.rotor && log.rotor_rad_s.size() == log.time_s.size())
+      flight.logged_rotor_h_N_m_s = body.rotor->inertia_kg_m2 * log.rotor_rad_s[k] * body.rotor->axis;
   }
   flight.imu_position_m = body.imu_position_m;
   flight.usable.assign(flight.size(), 1);

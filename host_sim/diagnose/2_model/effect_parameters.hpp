@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "diagnose/2_model/nominal_inertia.hpp"
@@ -36,6 +37,9 @@ struct EffectParameters {
   bool spin_up = false;
   SpinUpProfile spin_up_profile;
   double spin_up_end_s = 0.0;
+  // The body file's rotor as the log gives it at that end (Flight::logged_rotor_h_N_m_s; set
+  // by the flow): what the report sets beside the h it found.
+  std::optional<Eigen::Vector3d> spin_up_logged_h;
   // h at spin_up_end_s.
   Eigen::Vector3d spin_up_h_at_end() const { return spin_up_h_at(vector, spin_up_profile, spin_up_end_s); }
   // A session's pooled fit, which shares the wheel's axis only: each flight's own profile
@@ -45,6 +49,7 @@ struct EffectParameters {
     Eigen::Vector3d final_h = Eigen::Vector3d::Zero();
     SpinUpProfile profile;
     double end_s = 0.0;
+    std::optional<Eigen::Vector3d> logged_h;  // Flight::logged_rotor_h_N_m_s (set by the flow)
     Eigen::Vector3d h_at_end() const { return spin_up_h_at(final_h, profile, end_s); }
   };
   std::vector<SpinUpFlight> spin_up_flights;

@@ -88,7 +88,7 @@ FlightDiagnosis diagnose_flight(Flight& flight, const NominalInertia& nominal) {
   describe_baseline(analysis, flight, nominal, d.noise, none_full);
   judge_candidates(analysis, judged.ranking_context(nominal, d.noise.resolution),
                    FoldsWithinFlight(judged, nominal, none_full));
-  set_spin_up_end(analysis, {flight.end_s() - flight.start_s()});
+  set_spin_up_end(analysis, {&flight});
   check_impulse_against_accelerometer(analysis, flight);
   find_onset(analysis, flight, nominal, none_full, inverse_sigma);
   if (!d.noise.reliable) {

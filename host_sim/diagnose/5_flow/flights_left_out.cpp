@@ -37,7 +37,7 @@ void add_flights_own(EffectParameters& p, const EffectFit& fit, const NominalIne
   if (!p.spin_up || fit.flights.empty() || fit.flights.front().own.size() == 0) return;
   for (std::size_t j = 0; j < fit.flights.size(); ++j) {
     const EffectParameters own = effect_parameters(model_of(fit, nominal, j), flight_theta(fit, j));
-    p.spin_up_flights.push_back({own.vector, own.spin_up_profile, 0.0});
+    p.spin_up_flights.push_back({own.vector, own.spin_up_profile, 0.0, std::nullopt});
   }
 }
 

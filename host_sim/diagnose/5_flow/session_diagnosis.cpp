@@ -157,9 +157,7 @@ SessionDiagnosis diagnose_session(std::vector<Flight>& flights, const NominalIne
   RankingContext context = pool.judged.ranking_context(nominal, resolution);
   context.own_analyses = pool.own;
   judge_candidates(analysis, context, FlightsLeftOut(pool.judged, pool.own, nominal, none_all, workers));
-  std::vector<double> ends;
-  for (const Flight* f : pool.judged.flights) ends.push_back(f->end_s() - f->start_s());
-  set_spin_up_end(analysis, ends);
+  set_spin_up_end(analysis, pool.judged.flights);
   note_disagreeing_flights(analysis, pool.judged.flights, pool.own);
   note_between_flight_scatter(analysis, pool.own, pool.judged.flights);
   add_flip_periods(session, pool, none_all, flights, nominal);

@@ -137,6 +137,16 @@ std::string internal_momentum_text(const EffectParameters& p) {
 
 nlohmann::json internal_momentum_json(const EffectParameters& p) { return {{"h_N_m_s", json_vec(p.vector)}}; }
 
+// Where the body file has a rotor and the log its speed: the log's h beside the h found at
+// the same end, the found one's size over it and the angle between them.
+std::string logged_rotor_words(const Eigen::Vector3d& found, const std::optional<Eigen::Vector3d>& logged) {
+  if (!logged) return {};
+  if (!(logged->norm() > 0.0)) return ", the log's rotor at rest there";
+  const double angle = std::atan2(found.cross(*logged).norm(), found.dot(*logged));
+  return printf_text(", the log's rotor %.3g N m s there: found %.2f x it, %.1f deg apart", logged->norm(),
+                     found.norm() / logged->norm(), angle * 180.0 / 3.141592653589793);
+}
+
 // `internal_momentum` spun up by a motor: the final h, the profile, and h at the end of the
 // data (SPEC §4: h_N_m_s is h at the flight's end).
 // A session's flights share the wheel's axis and each has its own profile: the longest
@@ -154,8 +164,9 @@ std::string internal_momentum_spin_up_text(const EffectParameters& p) {
   std::string out = std::string(p.spin_up_flights.empty() ? "" : "in the longest flight, ") + profile +
                     printf_text(
                         "h = (%.3g, %.3g, %.3g) N m s in body axes (|h| %.3g N m s; %.3g N m s at the "
-                        "end of the data)",
-                        p.vector(0), p.vector(1), p.vector(2), p.vector.norm(), end.norm());
+                        "end of the data%s)",
+                        p.vector(0), p.vector(1), p.vector(2), p.vector.norm(), end.norm(),
+                        logged_rotor_words(end, p.spin_up_logged_h).c_str());
   if (p.spin_up_flights.empty()) return out;
   const Eigen::Vector3d axis = p.vector.normalized();
   out += printf_text("; the flights share its axis (%.3f, %.3f, %.3f), each its own profile:", axis(0),
@@ -163,15 +174,15 @@ std::string internal_momentum_spin_up_text(const EffectParameters& p) {
   for (std::size_t j = 0; j < p.spin_up_flights.size(); ++j) {
     const EffectParameters::SpinUpFlight& f = p.spin_up_flights[j];
     if (f.profile.at_speed_before_data()) {
-      out +=
-          printf_text(" flight %zu at speed from its first sample, |h| %.3g N m s;", j + 1, f.final_h.norm());
+      out += printf_text(" flight %zu at speed from its first sample, |h| %.3g N m s%s;", j + 1,
+                         f.final_h.norm(), logged_rotor_words(f.h_at_end(), f.logged_h).c_str());
       continue;
     }
     out += printf_text(
         " flight %zu from %.0f ms, ramp %.0f ms, time constant %.0f ms, |h| %.3g N m s, %.3g N m s "
-        "at its end;",
+        "at its end%s;",
         j + 1, 1000.0 * f.profile.start_s, 1000.0 * f.profile.rise_s, 1000.0 * f.profile.time_constant_s,
-        f.final_h.norm(), f.h_at_end().norm());
+        f.final_h.norm(), f.h_at_end().norm(), logged_rotor_words(f.h_at_end(), f.logged_h).c_str());
   }
   out.pop_back();
   return out;
@@ -185,6 +196,7 @@ nlohmann::json internal_momentum_spin_up_json(const EffectParameters& p) {
                         {"time_constant_s", p.spin_up_profile.time_constant_s},
                         {"rise_s", p.spin_up_profile.rise_s},
                         {"end_s", p.spin_up_end_s}};
+  if (p.spin_up_logged_h) out["logged_h_N_m_s"] = json_vec(*p.spin_up_logged_h);
   if (p.spin_up_flights.empty()) return out;
   out["axis"] = json_vec(p.vector.normalized());
   nlohmann::json flights = nlohmann::json::array();
@@ -195,6 +207,7 @@ nlohmann::json internal_momentum_spin_up_json(const EffectParameters& p) {
                        {"time_constant_s", f.profile.time_constant_s},
                        {"rise_s", f.profile.rise_s},
                        {"end_s", f.end_s}});
+    if (f.logged_h) flights.back()["logged_h_N_m_s"] = json_vec(*f.logged_h);
   }
   out["flights"] = flights;
   return out;

@@ -248,6 +248,8 @@ json flight_report(const FlightDiagnosis& d) {
   out["unusable_samples"] = d.unusable_samples;
   if (!d.comment.empty()) out["comment"] = d.comment;
   if (d.flight && !d.flight->contacts.empty()) out["contact"] = contact_json(d.flight->contacts);
+  if (d.flight && d.flight->logged_rotor_h_N_m_s)
+    out["logged_rotor_h_N_m_s"] = json_vec(*d.flight->logged_rotor_h_N_m_s);
   if (d.flip_period) {
     json fp = {{"measured_s", d.flip_period->measured_s},
                {"nominal_s", d.flip_period->nominal_s},

@@ -81,6 +81,16 @@ std::string contact_text(const Contact& c) {
          (c.before_release ? " (before the release)" : " (after the landing)");
 }
 
+// The body file's rotor as the log gives it at the flight's end (1_input/flight.hpp).
+std::string logged_rotor_text(const Flight& f) {
+  const Eigen::Vector3d& h = *f.logged_rotor_h_N_m_s;
+  return printf_text(
+      "the log's rotor at the flight's end: h = (%.3g, %.3g, %.3g) N m s in body axes, |h| %.3g N m s "
+      "(the body file's rotor times rotor_rad_s; not in the model: diagnose finds a rotor as "
+      "internal_momentum)",
+      h(0), h(1), h(2), h.norm());
+}
+
 }  // namespace
 
 std::string flight_summary(const FlightDiagnosis& d) {
@@ -94,6 +104,7 @@ std::string flight_summary(const FlightDiagnosis& d) {
   out << "\n";
   if (d.flight) {
     for (const Contact& c : d.flight->contacts) out << "  " << contact_text(c) << "\n";
+    if (d.flight->logged_rotor_h_N_m_s) out << "  " << logged_rotor_text(*d.flight) << "\n";
   }
   out << analysis_summary(d.analysis);
   return out.str();
@@ -136,7 +147,11 @@ std::string session_summary(const SessionDiagnosis& s) {
     out << "  flight " << d.name << ": " << effect_name(v.effect)
         << printf_text(" (held-out RMS DA %.2f -> %.2f deg)", v.heldout_rms_da_before_deg,
                        v.heldout_rms_da_after_deg)
-        << (v.confident ? "" : " [not confident]") << "\n";
+        << (v.confident ? "" : " [not confident]");
+    if (d.flight && d.flight->logged_rotor_h_N_m_s)
+      out << printf_text("; the log's rotor |h| %.3g N m s at its end",
+                         d.flight->logged_rotor_h_N_m_s->norm());
+    out << "\n";
   }
   return out.str();
 }

@@ -36,14 +36,15 @@ nlohmann::json spec_to_json(const FlightSpec& s) {
 }  // namespace
 
 void write_imu_csv(std::ostream& out, const host::ImuLog& log) {
-  const bool accel = !log.accel_m_s2.empty();
-  out << (accel ? "t,gx,gy,gz,ax,ay,az\n" : "t,gx,gy,gz\n");
+  const bool accel = !log.accel_m_s2.empty(), rotor = !log.rotor_rad_s.empty();
+  out << (accel ? "t,gx,gy,gz,ax,ay,az" : "t,gx,gy,gz") << (rotor ? ",rotor_rad_s\n" : "\n");
   for (std::size_t k = 0; k < log.time_s.size(); ++k) {
     out << fixed(log.time_s[k], 6);
     for (int i = 0; i < 3; ++i) out << ',' << fixed(log.gyro_rad_s[k](i), 6);
     if (accel) {
       for (int i = 0; i < 3; ++i) out << ',' << fixed(log.accel_m_s2[k](i), 6);
     }
+    if (rotor) out << ',' << fixed(log.rotor_rad_s[k], 6);
     out << '\n';
   }
 }

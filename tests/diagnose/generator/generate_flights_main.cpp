@@ -14,7 +14,10 @@
 //                                                    --sessions N of each, --spin-up-shape
 //                                                    ramp or smooth_step for the wheels,
 //                                                    --seed the first of a new set (as the
-//                                                    spin-up test's ALOFT_SPIN_UP_SEEDS)
+//                                                    spin-up test's ALOFT_SPIN_UP_SEEDS),
+//                                                    --log-rotor: the spin-up sessions' body
+//                                                    files name the wheel (SPEC §2 `rotor`) and
+//                                                    their logs its speed (`rotor_rad_s`)
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <cstdio>
@@ -84,13 +87,33 @@ void write_phone_like(const std::string& out, nlohmann::json& all) {
   }
 }
 
+// A wheel of kLoggedWheel_kg_m2 about its spin axis (a reaction wheel of some 50 g): at
+// the generated |h| of 0.01-0.1 N m s it turns at 50-500 rad/s.
+constexpr double kLoggedWheel_kg_m2 = 2e-4;
+
+// With --log-rotor: the wheel of a spin-up session in its body file (`rotor`, about the h
+// the session shares) and its speed in each sample of flight `g` (exact, unquantised).
+void log_rotor(GeneratedFlight& g, nlohmann::json& body) {
+  const nlohmann::json& p = g.truth.params;
+  Eigen::Vector3d final_h;
+  for (int i = 0; i < 3; ++i) final_h(i) = p["final_h_N_m_s"][i].get<double>();
+  const Eigen::Vector3d axis = final_h.normalized();
+  body["rotor"] = {{"inertia_kg_m2", kLoggedWheel_kg_m2}, {"axis", {axis(0), axis(1), axis(2)}}};
+  const SpinUpShape shape = spin_up_shape_named(p["shape"].get<std::string>());
+  const RotorSpinUp wheel{final_h, p["start_s"].get<double>(), p["time_constant_s"].get<double>(), shape,
+                          p.value("rise_s", 0.0)};
+  g.imu.rotor_rad_s.clear();
+  for (double t : g.imu.time_s)
+    g.imu.rotor_rad_s.push_back(wheel.momentum(t - g.imu.time_s.front()).dot(axis) / kLoggedWheel_kg_m2);
+}
+
 // The flights of a session one after another in one log, each on its own clock moved on to
 // kBetweenFlights_s after the last one's end (the log has no samples there, as a flight
 // controller's log between two armings), with a segments file naming each.
 constexpr double kBetweenFlights_s = 1.0;
 // `first_seed`: none for the fresh set.
 void write_flight_controller(const std::string& out, int per_kind, SpinUpShape shape,
-                             std::optional<std::uint64_t> first_seed, nlohmann::json& all) {
+                             std::optional<std::uint64_t> first_seed, bool with_rotor, nlohmann::json& all) {
   const std::vector<SessionCase> cases =
       first_seed ? flight_controller_session_cases(*first_seed, per_kind, 4, shape)
                  : flight_controller_session_cases(RotorSeeds::fresh, per_kind, 4, shape);
@@ -99,7 +122,12 @@ void write_flight_controller(const std::string& out, int per_kind, SpinUpShape s
     std::string segments = kSegmentsHeader;
     double offset = 0.0;
     for (std::size_t j = 0; j < c.flights.size(); ++j) {
-      const GeneratedFlight g = generate_flight(c.flights[j], c.seed);
+      GeneratedFlight g = generate_flight(c.flights[j], c.seed);
+      if (with_rotor && g.truth.params.contains("final_h_N_m_s")) {
+        nlohmann::json body = nlohmann::json::parse(g.body_json);
+        log_rotor(g, body);
+        g.body_json = body.dump(2) + "\n";
+      }
       if (j == 0) joined = g;
       aloft::host::ImuLog& log = joined.imu;
       if (j > 0) {
@@ -129,6 +157,7 @@ int main(int argc, char** argv) {
   bool flight_controller = false;
   std::string spin_up_shape = "first_order";
   int sessions_per_kind = 1;
+  bool log_rotor_speed = false;
   app.add_option("--out", out_dir, "folder to write into")->required();
   app.add_flag("--compound", compound, "write the compound flights, two effects each (issue 8)");
   app.add_flag("--phone", phone, "write the phone-like flights and sessions (issue 8)");
@@ -140,6 +169,9 @@ int main(int argc, char** argv) {
                  "current limit, smooth_step)")
       ->check(CLI::IsMember(
           std::vector<std::string>(std::begin(kSpinUpShapeNames), std::end(kSpinUpShapeNames))));
+  app.add_flag("--log-rotor", log_rotor_speed,
+               "with --flight-controller: the spin-up sessions' body files name the wheel and their logs "
+               "its speed (rotor_rad_s)");
   app.add_option("--sessions", sessions_per_kind,
                  "with --flight-controller: sessions of each kind (the fresh seeds of the spin-up test)")
       ->check(CLI::Range(1, 100));
@@ -161,7 +193,7 @@ int main(int argc, char** argv) {
       if (flight_controller)
         write_flight_controller(out_dir, sessions_per_kind, spin_up_shape_named(spin_up_shape),
                                 app.count("--seed") > 0 ? std::optional<std::uint64_t>(seed) : std::nullopt,
-                                all);
+                                log_rotor_speed, all);
       aloft::host::write_file_atomically((std::filesystem::path(out_dir) / "truth.json").string(),
                                          [&](std::ostream& o) { o << all.dump(1) << '\n'; });
       return 0;
