@@ -144,9 +144,9 @@ struct EffectDescriptor {
   // (4_judge/joint_candidates.hpp; none: no such effect).
   Effect jointly_with = Effect::none;
   // A variant of another effect, reported under that effect's name (`name` is the same): a
-  // rotor whose speed changes beside the steady rotor. Not a candidate of its own, nor added
-  // at a later step: tried where the effect it varies fits as well as the best of the rest
-  // (4_judge/variant_candidates.hpp). none: not a variant.
+  // rotor whose speed changes beside the steady rotor. Not a candidate of its own: tried at
+  // a step where the effect it varies, added to the model there, fits as well as the best
+  // of the rest (4_judge/variant_candidates.hpp). none: not a variant.
   Effect variant_of = Effect::none;
   // What of a flight's own fit the flights of a session must agree on (told_apart.hpp,
   // between_flight_scatter.hpp): the part the physics shares, with its covariance and its

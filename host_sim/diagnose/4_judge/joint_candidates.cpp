@@ -42,23 +42,26 @@ bool takes_a_share_of(const Candidate& pair, const Candidate& alone, const Candi
 
 }  // namespace
 
-std::vector<Candidate> joint_candidates(const std::vector<Candidate>& first, const RankingContext& context,
-                                        const CandidateEvaluator& evaluate) {
+std::vector<Candidate> joint_candidates(const std::vector<Candidate>& first,
+                                        const std::vector<Candidate>& pairs_only,
+                                        const RankingContext& context, const CandidateEvaluator& evaluate) {
   std::vector<Candidate> out;
   const auto none = std::find_if(first.begin(), first.end(), [](const Candidate& c) {
     return c.effect == Effect::none && c.base.empty() && c.evaluated;
   });
   if (context.own_analyses.empty() || none == first.end()) return out;
-  for (const Candidate& alone : first) {
+  const auto try_pair = [&](const Candidate& alone) {
     const Effect jointly_with = describe(alone.effect).jointly_with;
-    if (!alone.evaluated || !alone.base.empty() || jointly_with == Effect::none) continue;
+    if (!alone.evaluated || !alone.base.empty() || jointly_with == Effect::none) return;
     const Candidate* with = alone_of(first, jointly_with);
-    if (with == nullptr || flights_disagree(alone, context.own_analyses) != true) continue;
+    if (with == nullptr || flights_disagree(alone, context.own_analyses) != true) return;
     Candidate pair = evaluate(*with, alone.effect);
     if (pair.evaluated && flights_disagree(pair, context.own_analyses) == false &&
         takes_a_share_of(pair, alone, *none) && takes_a_share_of(pair, *with, *none))
       out.push_back(std::move(pair));
-  }
+  };
+  for (const Candidate& alone : first) try_pair(alone);
+  for (const Candidate& alone : pairs_only) try_pair(alone);
   return out;
 }
 

@@ -26,13 +26,16 @@
 
 #include "diagnose/4_judge/analysis.hpp"
 #include "diagnose/4_judge/candidate_ranking.hpp"
-#include "diagnose/4_judge/stepwise_selection.hpp"
+#include "diagnose/4_judge/candidate_evaluator.hpp"
 
 namespace aloft::host::diagnose {
 
 // The pairs to add to a session's first-step candidates `first` (each effect alone, not yet
 // ranked; `context.own_analyses` its flights' own analyses): none for one flight.
-std::vector<Candidate> joint_candidates(const std::vector<Candidate>& first, const RankingContext& context,
-                                        const CandidateEvaluator& evaluate);
+// `pairs_only`: effects alone, fitted, that are not candidates themselves but may start a
+// pair (a spun-up wheel whose steady rotor the session rules out: variant_candidates.hpp).
+std::vector<Candidate> joint_candidates(const std::vector<Candidate>& first,
+                                        const std::vector<Candidate>& pairs_only,
+                                        const RankingContext& context, const CandidateEvaluator& evaluate);
 
 }  // namespace aloft::host::diagnose

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "diagnose/4_judge/practical_significance.hpp"
+#include "diagnose/4_judge/variant_candidates.hpp"
 
 namespace aloft::host::diagnose {
 namespace {
@@ -122,6 +123,12 @@ bool next_step(Analysis& a, const RankingContext& context, const CandidateEvalua
     Candidate c = evaluate(current, e);
     c.reference = false;
     step.candidates.push_back(std::move(c));
+  }
+  const auto may_add = [&](Effect e) { return may_join(e, step.model, classes, context.gyro_input); };
+  for (Candidate& variant :
+       variant_candidates(step.candidates, step.candidates.front(), context, evaluate, may_add).kept) {
+    variant.reference = false;
+    step.candidates.push_back(std::move(variant));
   }
   if (step.candidates.size() < 2) return false;
   const StepRanking r = rank_step(step.candidates, context, kVerdictMargin);

@@ -20,6 +20,7 @@
 #include "diagnose/4_judge/candidate_ranking.hpp"
 #include "diagnose/4_judge/confidence.hpp"
 #include "diagnose/4_judge/analysis.hpp"
+#include "diagnose/4_judge/candidate_evaluator.hpp"
 
 namespace aloft::host::diagnose {
 
@@ -27,12 +28,6 @@ namespace aloft::host::diagnose {
 constexpr int kMaximumEffects = 3;
 // A step must shrink the held-out relative error by at least kMinimumStepShrink
 // (confidence.hpp).
-
-// Fits `added` jointly with the model of `base` (a candidate of an earlier step, or the
-// `none` candidate) and judges it held out: fills fit, params (of `added`),
-// heldout_* and heldout_readings, and sets `base`/`effect`. evaluated = false when
-// `added` cannot join here (e.g. an impulse shared by flights).
-using CandidateEvaluator = std::function<Candidate(const Candidate& base, Effect added)>;
 
 // Runs the steps after `analysis` holds its ranked single-effect candidates and verdict
 // (rank_candidates), and fills analysis.steps, analysis.model and verdict.effects,

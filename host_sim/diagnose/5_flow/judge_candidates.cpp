@@ -16,9 +16,10 @@ void judge_candidates(Analysis& analysis, const RankingContext& context, const H
   for (Effect effect : candidate_effects(context.gyro_input)) {
     analysis.candidates.push_back(effect == Effect::none ? nominal_model : evaluate(nominal_model, effect));
   }
-  for (Candidate& variant : variant_candidates(analysis.candidates, context, evaluate))
-    analysis.candidates.push_back(std::move(variant));
-  for (Candidate& pair : joint_candidates(analysis.candidates, context, evaluate))
+  VariantCandidates variants =
+      variant_candidates(analysis.candidates, nominal_model, context, evaluate, [](Effect) { return true; });
+  for (Candidate& variant : variants.kept) analysis.candidates.push_back(std::move(variant));
+  for (Candidate& pair : joint_candidates(analysis.candidates, variants.for_pairs, context, evaluate))
     analysis.candidates.push_back(std::move(pair));
   rule_out_senseless(analysis.candidates);
   rank_candidates(analysis, context);

@@ -150,6 +150,7 @@ constexpr EffectDescriptor internal_momentum_spin_up_effect = [] {
   d.parameter_count = kSpinUpParameters;
   d.named_only_when_told_apart = true;
   d.variant_of = Effect::internal_momentum;
+  d.jointly_with = Effect::inertia_moments;  // as the steady rotor (joint_candidates.hpp)
   d.shared_part = axis_part;
   d.start_from_readings = spin_up_theta_from_readings;
   d.pinned_errors = pinned_errors;
